@@ -1,0 +1,50 @@
+#include <shadelgraph/gpu/buffer.hpp>
+
+#include <utility>
+
+#include <shadelgraph/gpu/context.hpp>
+#include <shadelgraph/gpu/error.hpp>
+
+namespace sg::gpu {
+
+Buffer::Buffer(const Context& context, MemoryAllocator& memory, const BufferDesc& desc)
+    : device_(context.device()), memory_(&memory), size_(desc.size) {
+  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  info.size = desc.size;
+  info.usage = desc.usage | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  SG_VK(vkCreateBuffer(device_, &info, nullptr, &buffer_));
+  context.setDebugName(VK_OBJECT_TYPE_BUFFER, reinterpret_cast<uint64_t>(buffer_), desc.name.c_str());
+  VkMemoryRequirements req;
+  vkGetBufferMemoryRequirements(device_, buffer_, &req);
+  allocation_ = memory.allocate(req, desc.location, desc.category);
+  SG_VK(vkBindBufferMemory(device_, buffer_, allocation_.memory, allocation_.offset));
+  VkBufferDeviceAddressInfo addr{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
+  addr.buffer = buffer_;
+  address_ = vkGetBufferDeviceAddress(device_, &addr);
+}
+
+Buffer::~Buffer() { release(); }
+
+Buffer::Buffer(Buffer&& o) noexcept { *this = std::move(o); }
+
+Buffer& Buffer::operator=(Buffer&& o) noexcept {
+  if (this != &o) {
+    release();
+    device_ = std::exchange(o.device_, VK_NULL_HANDLE);
+    memory_ = std::exchange(o.memory_, nullptr);
+    buffer_ = std::exchange(o.buffer_, VK_NULL_HANDLE);
+    size_ = std::exchange(o.size_, 0);
+    address_ = std::exchange(o.address_, 0);
+    allocation_ = std::exchange(o.allocation_, Allocation{});
+  }
+  return *this;
+}
+
+void Buffer::release() {
+  if (buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
+  if (memory_) memory_->free(allocation_);
+  buffer_ = VK_NULL_HANDLE;
+}
+
+}  // namespace sg::gpu

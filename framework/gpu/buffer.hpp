@@ -1,0 +1,48 @@
+#pragma once
+#include <cstring>
+#include <span>
+#include <string>
+
+#include <shadelgraph/gpu/memory.hpp>
+
+namespace sg::gpu {
+
+struct BufferDesc {
+  VkDeviceSize size = 0;
+  VkBufferUsageFlags usage = 0;
+  MemoryLocation location = MemoryLocation::Device;
+  std::string name;
+  std::string category = "buffer";  // memory report bucket
+};
+
+// A VkBuffer with its own sub-allocation. Move-only.
+class Buffer {
+ public:
+  Buffer() = default;
+  Buffer(const Context& context, MemoryAllocator& memory, const BufferDesc& desc);
+  ~Buffer();
+  Buffer(Buffer&& other) noexcept;
+  Buffer& operator=(Buffer&& other) noexcept;
+
+  VkBuffer handle() const { return buffer_; }
+  VkDeviceSize size() const { return size_; }
+  VkDeviceAddress address() const { return address_; }
+  std::byte* mapped() const { return allocation_.mapped; }
+  template <class T>
+  std::span<T> view() const {
+    return {reinterpret_cast<T*>(allocation_.mapped), size_ / sizeof(T)};
+  }
+  void write(const void* data, size_t bytes, size_t offset = 0) { std::memcpy(mapped() + offset, data, bytes); }
+  explicit operator bool() const { return buffer_ != VK_NULL_HANDLE; }
+
+ private:
+  void release();
+  VkDevice device_ = VK_NULL_HANDLE;
+  MemoryAllocator* memory_ = nullptr;
+  VkBuffer buffer_ = VK_NULL_HANDLE;
+  VkDeviceSize size_ = 0;
+  VkDeviceAddress address_ = 0;
+  Allocation allocation_;
+};
+
+}  // namespace sg::gpu

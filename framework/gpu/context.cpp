@@ -1,0 +1,297 @@
+#include <shadelgraph/gpu/context.hpp>
+
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+#include <shadelgraph/gpu/error.hpp>
+
+namespace sg::gpu {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+bool envFlag(const char* name) {
+  const char* v = std::getenv(name);
+  return v && std::strcmp(v, "0") != 0 && *v != '\0';
+}
+
+bool hasLayer(const char* name) {
+  uint32_t count = 0;
+  vkEnumerateInstanceLayerProperties(&count, nullptr);
+  std::vector<VkLayerProperties> layers(count);
+  vkEnumerateInstanceLayerProperties(&count, layers.data());
+  for (auto& l : layers)
+    if (std::strcmp(l.layerName, name) == 0) return true;
+  return false;
+}
+
+// The features shadelgraph relies on, checked one by one so a missing one is named.
+struct FeatureChain {
+  VkPhysicalDeviceFeatures2 core{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  FeatureChain() {
+    core.pNext = &v12;
+    v12.pNext = &v13;
+  }
+  FeatureChain(const FeatureChain&) = delete;
+};
+
+std::vector<std::string> missingFeatures(const FeatureChain& f) {
+  std::vector<std::string> missing;
+  auto need = [&](VkBool32 v, const char* name) {
+    if (!v) missing.emplace_back(name);
+  };
+  need(f.core.features.shaderInt64, "VkPhysicalDeviceFeatures::shaderInt64");
+  need(f.core.features.fragmentStoresAndAtomics, "VkPhysicalDeviceFeatures::fragmentStoresAndAtomics");
+  need(f.v12.timelineSemaphore, "VkPhysicalDeviceVulkan12Features::timelineSemaphore");
+  need(f.v12.bufferDeviceAddress, "VkPhysicalDeviceVulkan12Features::bufferDeviceAddress");
+  need(f.v12.shaderBufferInt64Atomics, "VkPhysicalDeviceVulkan12Features::shaderBufferInt64Atomics");
+  need(f.v12.hostQueryReset, "VkPhysicalDeviceVulkan12Features::hostQueryReset");
+  need(f.v12.scalarBlockLayout, "VkPhysicalDeviceVulkan12Features::scalarBlockLayout");
+  need(f.v13.synchronization2, "VkPhysicalDeviceVulkan13Features::synchronization2");
+  need(f.v13.dynamicRendering, "VkPhysicalDeviceVulkan13Features::dynamicRendering");
+  // glslang's SPIR-V 1.6 output declares workgroup sizes with LocalSizeId.
+  need(f.v13.maintenance4, "VkPhysicalDeviceVulkan13Features::maintenance4");
+  return missing;
+}
+
+}  // namespace
+
+ContextOptions ContextOptions::fromEnvironment() {
+  ContextOptions o;
+  o.validation = envFlag("SG_VALIDATION");
+  o.synchronizationValidation = o.validation;
+  if (const char* d = std::getenv("SG_DEVICE")) o.deviceFilter = d;
+  return o;
+}
+
+Context::Context(const ContextOptions& options) {
+  try {
+    createInstance(options);
+    pickPhysicalDevice(options);
+    createDevice();
+  } catch (...) {
+    destroy();
+    throw;
+  }
+}
+
+Context::~Context() { destroy(); }
+
+void Context::destroy() {
+  if (device_) {
+    vkDeviceWaitIdle(device_);
+    if (immediatePool_) vkDestroyCommandPool(device_, immediatePool_, nullptr);
+    vkDestroyDevice(device_, nullptr);
+    device_ = VK_NULL_HANDLE;
+  }
+  if (messenger_) {
+    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+    if (destroy) destroy(instance_, messenger_, nullptr);
+    messenger_ = VK_NULL_HANDLE;
+  }
+  if (instance_) {
+    vkDestroyInstance(instance_, nullptr);
+    instance_ = VK_NULL_HANDLE;
+  }
+}
+
+void Context::createInstance(const ContextOptions& options) {
+  validation_ = options.validation;
+  if (validation_ && !hasLayer(kValidationLayer))
+    throw GpuError("validation requested but VK_LAYER_KHRONOS_validation is not installed "
+                   "(Debian package vulkan-validationlayers)");
+
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.pApplicationName = "shadelgraph";
+  app.pEngineName = "shadelgraph";
+  app.apiVersion = VK_API_VERSION_1_3;
+
+  std::vector<const char*> layers;
+  std::vector<const char*> extensions{VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
+  if (validation_) layers.push_back(kValidationLayer);
+
+  VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+  VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+  features.enabledValidationFeatureCount = 1;
+  features.pEnabledValidationFeatures = enables;
+
+  VkDebugUtilsMessengerCreateInfoEXT messengerInfo{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  messengerInfo.messageSeverity =
+      VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                              VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                              VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  messengerInfo.pfnUserCallback = &ValidationLog::callback;
+  messengerInfo.pUserData = &validationLog_;
+
+  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  info.pApplicationInfo = &app;
+  info.enabledLayerCount = static_cast<uint32_t>(layers.size());
+  info.ppEnabledLayerNames = layers.data();
+  info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
+  if (validation_) {
+    // The messenger in pNext also catches messages from instance creation itself.
+    info.pNext = &messengerInfo;
+    if (options.synchronizationValidation) messengerInfo.pNext = &features;
+  }
+  SG_VK(vkCreateInstance(&info, nullptr, &instance_));
+
+  if (validation_) {
+    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+    messengerInfo.pNext = nullptr;
+    SG_VK(create(instance_, &messengerInfo, nullptr, &messenger_));
+  }
+  setObjectName_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+      vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
+}
+
+void Context::pickPhysicalDevice(const ContextOptions& options) {
+  uint32_t count = 0;
+  SG_VK(vkEnumeratePhysicalDevices(instance_, &count, nullptr));
+  std::vector<VkPhysicalDevice> devices(count);
+  SG_VK(vkEnumeratePhysicalDevices(instance_, &count, devices.data()));
+  if (devices.empty()) throw GpuError("no Vulkan device found (install mesa-vulkan-drivers for lavapipe)");
+
+  // Prefer a discrete GPU, then integrated, then anything (lavapipe is a CPU device).
+  auto rank = [](VkPhysicalDeviceType t) {
+    switch (t) {
+      case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
+      case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
+      case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
+      default: return 3;
+    }
+  };
+  std::string rejected;
+  int bestRank = 99;
+  for (VkPhysicalDevice d : devices) {
+    VkPhysicalDeviceProperties p;
+    vkGetPhysicalDeviceProperties(d, &p);
+    if (!options.deviceFilter.empty() && std::string(p.deviceName).find(options.deviceFilter) == std::string::npos)
+      continue;
+    if (p.apiVersion < VK_API_VERSION_1_3) {
+      rejected += std::string(" ") + p.deviceName + " (Vulkan < 1.3);";
+      continue;
+    }
+    FeatureChain f;
+    vkGetPhysicalDeviceFeatures2(d, &f.core);
+    auto missing = missingFeatures(f);
+    if (!missing.empty()) {
+      rejected += std::string(" ") + p.deviceName + " (missing " + missing.front() + ");";
+      continue;
+    }
+    if (rank(p.deviceType) < bestRank) {
+      bestRank = rank(p.deviceType);
+      physicalDevice_ = d;
+      properties_ = p;
+    }
+  }
+  if (!physicalDevice_) throw GpuError("no usable Vulkan 1.3 device:" + (rejected.empty() ? std::string(" none matched SG_DEVICE") : rejected));
+}
+
+void Context::createDevice() {
+  uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice_, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice_, &count, families.data());
+
+  auto findFamily = [&](VkQueueFlags want, VkQueueFlags avoid) -> int {
+    for (uint32_t i = 0; i < count; ++i)
+      if ((families[i].queueFlags & want) == want && !(families[i].queueFlags & avoid)) return static_cast<int>(i);
+    return -1;
+  };
+  const int graphics = findFamily(VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT, 0);
+  if (graphics < 0) throw GpuError(std::string(properties_.deviceName) + " has no graphics+compute queue family");
+  int compute = findFamily(VK_QUEUE_COMPUTE_BIT, VK_QUEUE_GRAPHICS_BIT);
+  int transfer = findFamily(VK_QUEUE_TRANSFER_BIT, VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT);
+  if (compute < 0) compute = graphics;
+  if (transfer < 0) transfer = graphics;
+
+  std::vector<VkDeviceQueueCreateInfo> queueInfos;
+  float priority = 1.0f;
+  for (int family : {graphics, compute, transfer}) {
+    bool seen = false;
+    for (auto& q : queueInfos) seen |= q.queueFamilyIndex == static_cast<uint32_t>(family);
+    if (seen) continue;
+    VkDeviceQueueCreateInfo q{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    q.queueFamilyIndex = static_cast<uint32_t>(family);
+    q.queueCount = 1;
+    q.pQueuePriorities = &priority;
+    queueInfos.push_back(q);
+  }
+
+  FeatureChain enable;
+  enable.core.features.shaderInt64 = VK_TRUE;
+  enable.core.features.fragmentStoresAndAtomics = VK_TRUE;
+  enable.v12.timelineSemaphore = VK_TRUE;
+  enable.v12.bufferDeviceAddress = VK_TRUE;
+  enable.v12.shaderBufferInt64Atomics = VK_TRUE;
+  enable.v12.hostQueryReset = VK_TRUE;
+  enable.v12.scalarBlockLayout = VK_TRUE;
+  enable.v13.synchronization2 = VK_TRUE;
+  enable.v13.dynamicRendering = VK_TRUE;
+  enable.v13.maintenance4 = VK_TRUE;
+
+  VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  info.pNext = &enable.core;
+  info.queueCreateInfoCount = static_cast<uint32_t>(queueInfos.size());
+  info.pQueueCreateInfos = queueInfos.data();
+  SG_VK(vkCreateDevice(physicalDevice_, &info, nullptr, &device_));
+
+  int familyOf[3] = {graphics, compute, transfer};
+  for (int i = 0; i < 3; ++i) {
+    queues_[i].family = static_cast<uint32_t>(familyOf[i]);
+    vkGetDeviceQueue(device_, queues_[i].family, 0, &queues_[i].queue);
+  }
+
+  VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  pool.queueFamilyIndex = queues_[0].family;
+  SG_VK(vkCreateCommandPool(device_, &pool, nullptr, &immediatePool_));
+}
+
+std::string Context::driverDescription() const {
+  VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+  VkPhysicalDeviceProperties2 p{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+  p.pNext = &driver;
+  vkGetPhysicalDeviceProperties2(physicalDevice_, &p);
+  return std::string(driver.driverName) + " " + driver.driverInfo;
+}
+
+void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
+  VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  alloc.commandPool = immediatePool_;
+  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  alloc.commandBufferCount = 1;
+  VkCommandBuffer cmd;
+  SG_VK(vkAllocateCommandBuffers(device_, &alloc, &cmd));
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  SG_VK(vkBeginCommandBuffer(cmd, &begin));
+  record(cmd);
+  SG_VK(vkEndCommandBuffer(cmd));
+  VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+  cmdInfo.commandBuffer = cmd;
+  VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+  submit.commandBufferInfoCount = 1;
+  submit.pCommandBufferInfos = &cmdInfo;
+  SG_VK(vkQueueSubmit2(queues_[0].queue, 1, &submit, VK_NULL_HANDLE));
+  SG_VK(vkQueueWaitIdle(queues_[0].queue));
+  vkFreeCommandBuffers(device_, immediatePool_, 1, &cmd);
+}
+
+void Context::setDebugName(VkObjectType type, uint64_t handle, const char* name) const {
+  if (!setObjectName_ || !name) return;
+  VkDebugUtilsObjectNameInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT};
+  info.objectType = type;
+  info.objectHandle = handle;
+  info.pObjectName = name;
+  setObjectName_(device_, &info);
+}
+
+}  // namespace sg::gpu
