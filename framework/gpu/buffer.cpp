@@ -7,18 +7,38 @@
 
 namespace sg::gpu {
 
-Buffer::Buffer(const Context& context, MemoryAllocator& memory, const BufferDesc& desc)
-    : device_(context.device()), memory_(&memory), size_(desc.size) {
+Buffer::Buffer(const Context& context, MemoryAllocator& memory, const BufferDesc& desc) : memory_(&memory) {
+  create(context, desc);
+  allocation_ = memory.allocate(memoryRequirements(), desc.location, desc.category);
+  bindMemory(allocation_.memory, allocation_.offset);
+}
+
+Buffer::Buffer(const Context& context, const BufferDesc& desc) { create(context, desc); }
+
+void Buffer::create(const Context& context, const BufferDesc& desc) {
+  device_ = context.device();
+  size_ = desc.size;
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
   info.size = desc.size;
   info.usage = desc.usage | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
-  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  const std::vector<uint32_t> families = context.queueFamilies();
+  if (desc.concurrent && families.size() > 1) {
+    info.sharingMode = VK_SHARING_MODE_CONCURRENT;
+    info.queueFamilyIndexCount = static_cast<uint32_t>(families.size());
+    info.pQueueFamilyIndices = families.data();
+  }
   SG_VK(vkCreateBuffer(device_, &info, nullptr, &buffer_));
   context.setDebugName(VK_OBJECT_TYPE_BUFFER, reinterpret_cast<uint64_t>(buffer_), desc.name.c_str());
+}
+
+VkMemoryRequirements Buffer::memoryRequirements() const {
   VkMemoryRequirements req;
   vkGetBufferMemoryRequirements(device_, buffer_, &req);
-  allocation_ = memory.allocate(req, desc.location, desc.category);
-  SG_VK(vkBindBufferMemory(device_, buffer_, allocation_.memory, allocation_.offset));
+  return req;
+}
+
+void Buffer::bindMemory(VkDeviceMemory memory, VkDeviceSize offset) {
+  SG_VK(vkBindBufferMemory(device_, buffer_, memory, offset));
   VkBufferDeviceAddressInfo addr{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
   addr.buffer = buffer_;
   address_ = vkGetBufferDeviceAddress(device_, &addr);

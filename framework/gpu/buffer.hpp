@@ -13,6 +13,7 @@ struct BufferDesc {
   MemoryLocation location = MemoryLocation::Device;
   std::string name;
   std::string category = "buffer";  // memory report bucket
+  bool concurrent = false;          // VK_SHARING_MODE_CONCURRENT over the context's queue families
 };
 
 // A VkBuffer with its own sub-allocation. Move-only.
@@ -20,9 +21,14 @@ class Buffer {
  public:
   Buffer() = default;
   Buffer(const Context& context, MemoryAllocator& memory, const BufferDesc& desc);
+  // Unbound: call bindMemory before use (the render graph's aliased transients).
+  Buffer(const Context& context, const BufferDesc& desc);
   ~Buffer();
   Buffer(Buffer&& other) noexcept;
   Buffer& operator=(Buffer&& other) noexcept;
+
+  VkMemoryRequirements memoryRequirements() const;
+  void bindMemory(VkDeviceMemory memory, VkDeviceSize offset);
 
   VkBuffer handle() const { return buffer_; }
   VkDeviceSize size() const { return size_; }
@@ -36,6 +42,7 @@ class Buffer {
   explicit operator bool() const { return buffer_ != VK_NULL_HANDLE; }
 
  private:
+  void create(const Context& context, const BufferDesc& desc);
   void release();
   VkDevice device_ = VK_NULL_HANDLE;
   MemoryAllocator* memory_ = nullptr;

@@ -1,5 +1,6 @@
 #include <shadelgraph/gpu/context.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <vector>
@@ -253,6 +254,13 @@ void Context::createDevice() {
   pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   pool.queueFamilyIndex = queues_[0].family;
   SG_VK(vkCreateCommandPool(device_, &pool, nullptr, &immediatePool_));
+}
+
+std::vector<uint32_t> Context::queueFamilies() const {
+  std::vector<uint32_t> families;
+  for (const auto& q : queues_)
+    if (std::find(families.begin(), families.end(), q.family) == families.end()) families.push_back(q.family);
+  return families;
 }
 
 std::string Context::driverDescription() const {

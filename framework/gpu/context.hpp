@@ -4,6 +4,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 
@@ -40,6 +41,8 @@ class Context {
   VkPhysicalDevice physicalDevice() const { return physicalDevice_; }
   VkDevice device() const { return device_; }
   const QueueInfo& queue(Queue q) const { return queues_[static_cast<int>(q)]; }
+  // The distinct queue families behind the logical queues (for concurrent sharing).
+  std::vector<uint32_t> queueFamilies() const;
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   std::string deviceName() const { return properties_.deviceName; }
   std::string driverDescription() const;

@@ -1,6 +1,5 @@
 #include <shadelgraph/gpu/image.hpp>
 
-#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -43,11 +42,7 @@ void Image::createImage(const Context& context) {
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = desc_.usage;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  std::vector<uint32_t> families;
-  for (auto q : {Queue::Graphics, Queue::AsyncCompute, Queue::Transfer}) {
-    uint32_t f = context.queue(q).family;
-    if (std::find(families.begin(), families.end(), f) == families.end()) families.push_back(f);
-  }
+  const std::vector<uint32_t> families = context.queueFamilies();
   if (desc_.concurrent && families.size() > 1) {
     info.sharingMode = VK_SHARING_MODE_CONCURRENT;
     info.queueFamilyIndexCount = static_cast<uint32_t>(families.size());

@@ -43,8 +43,10 @@ void Pipeline::createLayout(const PipelineLayoutDesc& desc) {
   SG_VK(vkCreateDescriptorSetLayout(device_, &setInfo, nullptr, &setLayout_));
   VkPushConstantRange push{VK_SHADER_STAGE_ALL, 0, desc.pushConstantBytes};
   VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  info.setLayoutCount = 1;
-  info.pSetLayouts = &setLayout_;
+  std::vector<VkDescriptorSetLayout> sets{setLayout_};
+  sets.insert(sets.end(), desc.extraSets.begin(), desc.extraSets.end());
+  info.setLayoutCount = static_cast<uint32_t>(sets.size());
+  info.pSetLayouts = sets.data();
   info.pushConstantRangeCount = desc.pushConstantBytes ? 1 : 0;
   info.pPushConstantRanges = &push;
   SG_VK(vkCreatePipelineLayout(device_, &info, nullptr, &layout_));
@@ -92,7 +94,6 @@ Pipeline::Pipeline(const Context& context, ShaderCompiler& compiler, const Pipel
   viewport.scissorCount = 1;
   VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
   raster.polygonMode = VK_POLYGON_MODE_FILL;
-  raster.cullMode = desc.cullMode;
   raster.frontFace = desc.frontFace;
   raster.lineWidth = 1.0f;
   VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
@@ -118,9 +119,10 @@ Pipeline::Pipeline(const Context& context, ShaderCompiler& compiler, const Pipel
   VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
   blend.attachmentCount = static_cast<uint32_t>(blends.size());
   blend.pAttachments = blends.data();
-  VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  // Cull mode is dynamic so one pipeline draws single- and double-sided materials.
+  VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR, VK_DYNAMIC_STATE_CULL_MODE};
   VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-  dynamic.dynamicStateCount = 2;
+  dynamic.dynamicStateCount = 3;
   dynamic.pDynamicStates = dynamicStates;
   VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
   rendering.colorAttachmentCount = static_cast<uint32_t>(desc.colorFormats.size());

@@ -22,8 +22,9 @@ struct DescriptorBinding {
 };
 
 struct PipelineLayoutDesc {
-  std::vector<DescriptorBinding> bindings;  // set 0
-  uint32_t pushConstantBytes = 0;           // visible to all stages
+  std::vector<DescriptorBinding> bindings;       // set 0, owned by the pipeline
+  std::vector<VkDescriptorSetLayout> extraSets;  // sets 1.., owned elsewhere (e.g. materials)
+  uint32_t pushConstantBytes = 0;                // visible to all stages
 };
 
 struct VertexInput {
@@ -37,13 +38,12 @@ struct GraphicsPipelineDesc {
   PipelineLayoutDesc layout;
   VertexInput vertexInput;
   VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-  VkCullModeFlags cullMode = VK_CULL_MODE_NONE;
   VkFrontFace frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
   std::vector<VkFormat> colorFormats;
   VkFormat depthFormat = VK_FORMAT_UNDEFINED;
   bool depthTest = false;
   bool depthWrite = false;
-  VkCompareOp depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reversed Z
+  VkCompareOp depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;
   bool alphaBlend = false;                                    // premultiplied "over"
   std::string name;
 };

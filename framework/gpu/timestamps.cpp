@@ -1,5 +1,7 @@
 #include <shadelgraph/gpu/timestamps.hpp>
 
+#include <algorithm>
+
 #include <shadelgraph/gpu/context.hpp>
 #include <shadelgraph/gpu/error.hpp>
 
@@ -40,8 +42,11 @@ std::vector<TimedScope> GpuTimer::read() const {
   std::vector<uint64_t> ticks(labels_.size() * 2);
   SG_VK(vkGetQueryPoolResults(device_, pool_, 0, static_cast<uint32_t>(ticks.size()), ticks.size() * 8, ticks.data(),
                               8, VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+  uint64_t first = ticks[0];
+  for (size_t i = 0; i < labels_.size(); ++i) first = std::min(first, ticks[2 * i]);
   for (size_t i = 0; i < labels_.size(); ++i)
-    out.push_back({labels_[i], static_cast<double>(ticks[2 * i + 1] - ticks[2 * i]) * nsPerTick_ * 1e-6});
+    out.push_back({labels_[i], static_cast<double>(ticks[2 * i + 1] - ticks[2 * i]) * nsPerTick_ * 1e-6,
+                   static_cast<double>(ticks[2 * i] - first) * nsPerTick_ * 1e-6});
   return out;
 }
 

@@ -13,6 +13,7 @@ class Context;
 struct TimedScope {
   std::string label;
   double gpuMs = 0.0;
+  double startMs = 0.0;  // since the earliest scope of the frame (for traces)
 };
 
 class GpuTimer {

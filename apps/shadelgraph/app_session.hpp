@@ -1,0 +1,27 @@
+#pragma once
+// What the device commands share: a Vulkan context (validation from
+// SG_VALIDATION), the gpu device with the built-in shaders, the scene, and a
+// renderer running the forward recipe.
+#include <memory>
+#include <string>
+
+#include <shadelgraph/gpu/context.hpp>
+#include <shadelgraph/gpu/device.hpp>
+#include <shadelgraph/render/renderer.hpp>
+#include <shadelgraph/scene/scene.hpp>
+
+namespace sg::app {
+
+struct AppSession {
+  explicit AppSession(const std::string& scenePath);
+  ~AppSession();
+  // Non-zero (and a message on stderr) when validation reported anything.
+  int validationExitCode() const;
+
+  scene::Scene scene;
+  std::unique_ptr<gpu::Context> context;
+  std::unique_ptr<gpu::Device> device;
+  std::unique_ptr<render::Renderer> renderer;
+};
+
+}  // namespace sg::app

@@ -1,0 +1,49 @@
+// shadelgraph inspect <scene>: per mesh, triangles, UV sets, the shading-chart
+// verdict with its counts, and materials. No device needed.
+#include <cstdio>
+#include <set>
+
+#include <shadelgraph/scene/uv_chart.hpp>
+
+#include "commands.hpp"
+#include "scene_source.hpp"
+
+namespace sg::app {
+
+void addInspectCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("inspect", "Print meshes, UV sets, shading-chart verdicts and materials of a scene");
+  static std::string path;
+  cmd->add_option("scene", path, "a .gltf/.glb/.json scene (default: the built-in scene)");
+  cmd->callback([] {
+    const scene::Scene s = loadSceneArgument(path);
+    std::printf("%zu meshes, %zu instances, %zu materials, %zu textures, %zu lights, %zu cameras, %zu triangles drawn\n",
+                s.meshes.size(), s.instances.size(), s.materials.size(), s.textures.size(), s.lights.size(),
+                s.cameras.size(), scene::instancedTriangleCount(s));
+    for (const auto& mesh : s.meshes) {
+      bool uv0 = false, uv1 = false;
+      std::set<int> materials;
+      for (const auto& p : mesh.primitives) {
+        uv0 |= !p.uv0.empty();
+        uv1 |= !p.uv1.empty();
+        materials.insert(p.material);
+      }
+      const auto verdict = scene::chooseShadingChart(mesh);
+      std::printf("mesh '%s': %zu triangles, %zu primitives, UV sets:%s%s%s\n", mesh.name.c_str(), mesh.triangleCount(),
+                  mesh.primitives.size(), uv0 ? " TEXCOORD_0" : "", uv1 ? " TEXCOORD_1" : "",
+                  uv0 || uv1 ? "" : " none");
+      std::printf("  chart: %s", verdict.unique ? "unique" : "not unique");
+      if (verdict.uvSet >= 0)
+        std::printf(" (TEXCOORD_%d: %zu overlapping pairs%s, %zu overlapping triangles, %zu out-of-range UVs, "
+                    "%zu zero-UV-area triangles)",
+                    verdict.uvSet, verdict.overlappingPairs, verdict.countsTruncated ? "+" : "",
+                    verdict.overlappingTriangles, verdict.outOfRangeUvs, verdict.zeroAreaTriangles);
+      if (!verdict.reason.empty()) std::printf(" - %s", verdict.reason.c_str());
+      std::printf("\n  materials:");
+      for (int m : materials) std::printf(" '%s'", s.materials[size_t(m)].name.c_str());
+      std::printf("\n");
+    }
+    for (const auto& w : s.warnings) std::printf("warning: %s\n", w.c_str());
+  });
+}
+
+}  // namespace sg::app

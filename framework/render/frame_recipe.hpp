@@ -1,0 +1,23 @@
+#pragma once
+// A frame recipe puts the passes of one frame on the render graph: the
+// forward recipe (plugins/forward), the decoupled-shading recipe, or a
+// user's own. It gets the scene to draw and the output to write.
+#include <functional>
+
+#include <glm/glm.hpp>
+
+#include <shadelgraph/graph/render_graph.hpp>
+#include <shadelgraph/render/scene_view.hpp>
+
+namespace sg::render {
+
+struct FrameInputs {
+  SceneView view;
+  glm::vec3 cameraPosition{0.0f};
+  graph::ResourceHandle output;  // imported 8-bit sRGB colour image
+};
+
+// Declares the frame's passes; returns the final version of the output.
+using FrameRecipe = std::function<graph::ResourceHandle(graph::RenderGraph&, const FrameInputs&)>;
+
+}  // namespace sg::render

@@ -1,0 +1,34 @@
+#include <shadelgraph/render/frame_uniforms.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sg::render {
+
+FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& camera, uint32_t width,
+                                uint32_t height) {
+  FrameUniforms f{};
+  f.view = camera.view();
+  f.projection = camera.projectionMatrix(float(width) / float(height));
+  f.viewProjection = f.projection * f.view;
+  f.cameraPosition = glm::vec4(camera.position(), 1.0f);
+  f.ambient = glm::vec4(0.25f, 0.28f, 0.33f, 0.0f);
+  std::vector<scene::Light> lights = scene.lights;
+  if (lights.empty())
+    lights.push_back({.name = "default sun", .type = scene::LightType::Directional, .color = glm::vec3(1.0f),
+                      .intensity = 3.0f, .direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.5f))});
+  const auto count = std::min<size_t>(lights.size(), kMaxLights);
+  for (size_t i = 0; i < count; ++i) {
+    const auto& l = lights[i];
+    GpuLight& g = f.lights[i];
+    g.positionType = glm::vec4(l.position, float(int(l.type)));
+    g.directionRange = glm::vec4(glm::normalize(l.direction), l.range);
+    g.color = glm::vec4(l.color * l.intensity, 0.0f);
+    const float cosOuter = std::cos(l.outerConeAngle), cosInner = std::cos(l.innerConeAngle);
+    g.cone = glm::vec4(cosOuter, 1.0f / std::max(cosInner - cosOuter, 1e-4f), 0.0f, 0.0f);
+  }
+  f.counts = glm::uvec4(uint32_t(count), width, height, 0u);
+  return f;
+}
+
+}  // namespace sg::render

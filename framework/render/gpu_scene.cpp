@@ -1,0 +1,309 @@
+#include <shadelgraph/render/gpu_scene.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cstring>
+
+#include <shadelgraph/gpu/context.hpp>
+#include <shadelgraph/gpu/error.hpp>
+
+namespace sg::render {
+namespace {
+
+// Mirrors MaterialBlock in materials/gltf-pbr/material.glsl (std140).
+struct GpuTextureSlot {
+  glm::vec4 row0, row1;
+};
+struct GpuMaterial {
+  glm::vec4 baseColorFactor;
+  glm::vec4 emissiveFactor;
+  glm::vec4 params;
+  glm::uvec4 flags;
+  GpuTextureSlot slots[5];
+};
+
+VkSamplerAddressMode toVk(scene::WrapMode m) {
+  switch (m) {
+    case scene::WrapMode::Repeat: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    case scene::WrapMode::ClampToEdge: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    case scene::WrapMode::MirroredRepeat: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+  }
+  return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+}
+
+VkFilter toVk(scene::Filter f) { return f == scene::Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR; }
+
+uint32_t mipCount(uint32_t w, uint32_t h) { return std::bit_width(std::max(w, h)); }
+
+void imageBarrier(VkCommandBuffer cmd, VkImage image, uint32_t mip, uint32_t mipCount, VkImageLayout from,
+                  VkImageLayout to, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
+                  VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess) {
+  VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+  b.srcStageMask = srcStage;
+  b.srcAccessMask = srcAccess;
+  b.dstStageMask = dstStage;
+  b.dstAccessMask = dstAccess;
+  b.oldLayout = from;
+  b.newLayout = to;
+  b.image = image;
+  b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, mip, mipCount, 0, 1};
+  VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dep.imageMemoryBarrierCount = 1;
+  dep.pImageMemoryBarriers = &b;
+  vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+// Uploads RGBA8 pixels and builds the mip chain with linear blits.
+gpu::Image uploadTexture(gpu::Context& context, gpu::MemoryAllocator& memory, uint32_t w, uint32_t h,
+                         const uint8_t* pixels, bool srgb, const std::string& name) {
+  const uint32_t mips = mipCount(w, h);
+  gpu::Image image(context, memory,
+                   {.width = w, .height = h, .format = srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM,
+                    .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                    .mipLevels = mips, .name = name, .category = "scene textures"});
+  gpu::Buffer staging(context, memory,
+                      {size_t(w) * h * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryLocation::Upload, name, "staging"});
+  staging.write(pixels, size_t(w) * h * 4);
+  context.submitAndWait([&](VkCommandBuffer cmd) {
+    VkImage img = image.handle();
+    imageBarrier(cmd, img, 0, mips, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT,
+                 VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {w, h, 1};
+    vkCmdCopyBufferToImage(cmd, staging.handle(), img, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    int32_t mw = int32_t(w), mh = int32_t(h);
+    for (uint32_t level = 1; level < mips; ++level) {
+      imageBarrier(cmd, img, level - 1, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                   VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                   VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+      VkImageBlit blit{};
+      blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, 1};
+      blit.srcOffsets[1] = {mw, mh, 1};
+      mw = std::max(mw / 2, 1);
+      mh = std::max(mh / 2, 1);
+      blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1};
+      blit.dstOffsets[1] = {mw, mh, 1};
+      vkCmdBlitImage(cmd, img, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, img, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit,
+                     VK_FILTER_LINEAR);
+    }
+    if (mips > 1)
+      imageBarrier(cmd, img, 0, mips - 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                   VK_PIPELINE_STAGE_2_BLIT_BIT, 0, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
+                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    imageBarrier(cmd, img, mips - 1, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                 VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                 VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+  });
+  return image;
+}
+
+gpu::Buffer uploadBuffer(gpu::Context& context, gpu::MemoryAllocator& memory, const void* data, size_t bytes,
+                         VkBufferUsageFlags usage, const char* name) {
+  gpu::Buffer buffer(context, memory, {bytes, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryLocation::Device, name, "scene geometry"});
+  gpu::Buffer staging(context, memory, {bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryLocation::Upload, name, "staging"});
+  staging.write(data, bytes);
+  context.submitAndWait([&](VkCommandBuffer cmd) {
+    VkBufferCopy copy{0, 0, bytes};
+    vkCmdCopyBuffer(cmd, staging.handle(), buffer.handle(), 1, &copy);
+    VkMemoryBarrier2 b{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    b.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+    b.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+    b.dstStageMask = VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT | VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    b.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT;
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.memoryBarrierCount = 1;
+    dep.pMemoryBarriers = &b;
+    vkCmdPipelineBarrier2(cmd, &dep);
+  });
+  return buffer;
+}
+
+}  // namespace
+
+gpu::VertexInput sceneVertexInput() {
+  gpu::VertexInput input;
+  input.bindings.push_back({0, sizeof(GpuVertex), VK_VERTEX_INPUT_RATE_VERTEX});
+  input.attributes = {
+      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position)},
+      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal)},
+      {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(GpuVertex, tangent)},
+      {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(GpuVertex, uv0)},
+      {4, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(GpuVertex, uv1)},
+      {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(GpuVertex, color)},
+  };
+  return input;
+}
+
+GpuScene::GpuScene(gpu::Context& context, gpu::MemoryAllocator& memory, const scene::Scene& scene)
+    : device_(context.device()) {
+  uploadGeometry(context, memory, scene);
+  uploadTextures(context, memory, scene);
+  createMaterials(context, memory, scene);
+}
+
+GpuScene::~GpuScene() {
+  if (materialPool_) vkDestroyDescriptorPool(device_, materialPool_, nullptr);
+  if (materialLayout_) vkDestroyDescriptorSetLayout(device_, materialLayout_, nullptr);
+  for (VkSampler s : samplers_) vkDestroySampler(device_, s, nullptr);
+}
+
+void GpuScene::uploadGeometry(gpu::Context& context, gpu::MemoryAllocator& memory, const scene::Scene& scene) {
+  std::vector<GpuVertex> vertices;
+  std::vector<uint32_t> indices;
+  struct Range {
+    uint32_t firstIndex, indexCount;
+    int32_t vertexOffset;
+    int material;
+  };
+  std::vector<std::vector<Range>> meshRanges;
+  for (const auto& mesh : scene.meshes) {
+    auto& ranges = meshRanges.emplace_back();
+    for (const auto& p : mesh.primitives) {
+      ranges.push_back({uint32_t(indices.size()), uint32_t(p.indices.size()), int32_t(vertices.size()), p.material});
+      for (size_t i = 0; i < p.positions.size(); ++i)
+        vertices.push_back({p.positions[i], p.normals.empty() ? glm::vec3(0, 1, 0) : p.normals[i],
+                            p.tangents.empty() ? glm::vec4(1, 0, 0, 1) : p.tangents[i],
+                            p.uv0.empty() ? glm::vec2(0) : p.uv0[i], p.uv1.empty() ? glm::vec2(0) : p.uv1[i],
+                            p.colors.empty() ? glm::vec4(1) : p.colors[i]});
+      indices.insert(indices.end(), p.indices.begin(), p.indices.end());
+    }
+  }
+  for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+    const auto& inst = scene.instances[i];
+    for (const Range& r : meshRanges[size_t(inst.mesh)]) {
+      const auto& m = scene.materials[size_t(r.material)];
+      draws_.push_back({r.firstIndex, r.indexCount, r.vertexOffset, uint32_t(r.material), i, inst.world, m.alphaMode,
+                        m.doubleSided});
+    }
+  }
+  if (vertices.empty()) throw gpu::GpuError("the scene has no triangles to draw");
+  vertices_ = uploadBuffer(context, memory, vertices.data(), vertices.size() * sizeof(GpuVertex),
+                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "vertices");
+  indices_ = uploadBuffer(context, memory, indices.data(), indices.size() * 4,
+                          VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "indices");
+}
+
+void GpuScene::uploadTextures(gpu::Context& context, gpu::MemoryAllocator& memory, const scene::Scene& scene) {
+  for (const auto& t : scene.textures) {
+    if (t.pixels.empty()) throw gpu::GpuError("texture '" + t.name + "' has no decoded pixels");
+    textures_.push_back(uploadTexture(context, memory, t.width, t.height, t.pixels.data(), t.srgb, t.name));
+  }
+  const uint8_t white[4] = {255, 255, 255, 255}, flatNormal[4] = {128, 128, 255, 255};
+  textures_.push_back(uploadTexture(context, memory, 1, 1, white, false, "white"));
+  textures_.push_back(uploadTexture(context, memory, 1, 1, flatNormal, false, "flat normal"));
+
+  std::vector<scene::Sampler> samplers = scene.samplers;
+  if (samplers.empty()) samplers.push_back({});
+  for (const auto& s : samplers) {
+    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    info.magFilter = toVk(s.magFilter);
+    info.minFilter = toVk(s.minFilter);
+    info.mipmapMode = s.mipmapMode == scene::MipmapMode::Nearest ? VK_SAMPLER_MIPMAP_MODE_NEAREST : VK_SAMPLER_MIPMAP_MODE_LINEAR;
+    info.addressModeU = toVk(s.wrapS);
+    info.addressModeV = toVk(s.wrapT);
+    info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    info.maxLod = s.mipmapMode == scene::MipmapMode::None ? 0.0f : VK_LOD_CLAMP_NONE;
+    VkSampler sampler;
+    SG_VK(vkCreateSampler(device_, &info, nullptr, &sampler));
+    samplers_.push_back(sampler);
+  }
+}
+
+void GpuScene::createMaterials(gpu::Context& context, gpu::MemoryAllocator& memory, const scene::Scene& scene) {
+  std::vector<VkDescriptorSetLayoutBinding> bindings{{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_ALL, nullptr}};
+  for (uint32_t b = 1; b <= 5; ++b)
+    bindings.push_back({b, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_ALL, nullptr});
+  VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  layoutInfo.bindingCount = uint32_t(bindings.size());
+  layoutInfo.pBindings = bindings.data();
+  SG_VK(vkCreateDescriptorSetLayout(device_, &layoutInfo, nullptr, &materialLayout_));
+
+  std::vector<scene::Material> materials = scene.materials;
+  if (materials.empty()) materials.push_back({});
+  const auto count = uint32_t(materials.size());
+  VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, count},
+                                  {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, count * 5}};
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = count;
+  poolInfo.poolSizeCount = 2;
+  poolInfo.pPoolSizes = sizes;
+  SG_VK(vkCreateDescriptorPool(device_, &poolInfo, nullptr, &materialPool_));
+  std::vector<VkDescriptorSetLayout> layouts(count, materialLayout_);
+  VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  alloc.descriptorPool = materialPool_;
+  alloc.descriptorSetCount = count;
+  alloc.pSetLayouts = layouts.data();
+  materialSets_.resize(count);
+  SG_VK(vkAllocateDescriptorSets(device_, &alloc, materialSets_.data()));
+
+  const size_t white = scene.textures.size(), flatNormal = white + 1;
+  for (uint32_t i = 0; i < count; ++i) {
+    const auto& m = materials[i];
+    GpuMaterial g{};
+    g.baseColorFactor = m.baseColorFactor;
+    g.emissiveFactor = glm::vec4(m.emissiveFactor, m.normalScale);
+    g.params = {m.metallicFactor, m.roughnessFactor, m.occlusionStrength, m.alphaCutoff};
+    const scene::TextureRef* refs[5] = {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture,
+                                        &m.occlusionTexture, &m.emissiveTexture};
+    VkDescriptorImageInfo images[5];
+    uint32_t present = 0;
+    for (int slot = 0; slot < 5; ++slot) {
+      const auto& ref = *refs[slot];
+      const glm::mat3 t = ref.transform.matrix();
+      // glm is column-major: row r of the affine is (t[0][r], t[1][r], t[2][r]).
+      g.slots[slot].row0 = {t[0][0], t[1][0], t[2][0], 0.0f};
+      g.slots[slot].row1 = {t[0][1], t[1][1], t[2][1], float(ref.texCoord)};
+      size_t texture = slot == 2 ? flatNormal : white;
+      VkSampler sampler = samplers_[0];
+      if (ref.present()) {
+        present |= 1u << slot;
+        texture = size_t(ref.texture);
+        sampler = samplers_[size_t(scene.textures[texture].sampler)];
+      }
+      images[slot] = {sampler, textures_[texture].view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    }
+    g.flags = {uint32_t(m.alphaMode), m.doubleSided ? 1u : 0u, present, 0u};
+    gpu::Buffer& ubo = materialBuffers_.emplace_back(
+        context, memory,
+        gpu::BufferDesc{sizeof(GpuMaterial), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryLocation::Upload, m.name, "materials"});
+    ubo.write(&g, sizeof g);
+    VkDescriptorBufferInfo bufferInfo{ubo.handle(), 0, sizeof(GpuMaterial)};
+    std::vector<VkWriteDescriptorSet> writes;
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstSet = materialSets_[i];
+    w.descriptorCount = 1;
+    w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    w.pBufferInfo = &bufferInfo;
+    writes.push_back(w);
+    for (uint32_t slot = 0; slot < 5; ++slot) {
+      w.dstBinding = slot + 1;
+      w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+      w.pBufferInfo = nullptr;
+      w.pImageInfo = &images[slot];
+      writes.push_back(w);
+    }
+    vkUpdateDescriptorSets(device_, uint32_t(writes.size()), writes.data(), 0, nullptr);
+  }
+}
+
+bool GpuScene::hasAlphaMode(scene::AlphaMode mode) const {
+  return std::any_of(draws_.begin(), draws_.end(), [&](const DrawItem& d) { return d.alphaMode == mode; });
+}
+
+void GpuScene::bindGeometry(VkCommandBuffer cmd) const {
+  VkBuffer vb = vertices_.handle();
+  VkDeviceSize offset = 0;
+  vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
+  vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+}
+
+size_t GpuScene::triangleCount() const {
+  size_t n = 0;
+  for (const auto& d : draws_) n += d.indexCount / 3;
+  return n;
+}
+
+}  // namespace sg::render

@@ -1,0 +1,78 @@
+#pragma once
+// A scene uploaded for drawing: one vertex and one index buffer for all
+// meshes, textures with mips, samplers, and one descriptor set per material
+// (set 1 of the material shaders, see materials/gltf-pbr/material.glsl).
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include <shadelgraph/gpu/buffer.hpp>
+#include <shadelgraph/gpu/image.hpp>
+#include <shadelgraph/gpu/pipeline.hpp>
+#include <shadelgraph/scene/scene.hpp>
+
+namespace sg::render {
+
+struct GpuVertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+  glm::vec4 tangent;
+  glm::vec2 uv0;
+  glm::vec2 uv1;
+  glm::vec4 color;
+};
+
+// The vertex input every scene pipeline uses (locations 0..5 of object.glsl).
+gpu::VertexInput sceneVertexInput();
+
+// One primitive of one instance: what a draw call needs.
+struct DrawItem {
+  uint32_t firstIndex = 0;
+  uint32_t indexCount = 0;
+  int32_t vertexOffset = 0;
+  uint32_t material = 0;
+  uint32_t instance = 0;
+  glm::mat4 world{1.0f};
+  scene::AlphaMode alphaMode = scene::AlphaMode::Opaque;
+  bool doubleSided = false;
+};
+
+// Push constants of object.glsl.
+struct ObjectConstants {
+  glm::mat4 model;
+  uint32_t objectId;
+  uint32_t materialId;
+};
+
+class GpuScene {
+ public:
+  GpuScene(gpu::Context& context, gpu::MemoryAllocator& memory, const scene::Scene& scene);
+  ~GpuScene();
+  GpuScene(const GpuScene&) = delete;
+  GpuScene& operator=(const GpuScene&) = delete;
+
+  const std::vector<DrawItem>& draws() const { return draws_; }
+  VkDescriptorSetLayout materialSetLayout() const { return materialLayout_; }
+  VkDescriptorSet materialSet(uint32_t material) const { return materialSets_[material]; }
+  bool hasAlphaMode(scene::AlphaMode mode) const;
+  // Binds the vertex and index buffers.
+  void bindGeometry(VkCommandBuffer cmd) const;
+  size_t triangleCount() const;
+
+ private:
+  void uploadGeometry(gpu::Context& context, gpu::MemoryAllocator& memory, const scene::Scene& scene);
+  void uploadTextures(gpu::Context& context, gpu::MemoryAllocator& memory, const scene::Scene& scene);
+  void createMaterials(gpu::Context& context, gpu::MemoryAllocator& memory, const scene::Scene& scene);
+
+  VkDevice device_;
+  gpu::Buffer vertices_, indices_;
+  std::vector<DrawItem> draws_;
+  std::vector<gpu::Image> textures_;  // scene textures, then white, then flat normal
+  std::vector<VkSampler> samplers_;
+  std::vector<gpu::Buffer> materialBuffers_;
+  VkDescriptorSetLayout materialLayout_ = VK_NULL_HANDLE;
+  VkDescriptorPool materialPool_ = VK_NULL_HANDLE;
+  std::vector<VkDescriptorSet> materialSets_;
+};
+
+}  // namespace sg::render

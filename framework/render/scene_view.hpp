@@ -1,0 +1,17 @@
+#pragma once
+// What scene passes draw: the uploaded scene and this frame's uniform buffer
+// (camera, lights; written by the host before the frame is submitted).
+#include <shadelgraph/gpu/buffer.hpp>
+#include <shadelgraph/render/gpu_scene.hpp>
+
+namespace sg::render {
+
+struct SceneView {
+  const GpuScene& scene;
+  const gpu::Buffer& frameUniforms;
+};
+
+// Push constants and cull mode for one draw, then the indexed draw.
+void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const DrawItem& draw, uint32_t objectId);
+
+}  // namespace sg::render

@@ -1,0 +1,89 @@
+// glTF metallic-roughness shading of one surface point with the frame's
+// punctual lights and a hemispherical ambient term. Needs frame.glsl and
+// material.glsl included first. SG_SAMPLE(tex, uv) is defined by the variant
+// (fragment: implicit derivatives).
+#ifndef SG_GLTF_PBR_GLSL
+#define SG_GLTF_PBR_GLSL
+
+#include "brdf.glsl"
+
+#ifndef SG_SAMPLE
+#define SG_SAMPLE(tex, uv) texture(tex, uv)
+#endif
+
+struct Surface {
+  vec3 position;  // world
+  vec3 normal;    // world, unit, facing the viewer for double-sided back faces
+  vec4 tangent;   // world xyz, w = handedness
+  vec2 uv0;
+  vec2 uv1;
+  vec4 color;     // COLOR_0
+};
+
+vec4 materialBaseColor(Surface s) {
+  vec4 c = material.baseColorFactor * s.color;
+  if (materialHas(SG_TEX_BASE_COLOR)) c *= SG_SAMPLE(baseColorTexture, materialUv(SG_TEX_BASE_COLOR, s.uv0, s.uv1));
+  return c;
+}
+
+vec3 shadingNormal(Surface s) {
+  if (!materialHas(SG_TEX_NORMAL)) return s.normal;
+  vec3 t = s.tangent.xyz - s.normal * dot(s.normal, s.tangent.xyz);
+  if (dot(t, t) < 1e-12) return s.normal;
+  t = normalize(t);
+  vec3 b = cross(s.normal, t) * s.tangent.w;
+  vec3 m = SG_SAMPLE(normalTexture, materialUv(SG_TEX_NORMAL, s.uv0, s.uv1)).xyz * 2.0 - 1.0;
+  m.xy *= material.emissiveFactor.w;
+  return normalize(mat3(t, b, s.normal) * m);
+}
+
+// rgb = outgoing radiance towards the camera, a = alpha.
+vec4 shadeGltfPbr(Surface s) {
+  vec4 baseColor = materialBaseColor(s);
+  float metallic = material.params.x, roughness = material.params.y;
+  if (materialHas(SG_TEX_METALLIC_ROUGHNESS)) {
+    vec4 mr = SG_SAMPLE(metallicRoughnessTexture, materialUv(SG_TEX_METALLIC_ROUGHNESS, s.uv0, s.uv1));
+    roughness *= mr.g;
+    metallic *= mr.b;
+  }
+  float occlusion = 1.0;
+  if (materialHas(SG_TEX_OCCLUSION))
+    occlusion = 1.0 + material.params.z * (SG_SAMPLE(occlusionTexture, materialUv(SG_TEX_OCCLUSION, s.uv0, s.uv1)).r - 1.0);
+  vec3 emissive = material.emissiveFactor.rgb;
+  if (materialHas(SG_TEX_EMISSIVE)) emissive *= SG_SAMPLE(emissiveTexture, materialUv(SG_TEX_EMISSIVE, s.uv0, s.uv1)).rgb;
+
+  vec3 N = shadingNormal(s);
+  vec3 V = normalize(frame.cameraPosition.xyz - s.position);
+  vec3 color = vec3(0.0);
+  for (uint i = 0u; i < frame.counts.x; ++i) {
+    Light light = frame.lights[i];
+    uint type = uint(light.positionType.w);
+    vec3 L;
+    float attenuation = 1.0;
+    if (type == SG_LIGHT_DIRECTIONAL) {
+      L = -light.directionRange.xyz;
+    } else {
+      vec3 toLight = light.positionType.xyz - s.position;
+      float d2 = max(dot(toLight, toLight), 1e-4);
+      L = toLight * inversesqrt(d2);
+      attenuation = 1.0 / d2;
+      float range = light.directionRange.w;
+      if (range > 0.0) attenuation *= clamp(1.0 - pow(d2 / (range * range), 2.0), 0.0, 1.0);
+      if (type == SG_LIGHT_SPOT) {
+        float cd = dot(light.directionRange.xyz, -L);
+        float t = clamp((cd - light.cone.x) * light.cone.y, 0.0, 1.0);
+        attenuation *= t * t;
+      }
+    }
+    color += brdfGltf(baseColor.rgb, metallic, roughness, N, V, L, light.color.rgb * attenuation);
+  }
+  // Hemisphere ambient: sky above, a darker bounce below.
+  float up = N.y * 0.5 + 0.5;
+  vec3 ambient = frame.ambient.rgb * mix(0.35, 1.0, up);
+  vec3 f0 = mix(vec3(0.04), baseColor.rgb, metallic);
+  color += ambient * occlusion * (baseColor.rgb * (1.0 - metallic) + f0 * 0.5);
+  color += emissive;
+  return vec4(color, baseColor.a);
+}
+
+#endif

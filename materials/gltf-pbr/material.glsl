@@ -1,0 +1,44 @@
+// A glTF metallic-roughness material bound as descriptor set 1 (GpuScene
+// writes one set per material). Mirrors GpuMaterial in gpu_scene.cpp.
+#ifndef SG_MATERIAL_GLSL
+#define SG_MATERIAL_GLSL
+
+#define SG_ALPHA_OPAQUE 0u
+#define SG_ALPHA_MASK 1u
+#define SG_ALPHA_BLEND 2u
+
+// Texture slots, in binding order 1..5.
+#define SG_TEX_BASE_COLOR 0
+#define SG_TEX_METALLIC_ROUGHNESS 1
+#define SG_TEX_NORMAL 2
+#define SG_TEX_OCCLUSION 3
+#define SG_TEX_EMISSIVE 4
+
+struct TextureSlot {
+  vec4 row0;   // KHR_texture_transform, first row of the 2x3 affine
+  vec4 row1;   // second row; w = UV set (0 or 1)
+};
+
+layout(set = 1, binding = 0, std140) uniform MaterialBlock {
+  vec4 baseColorFactor;
+  vec4 emissiveFactor;  // rgb, w = normal scale
+  vec4 params;          // x = metallic, y = roughness, z = occlusion strength, w = alpha cutoff
+  uvec4 flags;          // x = alpha mode, y = double sided, z = bitmask of present textures
+  TextureSlot slots[5];
+} material;
+
+layout(set = 1, binding = 1) uniform sampler2D baseColorTexture;
+layout(set = 1, binding = 2) uniform sampler2D metallicRoughnessTexture;
+layout(set = 1, binding = 3) uniform sampler2D normalTexture;
+layout(set = 1, binding = 4) uniform sampler2D occlusionTexture;
+layout(set = 1, binding = 5) uniform sampler2D emissiveTexture;
+
+bool materialHas(int slot) { return (material.flags.z & (1u << slot)) != 0u; }
+
+vec2 materialUv(int slot, vec2 uv0, vec2 uv1) {
+  TextureSlot s = material.slots[slot];
+  vec2 uv = s.row1.w > 0.5 ? uv1 : uv0;
+  return vec2(dot(s.row0.xyz, vec3(uv, 1.0)), dot(s.row1.xyz, vec3(uv, 1.0)));
+}
+
+#endif

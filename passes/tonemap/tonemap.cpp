@@ -1,0 +1,32 @@
+#include "tonemap.hpp"
+
+#include <shadelgraph/gpu/pass_context.hpp>
+
+namespace sg::passes {
+
+graph::ResourceHandle addTonemap(graph::RenderGraph& graph, graph::ResourceHandle hdr, graph::ResourceHandle exposure,
+                                 graph::ResourceHandle output) {
+  auto& pass = graph.addPass("tonemap", graph::QueueClass::Graphics);
+  pass.read(hdr, graph::Access::Sampled);
+  pass.read(exposure, graph::Access::StorageRead);
+  output = pass.write(output, graph::Access::ColorAttachment);
+  pass.execute([hdr, exposure, output](PassContext& ctx) {
+    const VkFormat format = ctx.image(output).desc().format;
+    const auto& pipeline = ctx.device().pipeline("tonemap/" + std::to_string(format), [&] {
+      return gpu::GraphicsPipelineDesc{
+          .vertex = {.path = "passes/tonemap/tonemap.vert"},
+          .fragment = {.path = "passes/tonemap/tonemap.frag"},
+          .layout = {.bindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}},
+          .colorFormats = {format}};
+    });
+    ctx.beginRendering({ColorTarget{output}});
+    ctx.bind(pipeline, {{0, gpu::ImageBinding{ctx.image(hdr).view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                              ctx.device().nearestSampler()}},
+                        {1, gpu::BufferBinding{ctx.buffer(exposure).handle()}}});
+    vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+    ctx.endRendering();
+  });
+  return output;
+}
+
+}  // namespace sg::passes

@@ -1,0 +1,16 @@
+#version 460
+// HDR -> display: exposure from the exposure pass, ACES filmic fit (Narkowicz
+// 2015); the sRGB output format applies the transfer function.
+layout(set = 0, binding = 0) uniform sampler2D hdr;
+layout(set = 0, binding = 1, std430) readonly buffer Exposure { float logAverage; float exposure; float pixels; } result;
+layout(location = 0) in vec2 inUv;
+layout(location = 0) out vec4 outColor;
+
+vec3 acesFilm(vec3 x) {
+  return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+}
+
+void main() {
+  vec3 c = texture(hdr, inUv).rgb * result.exposure;
+  outColor = vec4(acesFilm(c), 1.0);
+}

@@ -1,0 +1,10 @@
+#pragma once
+#include <shadelgraph/graph/render_graph.hpp>
+
+namespace sg::passes {
+
+// HDR -> the 8-bit sRGB output, exposed by the exposure pass's result (graphics).
+graph::ResourceHandle addTonemap(graph::RenderGraph& graph, graph::ResourceHandle hdr, graph::ResourceHandle exposure,
+                                 graph::ResourceHandle output);
+
+}  // namespace sg::passes

@@ -1,0 +1,22 @@
+#include "forward_recipe.hpp"
+
+#include "exposure/exposure.hpp"
+#include "forward/forward.hpp"
+#include "tonemap/tonemap.hpp"
+#include "z-prepass/z_prepass.hpp"
+
+namespace sg::plugins {
+
+graph::ResourceHandle forwardRecipe(graph::RenderGraph& graph, const render::FrameInputs& inputs) {
+  passes::ForwardTargets targets;
+  targets.depth = graph.createImage("depth", {.format = graph::Format::D32F});
+  targets.color = graph.createImage("hdr", {.format = graph::Format::RGBA16F});
+  targets.depth = passes::addZPrepass(graph, inputs.view, targets.depth);
+  targets = passes::addForwardOpaque(graph, inputs.view, targets);
+  if (inputs.view.scene.hasAlphaMode(scene::AlphaMode::Blend))
+    targets.color = passes::addForwardBlend(graph, inputs.view, inputs.cameraPosition, targets);
+  const auto exposure = passes::addExposure(graph, targets.color);
+  return passes::addTonemap(graph, targets.color, exposure, inputs.output);
+}
+
+}  // namespace sg::plugins

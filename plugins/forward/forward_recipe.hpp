@@ -1,0 +1,11 @@
+#pragma once
+#include <shadelgraph/render/frame_recipe.hpp>
+
+namespace sg::plugins {
+
+// Forward shading of every object: z-prepass, forward opaque (+ masked),
+// forward blend (only if the scene has blended materials), exposure (async
+// compute), tonemap.
+graph::ResourceHandle forwardRecipe(graph::RenderGraph& graph, const render::FrameInputs& inputs);
+
+}  // namespace sg::plugins
