@@ -198,10 +198,10 @@ FrameTimings GraphExecutor::execute(const graph::RenderGraph& graph, const graph
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     SG_VK(vkBeginCommandBuffer(cmd, &begin));
-    for (graph::PassId id : batch.passes) {
+    for (graph::PassId id : plan.passesOf(batch)) {
       const graph::PlannedPass& planned = plan.passes[id.index];
       std::vector<const graph::Barrier*> before;
-      for (const auto& barrier : planned.barriersBefore) before.push_back(&barrier);
+      for (const auto& barrier : plan.barriersBefore(id)) before.push_back(&barrier);
       recordBarriers(cmd, plan, before);
       const uint32_t scope = timer_.begin(cmd, planned.name);
       CpuTimer recordTimer;
@@ -212,7 +212,7 @@ FrameTimings GraphExecutor::execute(const graph::RenderGraph& graph, const graph
       const double cpuMs = recordTimer.elapsedMs();
       timer_.end(cmd, scope);
       std::vector<const graph::Barrier*> after;
-      for (const auto& barrier : planned.barriersAfter) after.push_back(&barrier);
+      for (const auto& barrier : plan.barriersAfter(id)) after.push_back(&barrier);
       for (const auto& f : plan.finalBarriers)
         if (f.afterPass == id) after.push_back(&f.barrier);
       recordBarriers(cmd, plan, after);
@@ -222,7 +222,7 @@ FrameTimings GraphExecutor::execute(const graph::RenderGraph& graph, const graph
     SG_VK(vkEndCommandBuffer(cmd));
 
     std::vector<VkSemaphoreSubmitInfo> waits;
-    for (const auto& w : batch.waits) {
+    for (const auto& w : plan.waitsOf(batch)) {
       VkSemaphoreSubmitInfo s{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
       s.semaphore = timelines_[graph::queueIndex(w.queue)];
       s.value = timelineBase_[graph::queueIndex(w.queue)] + w.value;

@@ -12,7 +12,7 @@ FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& 
   f.projection = camera.projectionMatrix(float(width) / float(height));
   f.viewProjection = f.projection * f.view;
   f.cameraPosition = glm::vec4(camera.position(), 1.0f);
-  f.ambient = glm::vec4(0.25f, 0.28f, 0.33f, 0.0f);
+  f.ambient = glm::vec4(0.35f, 0.45f, 0.6f, 0.0f);  // sky radiance
   std::vector<scene::Light> lights = scene.lights;
   if (lights.empty())
     lights.push_back({.name = "default sun", .type = scene::LightType::Directional, .color = glm::vec3(1.0f),

@@ -37,6 +37,12 @@ vec3 shadingNormal(Surface s) {
   return normalize(mat3(t, b, s.normal) * m);
 }
 
+// Radiance of the environment seen in a direction with vertical component `y`.
+vec3 environmentRadiance(float y) {
+  vec3 sky = frame.ambient.rgb, horizon = frame.ambient.rgb * 1.6, ground = frame.ambient.rgb * 0.3;
+  return y > 0.0 ? mix(horizon, sky, sqrt(y)) : mix(horizon, ground, sqrt(-y));
+}
+
 // rgb = outgoing radiance towards the camera, a = alpha.
 vec4 shadeGltfPbr(Surface s) {
   vec4 baseColor = materialBaseColor(s);
@@ -77,11 +83,19 @@ vec4 shadeGltfPbr(Surface s) {
     }
     color += brdfGltf(baseColor.rgb, metallic, roughness, N, V, L, light.color.rgb * attenuation);
   }
-  // Hemisphere ambient: sky above, a darker bounce below.
-  float up = N.y * 0.5 + 0.5;
-  vec3 ambient = frame.ambient.rgb * mix(0.35, 1.0, up);
+  // Environment: a sky-over-ground gradient (frame.ambient is the sky), diffuse
+  // from the normal, specular from the reflection blurred towards the average
+  // with roughness, scaled by Karis' analytic split-sum fit (UE4 mobile).
+  vec3 diffuseEnv = environmentRadiance(N.y);
+  vec3 R = reflect(-V, N);
+  vec3 specularEnv = mix(environmentRadiance(R.y), environmentRadiance(0.3), roughness * roughness);
+  float NdotV = clamp(dot(N, V), 1e-4, 1.0);
+  vec4 c0 = vec4(-1.0, -0.0275, -0.572, 0.022), c1 = vec4(1.0, 0.0425, 1.04, -0.04);
+  vec4 r = roughness * c0 + c1;
+  float a004 = min(r.x * r.x, exp2(-9.28 * NdotV)) * r.x + r.y;
+  vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
   vec3 f0 = mix(vec3(0.04), baseColor.rgb, metallic);
-  color += ambient * occlusion * (baseColor.rgb * (1.0 - metallic) + f0 * 0.5);
+  color += occlusion * (diffuseEnv * baseColor.rgb * (1.0 - metallic) + specularEnv * (f0 * ab.x + ab.y));
   color += emissive;
   return vec4(color, baseColor.a);
 }
