@@ -8,6 +8,9 @@ namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
 
+// Tangent handedness follows glTF: bitangent = cross(normal, tangent) * w
+// points along -V (the image's up; V grows downwards), which is what the
+// normal maps' +Y means. Each maker sets w accordingly.
 void addVertex(Primitive& p, const glm::vec3& position, const glm::vec3& normal, const glm::vec3& tangent,
                const glm::vec2& uv) {
   p.positions.push_back(position);
@@ -76,8 +79,8 @@ Primitive makeBox(const glm::vec3& size) {
       addQuad(p, base, base + 1, base + 2, base + 3);
     else
       addQuad(p, base, base + 3, base + 2, base + 1);
-    // Handedness: bitangent = cross(normal, tangent) * w must point along +V.
-    const float w = glm::dot(glm::cross(face.n, face.t), face.b) > 0 ? 1.0f : -1.0f;
+    // Handedness: bitangent = cross(normal, tangent) * w must point along -V.
+    const float w = glm::dot(glm::cross(face.n, face.t), face.b) > 0 ? -1.0f : 1.0f;
     for (int corner = 0; corner < 4; ++corner) p.tangents[base + corner].w = w;
   }
   return p;
@@ -91,8 +94,8 @@ Primitive makePlane(float width, float depth, int subdivisions) {
     t = {1, 0, 0};
     uv = {u, v};
   });
-  // Bitangent +V runs along +Z; cross(+Y, +X) = -Z, so handedness is -1.
-  for (auto& t : p.tangents) t.w = -1.0f;
+  // +V runs along +Z, so the bitangent must be -Z = cross(+Y, +X): handedness +1.
+  for (auto& t : p.tangents) t.w = 1.0f;
   return p;
 }
 
@@ -105,7 +108,7 @@ Primitive makeCylinder(float radius, float height, int segments) {
     pos = n * radius + glm::vec3(0, (1 - v) * height, 0);
     uv = {u, 0.02f + v * 0.56f};
   });
-  for (auto& t : p.tangents) t.w = -1.0f;  // cross(n, t) = -Y, +V runs down (-Y)
+  for (auto& t : p.tangents) t.w = 1.0f;  // cross(n, t) = +Y, against +V (which runs down)
   // Caps: triangle fans around a centre vertex, each in its own disc of the chart.
   for (int cap = 0; cap < 2; ++cap) {
     const bool top = cap == 0;
@@ -127,7 +130,7 @@ Primitive makeCylinder(float radius, float height, int segments) {
       else
         p.indices.insert(p.indices.end(), {center, a, a + 1});
     }
-    const float w = top ? -1.0f : 1.0f;  // +V runs along +Z in both discs
+    const float w = top ? 1.0f : -1.0f;  // +V runs along +Z in both discs, the bitangent along -Z
     for (size_t i = center; i < p.tangents.size(); ++i) p.tangents[i].w = w;
   }
   return p;
@@ -173,7 +176,7 @@ Primitive makeSphere(float radius, int segments, int rings) {
         p.indices.insert(p.indices.end(), {tip, a + 1, a});
     }
   }
-  for (auto& t : p.tangents) t.w = -1.0f;
+  for (auto& t : p.tangents) t.w = 1.0f;  // as the cylinder: cross(n, t) points up, +V runs down
   return p;
 }
 
@@ -187,8 +190,9 @@ Primitive makeTorus(float ringRadius, float tubeRadius, int ringSegments, int tu
     pos = radial * ringRadius + n * tubeRadius;
     uv = {u, v};
   });
-  // +V runs up the tube's outside (cross(n, t) there), and addGrid's winding
-  // faces -(dP/du x dP/dv), which for this parametrisation points inwards.
+  // +V runs up the tube's outside, along cross(n, t) there: handedness -1.
+  // addGrid's winding faces -(dP/du x dP/dv), which here points inwards.
+  for (auto& t : p.tangents) t.w = -1.0f;
   for (size_t i = 0; i < p.indices.size(); i += 3) std::swap(p.indices[i + 1], p.indices[i + 2]);
   return p;
 }

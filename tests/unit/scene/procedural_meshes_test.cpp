@@ -6,6 +6,7 @@
 
 #include <shadelgraph/scene/default_scene.hpp>
 #include <shadelgraph/scene/procedural_meshes.hpp>
+#include <shadelgraph/scene/tangents.hpp>
 
 namespace sg::scene {
 namespace {
@@ -52,11 +53,27 @@ TEST(ProceduralMeshes, TangentHandednessMatchesUvChart) {
         const glm::vec3 n = p.normals[v], tangent = glm::vec3(p.tangents[v]);
         const glm::vec3 bitangent = glm::cross(n, tangent) * p.tangents[v].w;
         ++checked;
-        if (glm::dot(tangent, dPdu) <= 0 || glm::dot(bitangent, dPdv) <= 0) ++wrong;
+        // glTF: the bitangent is the image's up, against +V (V grows downwards).
+        if (glm::dot(tangent, dPdu) <= 0 || glm::dot(bitangent, dPdv) >= 0) ++wrong;
       }
     }
     EXPECT_GT(checked, 0) << name;
     EXPECT_EQ(wrong, 0) << name << ": tangent frame disagrees with the UV gradients";
+  }
+}
+
+// The analytic tangents agree with the loader's generated ones (tangents.hpp)
+// on handedness everywhere and on direction nearly everywhere.
+TEST(ProceduralMeshes, TangentsAgreeWithGeneratedOnes) {
+  for (const auto& [name, p] : allPrimitives()) {
+    const std::vector<glm::vec4> generated = generateTangents(p.positions, p.normals, p.uv0, p.indices);
+    size_t sameHandedness = 0, sameDirection = 0;
+    for (size_t i = 0; i < generated.size(); ++i) {
+      sameHandedness += generated[i].w == p.tangents[i].w;
+      sameDirection += glm::dot(glm::vec3(generated[i]), glm::vec3(p.tangents[i])) > 0.9f;
+    }
+    EXPECT_EQ(sameHandedness, generated.size()) << name;
+    EXPECT_GE(sameDirection, generated.size() * 9 / 10) << name;
   }
 }
 

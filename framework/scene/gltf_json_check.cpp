@@ -1,0 +1,370 @@
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <initializer_list>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include <shadelgraph/scene/gltf_context.hpp>
+#include <shadelgraph/scene/gltf_json_check.hpp>
+
+namespace sg::scene::detail {
+namespace {
+
+using Json = nlohmann::json;
+
+// The subset of the glTF 2.0 JSON schema the loader depends on: types,
+// required properties and enums. References between objects are range-checked
+// later, where they are used.
+class ShapeChecker {
+ public:
+  void root(const Json& json) {
+    if (!json.is_object()) fail("the document", "an object", json);
+    property(json, "");
+    requireObject(json, "asset", "", [&](const Json& asset, const std::string& path) {
+      requireString(asset, "version", path);
+      optionalString(asset, "generator", path);
+      optionalString(asset, "minVersion", path);
+    });
+    optionalStringArray(json, "extensionsUsed", "");
+    optionalStringArray(json, "extensionsRequired", "");
+    optionalIndex(json, "scene", "");
+    objects(json, "scenes", [&](const Json& scene, const std::string& path) { optionalIndexArray(scene, "nodes", path); });
+    objects(json, "nodes", [&](const Json& node, const std::string& path) { this->node(node, path); });
+    objects(json, "meshes", [&](const Json& mesh, const std::string& path) { this->mesh(mesh, path); });
+    objects(json, "accessors", [&](const Json& accessor, const std::string& path) { this->accessor(accessor, path); });
+    objects(json, "bufferViews", [&](const Json& view, const std::string& path) { bufferView(view, path); });
+    objects(json, "buffers", [&](const Json& buffer, const std::string& path) {
+      optionalString(buffer, "uri", path);
+      requireUint(buffer, "byteLength", path);
+    });
+    objects(json, "materials", [&](const Json& material, const std::string& path) { this->material(material, path); });
+    objects(json, "textures", [&](const Json& texture, const std::string& path) {
+      optionalIndex(texture, "sampler", path);
+      optionalIndex(texture, "source", path);
+    });
+    objects(json, "images", [&](const Json& image, const std::string& path) {
+      optionalString(image, "uri", path);
+      optionalString(image, "mimeType", path);
+      optionalIndex(image, "bufferView", path);
+    });
+    objects(json, "samplers", [&](const Json& sampler, const std::string& path) {
+      // The schema allows any integer for these GL enums (forward compatibility):
+      // unknown values get a warning where they are converted.
+      optionalUint(sampler, "magFilter", path);
+      optionalUint(sampler, "minFilter", path);
+      optionalUint(sampler, "wrapS", path);
+      optionalUint(sampler, "wrapT", path);
+    });
+    objects(json, "cameras", [&](const Json& camera, const std::string& path) { this->camera(camera, path); });
+    objects(json, "skins", [](const Json&, const std::string&) {});
+    objects(json, "animations", [](const Json&, const std::string&) {});
+    if (const Json* extensions = member(json, "extensions"))
+      optionalObject(*extensions, "KHR_lights_punctual", "extensions", [&](const Json& lights, const std::string& path) {
+        objects(lights, "lights", [&](const Json& light, const std::string& lightPath) { this->light(light, lightPath); },
+                path);
+      });
+  }
+
+ private:
+  using Visit = std::function<void(const Json&, const std::string&)>;
+
+  [[noreturn]] static void fail(const std::string& path, const std::string& expected, const Json& got) {
+    throw InvalidAsset(path + ": expected " + expected + ", got " + describe(got));
+  }
+
+  static std::string describe(const Json& value) {
+    switch (value.type()) {
+      case Json::value_t::null: return "null";
+      case Json::value_t::object: return "an object";
+      case Json::value_t::array: return "an array";
+      case Json::value_t::string: return "the string " + value.dump();
+      case Json::value_t::boolean: return value.dump();
+      case Json::value_t::number_integer:
+      case Json::value_t::number_unsigned:
+      case Json::value_t::number_float: return "the number " + value.dump();
+      default: return "an unexpected value";
+    }
+  }
+
+  static std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+
+  static const Json* member(const Json& object, const char* key) {
+    const auto it = object.find(key);
+    return it == object.end() ? nullptr : &*it;
+  }
+
+  // JSON Schema counts 3.0 as an integer, and some exporters write that.
+  static bool isInteger(const Json& value) {
+    if (value.is_number_integer() || value.is_number_unsigned()) return true;
+    if (!value.is_number_float()) return false;
+    const double number = value.get<double>();
+    return std::isfinite(number) && number == std::floor(number);
+  }
+
+  // name, extensions (an object of objects), extras: on every glTF object.
+  void property(const Json& object, const std::string& path) {
+    optionalString(object, "name", path);
+    if (const Json* extensions = member(object, "extensions")) {
+      const std::string extensionsPath = join(path, "extensions");
+      if (!extensions->is_object()) fail(extensionsPath, "an object", *extensions);
+      for (const auto& [name, value] : extensions->items())
+        if (!value.is_object()) fail(join(extensionsPath, name), "an object", value);
+    }
+  }
+
+  void objects(const Json& parent, const char* key, const Visit& visit, const std::string& parentPath = "") {
+    const Json* array = member(parent, key);
+    if (!array) return;
+    const std::string path = join(parentPath, key);
+    if (!array->is_array()) fail(path, "an array", *array);
+    for (size_t i = 0; i < array->size(); ++i) {
+      const Json& element = (*array)[i];
+      const std::string elementPath = path + "[" + std::to_string(i) + "]";
+      if (!element.is_object()) fail(elementPath, "an object", element);
+      property(element, elementPath);
+      visit(element, elementPath);
+    }
+  }
+
+  void requireObject(const Json& parent, const char* key, const std::string& path, const Visit& visit) {
+    if (!member(parent, key)) throw InvalidAsset(join(path, key) + ": required property is missing");
+    optionalObject(parent, key, path, visit);
+  }
+
+  void optionalObject(const Json& parent, const char* key, const std::string& path, const Visit& visit) {
+    const Json* value = member(parent, key);
+    if (!value) return;
+    const std::string childPath = join(path, key);
+    if (!value->is_object()) fail(childPath, "an object", *value);
+    property(*value, childPath);
+    visit(*value, childPath);
+  }
+
+  template <class Check>
+  void optional(const Json& parent, const char* key, const std::string& path, Check check) {
+    if (const Json* value = member(parent, key)) check(*value, join(path, key));
+  }
+  template <class Check>
+  void required(const Json& parent, const char* key, const std::string& path, Check check) {
+    const Json* value = member(parent, key);
+    if (!value) throw InvalidAsset(join(path, key) + ": required property is missing");
+    check(*value, join(path, key));
+  }
+
+  static void string(const Json& value, const std::string& path) {
+    if (!value.is_string()) fail(path, "a string", value);
+  }
+  static void boolean(const Json& value, const std::string& path) {
+    if (!value.is_boolean()) fail(path, "true or false", value);
+  }
+  static void number(const Json& value, const std::string& path) {
+    if (!value.is_number()) fail(path, "a number", value);
+  }
+  // glTF ids and counts: integers >= 0.
+  static void uint(const Json& value, const std::string& path) {
+    if (!isInteger(value) || value.get<double>() < 0.0)
+      fail(path, "an integer >= 0", value);
+  }
+  static void numbers(const Json& value, const std::string& path, size_t count) {
+    if (!value.is_array() || (count && value.size() != count))
+      fail(path, count ? "an array of " + std::to_string(count) + " numbers" : "an array of numbers", value);
+    for (size_t i = 0; i < value.size(); ++i) number(value[i], path + "[" + std::to_string(i) + "]");
+  }
+
+  void optionalString(const Json& o, const char* key, const std::string& path) { optional(o, key, path, string); }
+  void requireString(const Json& o, const char* key, const std::string& path) { required(o, key, path, string); }
+  void optionalBool(const Json& o, const char* key, const std::string& path) { optional(o, key, path, boolean); }
+  void optionalNumber(const Json& o, const char* key, const std::string& path) { optional(o, key, path, number); }
+  void requireNumber(const Json& o, const char* key, const std::string& path) { required(o, key, path, number); }
+  void optionalIndex(const Json& o, const char* key, const std::string& path) { optional(o, key, path, uint); }
+  void requireIndex(const Json& o, const char* key, const std::string& path) { required(o, key, path, uint); }
+  void requireUint(const Json& o, const char* key, const std::string& path) { required(o, key, path, uint); }
+  void optionalUint(const Json& o, const char* key, const std::string& path) { optional(o, key, path, uint); }
+  void optionalNumbers(const Json& o, const char* key, const std::string& path, size_t count) {
+    optional(o, key, path, [count](const Json& value, const std::string& p) { numbers(value, p, count); });
+  }
+  void optionalIndexArray(const Json& o, const char* key, const std::string& path) {
+    optional(o, key, path, [](const Json& value, const std::string& p) {
+      if (!value.is_array()) fail(p, "an array of indices", value);
+      for (size_t i = 0; i < value.size(); ++i) uint(value[i], p + "[" + std::to_string(i) + "]");
+    });
+  }
+  void optionalStringArray(const Json& o, const char* key, const std::string& path) {
+    optional(o, key, path, [](const Json& value, const std::string& p) {
+      if (!value.is_array()) fail(p, "an array of strings", value);
+      for (size_t i = 0; i < value.size(); ++i) string(value[i], p + "[" + std::to_string(i) + "]");
+    });
+  }
+  template <class T>
+  static void oneOf(const Json& value, const std::string& path, std::initializer_list<T> allowed) {
+    std::string list;
+    for (const T& option : allowed) {
+      if (value == option) return;
+      list += (list.empty() ? "" : ", ") + Json(option).dump();
+    }
+    fail(path, "one of " + list, value);
+  }
+  void optionalEnum(const Json& o, const char* key, const std::string& path,
+                    std::initializer_list<std::string> allowed) {
+    optional(o, key, path, [allowed](const Json& value, const std::string& p) {
+      string(value, p);
+      oneOf(value, p, allowed);
+    });
+  }
+
+  void node(const Json& node, const std::string& path) {
+    optionalIndex(node, "camera", path);
+    optionalIndex(node, "mesh", path);
+    optionalIndex(node, "skin", path);
+    optionalIndexArray(node, "children", path);
+    optionalNumbers(node, "matrix", path, 16);
+    optionalNumbers(node, "rotation", path, 4);
+    optionalNumbers(node, "scale", path, 3);
+    optionalNumbers(node, "translation", path, 3);
+    optionalNumbers(node, "weights", path, 0);
+    if (const Json* extensions = member(node, "extensions"))
+      optionalObject(*extensions, "KHR_lights_punctual", join(path, "extensions"),
+                     [&](const Json& light, const std::string& p) { requireIndex(light, "light", p); });
+  }
+
+  void mesh(const Json& mesh, const std::string& path) {
+    const Json* primitives = member(mesh, "primitives");
+    if (!primitives) throw InvalidAsset(path + ".primitives: required property is missing");
+    if (!primitives->is_array()) fail(path + ".primitives", "an array", *primitives);
+    objects(mesh, "primitives", [&](const Json& primitive, const std::string& p) {
+      requireObject(primitive, "attributes", p, [&](const Json& attributes, const std::string& attributesPath) {
+        for (const auto& [name, value] : attributes.items()) uint(value, join(attributesPath, name));
+      });
+      optionalIndex(primitive, "indices", p);
+      optionalIndex(primitive, "material", p);
+      optionalUint(primitive, "mode", p);
+      objects(primitive, "targets", [](const Json& target, const std::string& targetPath) {
+        for (const auto& [name, value] : target.items()) uint(value, join(targetPath, name));
+      }, p);
+    }, path);
+    optionalNumbers(mesh, "weights", path, 0);
+  }
+
+  void accessor(const Json& accessor, const std::string& path) {
+    optionalIndex(accessor, "bufferView", path);
+    optionalUint(accessor, "byteOffset", path);
+    required(accessor, "componentType", path,
+             [](const Json& v, const std::string& p) { oneOf(v, p, {5120, 5121, 5122, 5123, 5125, 5126}); });
+    optionalBool(accessor, "normalized", path);
+    requireUint(accessor, "count", path);
+    required(accessor, "type", path, [](const Json& v, const std::string& p) {
+      string(v, p);
+      oneOf<std::string>(v, p, {"SCALAR", "VEC2", "VEC3", "VEC4", "MAT2", "MAT3", "MAT4"});
+    });
+    optionalNumbers(accessor, "max", path, 0);
+    optionalNumbers(accessor, "min", path, 0);
+    optionalObject(accessor, "sparse", path, [&](const Json& sparse, const std::string& p) {
+      requireUint(sparse, "count", p);
+      requireObject(sparse, "indices", p, [&](const Json& indices, const std::string& ip) {
+        requireIndex(indices, "bufferView", ip);
+        optionalUint(indices, "byteOffset", ip);
+        required(indices, "componentType", ip, [](const Json& v, const std::string& cp) { oneOf(v, cp, {5121, 5123, 5125}); });
+      });
+      requireObject(sparse, "values", p, [&](const Json& values, const std::string& vp) {
+        requireIndex(values, "bufferView", vp);
+        optionalUint(values, "byteOffset", vp);
+      });
+    });
+  }
+
+  void bufferView(const Json& view, const std::string& path) {
+    requireIndex(view, "buffer", path);
+    optionalUint(view, "byteOffset", path);
+    requireUint(view, "byteLength", path);
+    optional(view, "byteStride", path, [](const Json& v, const std::string& p) {
+      if (!isInteger(v) || v.get<double>() < 4.0 || v.get<double>() > 252.0 || static_cast<int>(v.get<double>()) % 4 != 0)
+        fail(p, "a multiple of 4 in [4, 252]", v);
+    });
+    optionalUint(view, "target", path);
+  }
+
+  void textureInfo(const Json& parent, const char* key, const std::string& path, const char* extraNumber = nullptr) {
+    optionalObject(parent, key, path, [&](const Json& info, const std::string& p) {
+      requireIndex(info, "index", p);
+      optionalUint(info, "texCoord", p);
+      if (extraNumber) optionalNumber(info, extraNumber, p);
+      if (const Json* extensions = member(info, "extensions"))
+        optionalObject(*extensions, "KHR_texture_transform", join(p, "extensions"),
+                       [&](const Json& transform, const std::string& tp) {
+                         optionalNumbers(transform, "offset", tp, 2);
+                         optionalNumber(transform, "rotation", tp);
+                         optionalNumbers(transform, "scale", tp, 2);
+                         optionalUint(transform, "texCoord", tp);
+                       });
+    });
+  }
+
+  void material(const Json& material, const std::string& path) {
+    optionalObject(material, "pbrMetallicRoughness", path, [&](const Json& pbr, const std::string& p) {
+      optionalNumbers(pbr, "baseColorFactor", p, 4);
+      textureInfo(pbr, "baseColorTexture", p);
+      optionalNumber(pbr, "metallicFactor", p);
+      optionalNumber(pbr, "roughnessFactor", p);
+      textureInfo(pbr, "metallicRoughnessTexture", p);
+    });
+    textureInfo(material, "normalTexture", path, "scale");
+    textureInfo(material, "occlusionTexture", path, "strength");
+    textureInfo(material, "emissiveTexture", path);
+    optionalNumbers(material, "emissiveFactor", path, 3);
+    optionalEnum(material, "alphaMode", path, {"OPAQUE", "MASK", "BLEND"});
+    optionalNumber(material, "alphaCutoff", path);
+    optionalBool(material, "doubleSided", path);
+  }
+
+  void camera(const Json& camera, const std::string& path) {
+    optionalEnum(camera, "type", path, {"perspective", "orthographic"});
+    requireString(camera, "type", path);
+    optionalObject(camera, "perspective", path, [&](const Json& perspective, const std::string& p) {
+      optionalNumber(perspective, "aspectRatio", p);
+      requireNumber(perspective, "yfov", p);
+      optionalNumber(perspective, "zfar", p);
+      requireNumber(perspective, "znear", p);
+    });
+    optionalObject(camera, "orthographic", path, [&](const Json& orthographic, const std::string& p) {
+      requireNumber(orthographic, "xmag", p);
+      requireNumber(orthographic, "ymag", p);
+      requireNumber(orthographic, "zfar", p);
+      requireNumber(orthographic, "znear", p);
+    });
+  }
+
+  void light(const Json& light, const std::string& path) {
+    optionalEnum(light, "type", path, {"directional", "point", "spot"});
+    requireString(light, "type", path);
+    optionalNumbers(light, "color", path, 3);
+    optionalNumber(light, "intensity", path);
+    optionalNumber(light, "range", path);
+    optionalObject(light, "spot", path, [&](const Json& spot, const std::string& p) {
+      optionalNumber(spot, "innerConeAngle", p);
+      optionalNumber(spot, "outerConeAngle", p);
+    });
+  }
+};
+
+}  // namespace
+
+void checkGltfJson(std::string_view json, std::span<const std::string_view> supportedExtensions) {
+  Json document;
+  try {
+    document = Json::parse(json.begin(), json.end());
+  } catch (const Json::parse_error& error) {
+    throw InvalidAsset(std::string("invalid JSON: ") + error.what());
+  }
+  if (document.is_object())
+    if (const auto required = document.find("extensionsRequired"); required != document.end() && required->is_array())
+      for (const Json& name : *required)
+        if (name.is_string() &&
+            std::find(supportedExtensions.begin(), supportedExtensions.end(), name.get<std::string>()) ==
+                supportedExtensions.end())
+          throw InvalidAsset("requires the unsupported extension " + name.get<std::string>());
+  ShapeChecker().root(document);
+}
+
+}  // namespace sg::scene::detail

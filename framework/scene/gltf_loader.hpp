@@ -1,0 +1,46 @@
+#pragma once
+// glTF 2.0 loading (.gltf and .glb) into a Scene, with tinygltf for parsing and
+// stb_image for decoding.
+//
+// Supported: the default scene's node hierarchy (matrix or TRS), indexed and
+// non-indexed triangles, strips and fans (converted to lists), sparse
+// accessors, byteStride, POSITION, NORMAL, TANGENT, TEXCOORD_0/1 (float or
+// normalized unsigned byte/short), COLOR_0 (vec3/vec4, float or normalized),
+// metallic-roughness materials, samplers, KHR_texture_transform,
+// KHR_lights_punctual, cameras, and the node extras {"shading": "auto" |
+// "decoupled" | "forward"} (inherited by child nodes). Points and lines,
+// skins, morph targets and animations are skipped with a warning.
+//
+// Repairs, each with a warning: flat normals when NORMAL is missing (the
+// primitive is de-indexed, as glTF requires), normals of non-unit length are
+// renormalized, tangents are generated when a material has a normal map and
+// the primitive has no TANGENT (per-triangle UV gradients, NOT MikkTSpace: see
+// tangents.hpp), a triangle list whose length is not a multiple of 3 loses
+// its last vertices.
+//
+// Errors (SceneError, "<file>: <what>"): unreadable file, JSON type errors
+// (checked before tinygltf, which silently ignores many), tinygltf errors,
+// unsupported required extensions, indices or references out of range,
+// accessors outside their buffer, wrong accessor types, non-finite or
+// zero-length vertex data, node cycles and nodes with two parents, and any
+// image a material uses that is missing or cannot be decoded: tinygltf only
+// warns about those, but rendering the material without its texture would be
+// silently wrong.
+#include <filesystem>
+
+#include <shadelgraph/scene/scene.hpp>
+#include <shadelgraph/scene/scene_error.hpp>
+
+namespace sg::scene {
+
+struct LoadOptions {
+  // false: textures get width/height from the image header and no pixels
+  // (for tools that only need geometry); images are still checked to exist
+  // and to be of a format stb_image reads.
+  bool decodeImages = true;
+};
+
+// Throws SceneError.
+Scene loadGltf(const std::filesystem::path& file, const LoadOptions& options = {});
+
+}  // namespace sg::scene

@@ -1,0 +1,275 @@
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <optional>
+#include <sstream>
+
+#include <shadelgraph/scene/gltf_accessor.hpp>
+#include <shadelgraph/scene/gltf_mesh.hpp>
+#include <shadelgraph/scene/normals.hpp>
+#include <shadelgraph/scene/tangents.hpp>
+#include <shadelgraph/scene/triangulate.hpp>
+
+namespace sg::scene::detail {
+namespace {
+
+// Which accessor formats an attribute accepts (glTF 2.0 core, without
+// KHR_mesh_quantization).
+struct AttributeFormat {
+  std::initializer_list<int> components;
+  bool normalizedUnsigned = false;  // also normalized UNSIGNED_BYTE / UNSIGNED_SHORT
+};
+
+std::string expected(const AttributeFormat& format) {
+  std::string types;
+  for (int components : format.components) types += std::string(types.empty() ? "" : " or ") + typeName(components);
+  return types + (format.normalizedUnsigned ? " of FLOAT, or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT" : " of FLOAT");
+}
+
+template <int N>
+std::string toText(const glm::vec<N, float>& v) {
+  std::ostringstream out;
+  out << "(";
+  for (int i = 0; i < N; ++i) out << (i ? ", " : "") << v[i];
+  out << ")";
+  return out.str();
+}
+
+class PrimitiveBuilder {
+ public:
+  PrimitiveBuilder(const GltfContext& context, Scene& scene, int& defaultMaterial)
+      : context_(context), scene_(scene), defaultMaterial_(defaultMaterial) {}
+
+  // nullopt: the primitive is skipped (with a warning).
+  std::optional<Primitive> build(const tinygltf::Primitive& in, const std::string& where) {
+    where_ = where;
+    in_ = &in;
+    const int mode = in.mode < 0 ? TINYGLTF_MODE_TRIANGLES : in.mode;
+    if (mode == TINYGLTF_MODE_POINTS || mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_LOOP ||
+        mode == TINYGLTF_MODE_LINE_STRIP) {
+      context_.warnings.push_back(where + ": " + (mode == TINYGLTF_MODE_POINTS ? "points" : "lines") +
+                                  " are not rendered; skipped");
+      return std::nullopt;
+    }
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+      context_.warnings.push_back(where + ": unknown mode " + std::to_string(mode) + "; skipped");
+      return std::nullopt;
+    }
+    if (!in.attributes.contains("POSITION")) {
+      context_.warnings.push_back(where + ": has no POSITION; skipped");
+      return std::nullopt;
+    }
+    if (!in.targets.empty()) context_.warnings.push_back(where + ": morph targets are ignored");
+
+    Primitive out;
+    out.positions = attribute<3>("POSITION", {{3}}, std::nullopt);
+    const size_t vertexCount = out.positions.size();
+    out.normals = attribute<3>("NORMAL", {{3}}, vertexCount);
+    out.tangents = attribute<4>("TANGENT", {{4}}, vertexCount);
+    out.uv0 = attribute<2>("TEXCOORD_0", {{2}, true}, vertexCount);
+    out.uv1 = attribute<2>("TEXCOORD_1", {{2}, true}, vertexCount);
+    out.colors = colors(vertexCount);
+    out.indices = triangleList(mode, vertexCount);
+    out.material = material();
+
+    if (out.normals.empty()) {
+      out.tangents.clear();  // glTF: tangents without normals must be ignored
+      generateFlatNormals(out);
+      repairs_["no NORMAL, flat normals generated"].push_back(where);
+    } else {
+      normalize(out.normals);
+    }
+    if (!out.tangents.empty()) {
+      normalize(out.tangents);
+    } else if (const TextureRef& normalMap = scene_.materials[static_cast<size_t>(out.material)].normalTexture;
+               normalMap.present()) {
+      if (!out.uvs(normalMap.texCoord).empty()) {
+        out.tangents = generateTangents(out.positions, out.normals, out.uvs(normalMap.texCoord), out.indices);
+        repairs_["normal map without TANGENT, tangents generated (not MikkTSpace)"].push_back(where);
+      }
+    }
+    warnMissingTexCoords(out);
+    for (const glm::vec3& p : out.positions) out.bounds.extend(p);
+    return out;
+  }
+
+  // One warning per kind of repair, not one per primitive.
+  void reportRepairs() {
+    for (const auto& [what, primitives] : repairs_)
+      context_.warnings.push_back(what + ": " + primitives.front() +
+                                  (primitives.size() > 1 ? " and " + std::to_string(primitives.size() - 1) + " more" : ""));
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const { throw InvalidAsset(where_ + ": " + what); }
+
+  void warnMissingTexCoords(const Primitive& primitive) {
+    const Material& material = scene_.materials[static_cast<size_t>(primitive.material)];
+    const std::pair<const char*, const TextureRef*> refs[] = {
+        {"baseColorTexture", &material.baseColorTexture}, {"metallicRoughnessTexture", &material.metallicRoughnessTexture},
+        {"normalTexture", &material.normalTexture},       {"occlusionTexture", &material.occlusionTexture},
+        {"emissiveTexture", &material.emissiveTexture}};
+    for (const auto& [slot, ref] : refs)
+      if (ref->present() && primitive.uvs(ref->texCoord).empty())
+        context_.warnings.push_back(where_ + ": its material's " + slot + " uses TEXCOORD_" +
+                                    std::to_string(ref->texCoord) + ", which the primitive lacks");
+  }
+
+  // The attribute's elements as vectors, or empty when absent. Every
+  // attribute but POSITION (vertexCount nullopt) must match POSITION's count.
+  template <int N>
+  std::vector<glm::vec<N, float>> attribute(const char* name, const AttributeFormat& format,
+                                            std::optional<size_t> vertexCount) {
+    const auto it = in_->attributes.find(name);
+    if (it == in_->attributes.end()) return {};
+    const std::string what = where_ + " " + name;
+    const PackedAccessor accessor = readAccessor(context_.model, it->second, what);
+    checkFormat(accessor, format, name, it->second);
+    if (vertexCount && accessor.count != *vertexCount)
+      fail(std::string(name) + " has " + std::to_string(accessor.count) + " elements, POSITION has " +
+           std::to_string(*vertexCount));
+    const std::vector<float> floats = toFloats(accessor);
+    std::vector<glm::vec<N, float>> out(accessor.count);
+    for (size_t i = 0; i < accessor.count; ++i) {
+      for (int c = 0; c < N; ++c) out[i][c] = floats[i * N + static_cast<size_t>(c)];
+      for (int c = 0; c < N; ++c)
+        if (!std::isfinite(out[i][c])) fail(std::string(name) + " " + std::to_string(i) + " is not finite: " + toText(out[i]));
+    }
+    return out;
+  }
+
+  void checkFormat(const PackedAccessor& accessor, const AttributeFormat& format, const char* name, int index) const {
+    bool componentsOk = false;
+    for (int components : format.components) componentsOk |= accessor.components == components;
+    const bool typeOk = accessor.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
+                        (format.normalizedUnsigned && accessor.normalized &&
+                         (accessor.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                          accessor.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT));
+    if (!componentsOk || !typeOk)
+      fail(std::string(name) + " (accessor " + std::to_string(index) + ") is " + typeName(accessor.components) + " of " +
+           (accessor.normalized ? "normalized " : "") + componentTypeName(accessor.componentType) + "; expected " +
+           expected(format));
+  }
+
+  std::vector<glm::vec4> colors(size_t vertexCount) {
+    const auto it = in_->attributes.find("COLOR_0");
+    if (it == in_->attributes.end()) return {};
+    const PackedAccessor accessor = readAccessor(context_.model, it->second, where_ + " COLOR_0");
+    checkFormat(accessor, {{3, 4}, true}, "COLOR_0", it->second);
+    if (accessor.count != vertexCount)
+      fail("COLOR_0 has " + std::to_string(accessor.count) + " elements, POSITION has " + std::to_string(vertexCount));
+    const std::vector<float> floats = toFloats(accessor);
+    const auto n = static_cast<size_t>(accessor.components);
+    std::vector<glm::vec4> out(accessor.count, glm::vec4(1.0f));
+    for (size_t i = 0; i < accessor.count; ++i)
+      for (size_t c = 0; c < n; ++c) {
+        out[i][static_cast<int>(c)] = floats[i * n + c];
+        if (!std::isfinite(floats[i * n + c])) fail("COLOR_0 " + std::to_string(i) + " is not finite");
+      }
+    return out;
+  }
+
+  std::vector<uint32_t> triangleList(int mode, size_t vertexCount) {
+    std::vector<uint32_t> corners;
+    if (in_->indices >= 0) {
+      const PackedAccessor accessor = readAccessor(context_.model, in_->indices, where_ + " indices");
+      const int type = accessor.componentType;
+      if (accessor.components != 1 ||
+          (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+           type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+        fail("indices (accessor " + std::to_string(in_->indices) + ") are " + typeName(accessor.components) + " of " +
+             componentTypeName(type) + "; expected SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+      corners = toUints(accessor);
+      for (size_t i = 0; i < corners.size(); ++i)
+        if (corners[i] >= vertexCount)
+          fail("index " + std::to_string(corners[i]) + " (indices[" + std::to_string(i) +
+               "]) is out of range: the primitive has " + std::to_string(vertexCount) + " vertices");
+    } else {
+      corners.resize(vertexCount);
+      std::iota(corners.begin(), corners.end(), 0u);
+    }
+    const Topology topology = mode == TINYGLTF_MODE_TRIANGLE_STRIP ? Topology::TriangleStrip
+                              : mode == TINYGLTF_MODE_TRIANGLE_FAN ? Topology::TriangleFan
+                                                                   : Topology::TriangleList;
+    if (topology == Topology::TriangleList && corners.size() % 3 != 0)
+      context_.warnings.push_back(where_ + ": " + std::to_string(corners.size()) +
+                                  " corners is not a multiple of 3; the last " + std::to_string(corners.size() % 3) +
+                                  " are ignored");
+    return toTriangleList(corners, topology);
+  }
+
+  int material() {
+    if (in_->material < 0) {
+      if (defaultMaterial_ < 0) {
+        Material fallback;  // glTF's default: white, metallic 1, roughness 1, no textures
+        fallback.name = "default";
+        scene_.materials.push_back(fallback);
+        defaultMaterial_ = static_cast<int>(scene_.materials.size() - 1);
+      }
+      return defaultMaterial_;
+    }
+    if (static_cast<size_t>(in_->material) >= context_.model.materials.size())
+      fail("material " + std::to_string(in_->material) + " does not exist (the file has " +
+           std::to_string(context_.model.materials.size()) + ")");
+    return in_->material;
+  }
+
+  // Zero or non-finite normals cannot be repaired meaningfully: error. Others
+  // are renormalized, with a warning when far from unit length.
+  void normalize(std::vector<glm::vec3>& normals) {
+    size_t repaired = 0;
+    for (size_t i = 0; i < normals.size(); ++i) {
+      const float length = glm::length(normals[i]);
+      if (!(length > 1e-6f)) fail("NORMAL " + std::to_string(i) + " has zero length: " + toText(normals[i]));
+      if (std::abs(length - 1.0f) > 1e-2f) ++repaired;
+      normals[i] /= length;
+    }
+    if (repaired)
+      context_.warnings.push_back(where_ + ": " + std::to_string(repaired) + " NORMALs were not unit length; renormalized");
+  }
+
+  // Tangents are only used with a normal map, so bad ones are repaired.
+  void normalize(std::vector<glm::vec4>& tangents) {
+    size_t repaired = 0;
+    for (glm::vec4& tangent : tangents) {
+      const glm::vec3 xyz{tangent};
+      const float length = glm::length(xyz);
+      const float w = tangent.w < 0.0f ? -1.0f : 1.0f;
+      if (std::abs(length - 1.0f) > 1e-2f || std::abs(tangent.w) != 1.0f) ++repaired;
+      tangent = length > 1e-6f ? glm::vec4(xyz / length, w) : glm::vec4(1.0f, 0.0f, 0.0f, w);
+    }
+    if (repaired)
+      context_.warnings.push_back(where_ + ": " + std::to_string(repaired) + " TANGENTs were not unit length with w = +-1; repaired");
+  }
+
+  const GltfContext& context_;
+  Scene& scene_;
+  int& defaultMaterial_;
+  const tinygltf::Primitive* in_ = nullptr;
+  std::string where_;
+  std::map<std::string, std::vector<std::string>> repairs_;
+};
+
+}  // namespace
+
+void convertMeshes(const GltfContext& context, Scene& scene) {
+  int defaultMaterial = -1;
+  PrimitiveBuilder builder(context, scene, defaultMaterial);
+  const tinygltf::Model& model = context.model;
+  for (size_t m = 0; m < model.meshes.size(); ++m) {
+    const tinygltf::Mesh& in = model.meshes[m];
+    Mesh out;
+    out.name = in.name;
+    const std::string name = describe("mesh", m, in.name);
+    for (size_t p = 0; p < in.primitives.size(); ++p) {
+      std::optional<Primitive> primitive = builder.build(in.primitives[p], name + " primitive " + std::to_string(p));
+      if (!primitive) continue;
+      out.bounds.extend(primitive->bounds);
+      out.primitives.push_back(std::move(*primitive));
+    }
+    scene.meshes.push_back(std::move(out));
+  }
+  builder.reportRepairs();
+}
+
+}  // namespace sg::scene::detail

@@ -1,0 +1,31 @@
+#include <climits>
+#include <memory>
+#include <stdexcept>
+
+#include <stb_image.h>
+
+#include <shadelgraph/scene/image_decode.hpp>
+
+namespace sg::scene {
+
+DecodedImage decodeImage(std::span<const uint8_t> bytes, bool headerOnly) {
+  if (bytes.empty()) throw std::runtime_error("no image data");
+  if (bytes.size() > static_cast<size_t>(INT_MAX)) throw std::runtime_error("image larger than 2 GiB");
+  const int length = static_cast<int>(bytes.size());
+  int width = 0, height = 0, channels = 0;
+  DecodedImage image;
+  if (headerOnly) {
+    if (!stbi_info_from_memory(bytes.data(), length, &width, &height, &channels))
+      throw std::runtime_error(stbi_failure_reason());
+  } else {
+    std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
+        stbi_load_from_memory(bytes.data(), length, &width, &height, &channels, STBI_rgb_alpha), stbi_image_free);
+    if (!pixels) throw std::runtime_error(stbi_failure_reason());
+    image.rgba.assign(pixels.get(), pixels.get() + static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
+  }
+  image.width = static_cast<uint32_t>(width);
+  image.height = static_cast<uint32_t>(height);
+  return image;
+}
+
+}  // namespace sg::scene

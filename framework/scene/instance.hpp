@@ -1,0 +1,26 @@
+#pragma once
+// A placed mesh: one node of the flattened glTF hierarchy.
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <glm/glm.hpp>
+
+namespace sg::scene {
+
+// How an object is shaded. Auto lets the renderer decide (decoupled when the
+// mesh has a unique UV chart and is large enough on screen).
+enum class ShadingMode { Auto, Decoupled, Forward };
+
+// "auto", "decoupled", "forward" (exact, lower case); nullopt otherwise.
+std::optional<ShadingMode> parseShadingMode(std::string_view text);
+std::string_view toString(ShadingMode mode);
+
+struct Instance {
+  int mesh = -1;          // index into Scene::meshes
+  glm::mat4 world{1.0f};  // mesh to world, node hierarchy flattened
+  std::string name;       // node name (or "node N" when unnamed)
+  ShadingMode shading = ShadingMode::Auto;
+};
+
+}  // namespace sg::scene

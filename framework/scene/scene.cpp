@@ -1,0 +1,67 @@
+#include <shadelgraph/scene/scene.hpp>
+
+namespace sg::scene {
+
+Bounds worldBounds(const Scene& scene) {
+  Bounds bounds;
+  for (const Instance& instance : scene.instances)
+    bounds.extend(transformBounds(scene.meshes[static_cast<size_t>(instance.mesh)].bounds, instance.world));
+  return bounds;
+}
+
+size_t instancedTriangleCount(const Scene& scene) {
+  size_t count = 0;
+  for (const Instance& instance : scene.instances)
+    count += scene.meshes[static_cast<size_t>(instance.mesh)].triangleCount();
+  return count;
+}
+
+namespace {
+
+int rebase(int index, size_t base) { return index < 0 ? index : index + static_cast<int>(base); }
+
+void rebase(TextureRef& ref, size_t textureBase) { ref.texture = rebase(ref.texture, textureBase); }
+
+}  // namespace
+
+void appendScene(Scene& into, Scene other, const glm::mat4& transform, const std::string& warningPrefix) {
+  const size_t meshBase = into.meshes.size();
+  const size_t materialBase = into.materials.size();
+  const size_t textureBase = into.textures.size();
+  const size_t samplerBase = into.samplers.size();
+
+  for (Mesh& mesh : other.meshes) {
+    for (Primitive& primitive : mesh.primitives) primitive.material = rebase(primitive.material, materialBase);
+    into.meshes.push_back(std::move(mesh));
+  }
+  for (Material& material : other.materials) {
+    for (TextureRef* ref : {&material.baseColorTexture, &material.metallicRoughnessTexture, &material.normalTexture,
+                            &material.occlusionTexture, &material.emissiveTexture})
+      rebase(*ref, textureBase);
+    into.materials.push_back(std::move(material));
+  }
+  for (Texture& texture : other.textures) {
+    texture.sampler = rebase(texture.sampler, samplerBase);
+    into.textures.push_back(std::move(texture));
+  }
+  into.samplers.insert(into.samplers.end(), other.samplers.begin(), other.samplers.end());
+
+  for (Instance& instance : other.instances) {
+    instance.mesh = rebase(instance.mesh, meshBase);
+    instance.world = transform * instance.world;
+    into.instances.push_back(std::move(instance));
+  }
+  for (Light& light : other.lights) {
+    light.position = glm::vec3(transform * glm::vec4(light.position, 1.0f));
+    const glm::vec3 direction = glm::mat3(transform) * light.direction;
+    if (glm::length(direction) > 0.0f) light.direction = glm::normalize(direction);
+    into.lights.push_back(std::move(light));
+  }
+  for (Camera& camera : other.cameras) {
+    camera.world = transform * camera.world;
+    into.cameras.push_back(std::move(camera));
+  }
+  for (std::string& warning : other.warnings) into.warnings.push_back(warningPrefix + warning);
+}
+
+}  // namespace sg::scene

@@ -1,0 +1,40 @@
+#pragma once
+// A loaded scene: plain CPU data that the gpu and pass layers upload.
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include <shadelgraph/scene/bounds.hpp>
+#include <shadelgraph/scene/camera.hpp>
+#include <shadelgraph/scene/instance.hpp>
+#include <shadelgraph/scene/light.hpp>
+#include <shadelgraph/scene/material.hpp>
+#include <shadelgraph/scene/mesh.hpp>
+#include <shadelgraph/scene/texture.hpp>
+
+namespace sg::scene {
+
+// Every index stored in one of these vectors (Instance::mesh,
+// Primitive::material, TextureRef::texture, Texture::sampler) is valid.
+struct Scene {
+  std::vector<Mesh> meshes;
+  std::vector<Material> materials;
+  std::vector<Texture> textures;
+  std::vector<Sampler> samplers;
+  std::vector<Instance> instances;
+  std::vector<Light> lights;
+  std::vector<Camera> cameras;
+  std::vector<std::string> warnings;  // things skipped or repaired, one line each
+};
+
+// World-space box around every instance.
+Bounds worldBounds(const Scene& scene);
+// Triangles drawn: instanced meshes counted once per instance.
+size_t instancedTriangleCount(const Scene& scene);
+
+// Appends `other` to `into`, re-basing its indices, placing its instances,
+// lights and cameras under `transform`, and prefixing its warnings.
+void appendScene(Scene& into, Scene other, const glm::mat4& transform, const std::string& warningPrefix = {});
+
+}  // namespace sg::scene

@@ -1,0 +1,251 @@
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <set>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
+
+#include <shadelgraph/scene/scene_file.hpp>
+
+namespace sg::scene {
+namespace {
+
+using Json = nlohmann::json;
+
+// Errors inside the file: a JSON path and what is wrong with it.
+class FormatError : public std::runtime_error {
+ public:
+  FormatError(const std::string& path, const std::string& what) : std::runtime_error(path + ": " + what) {}
+};
+
+void allowOnly(const Json& object, const std::string& path, std::initializer_list<const char*> keys) {
+  if (!object.is_object()) throw FormatError(path, "expected an object");
+  const std::set<std::string> allowed(keys.begin(), keys.end());
+  for (const auto& [key, value] : object.items())
+    if (!allowed.contains(key)) throw FormatError(path, "unknown property '" + key + "'");
+}
+
+float number(const Json& object, const char* key, const std::string& path, float fallback) {
+  const auto it = object.find(key);
+  if (it == object.end()) return fallback;
+  if (!it->is_number() || !std::isfinite(it->get<double>())) throw FormatError(path + "." + key, "expected a number");
+  return it->get<float>();
+}
+
+float requiredNumber(const Json& object, const char* key, const std::string& path) {
+  if (!object.contains(key)) throw FormatError(path + "." + key, "required property is missing");
+  return number(object, key, path, 0.0f);
+}
+
+template <int N>
+glm::vec<N, float> vector(const Json& object, const char* key, const std::string& path, glm::vec<N, float> fallback) {
+  const auto it = object.find(key);
+  if (it == object.end()) return fallback;
+  const std::string where = path + "." + key;
+  if (!it->is_array() || it->size() != N) throw FormatError(where, "expected an array of " + std::to_string(N) + " numbers");
+  glm::vec<N, float> out;
+  for (int i = 0; i < N; ++i) {
+    const Json& element = (*it)[static_cast<size_t>(i)];
+    if (!element.is_number() || !std::isfinite(element.get<double>())) throw FormatError(where, "expected numbers");
+    out[i] = element.get<float>();
+  }
+  return out;
+}
+
+template <int N>
+glm::vec<N, float> requiredVector(const Json& object, const char* key, const std::string& path) {
+  if (!object.contains(key)) throw FormatError(path + "." + key, "required property is missing");
+  return vector<N>(object, key, path, glm::vec<N, float>(0.0f));
+}
+
+std::string text(const Json& object, const char* key, const std::string& path, const std::string& fallback) {
+  const auto it = object.find(key);
+  if (it == object.end()) return fallback;
+  if (!it->is_string()) throw FormatError(path + "." + key, "expected a string");
+  return it->get<std::string>();
+}
+
+glm::vec3 direction(const Json& object, const std::string& path) {
+  const glm::vec3 d = vector<3>(object, "direction", path, glm::vec3(0.0f, 0.0f, -1.0f));
+  if (!(glm::length(d) > 0.0f)) throw FormatError(path + ".direction", "must not be zero");
+  return glm::normalize(d);
+}
+
+glm::mat4 objectTransform(const Json& object, const std::string& path) {
+  const glm::vec3 translation = vector<3>(object, "translation", path, glm::vec3(0.0f));
+  glm::quat rotation(1.0f, 0.0f, 0.0f, 0.0f);
+  if (object.contains("rotation") && object.contains("rotationDegrees"))
+    throw FormatError(path, "give rotation or rotationDegrees, not both");
+  if (object.contains("rotation")) {
+    const glm::vec4 q = vector<4>(object, "rotation", path, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    if (!(glm::length(q) > 0.0f)) throw FormatError(path + ".rotation", "must not be zero");
+    rotation = glm::normalize(glm::quat(q.w, q.x, q.y, q.z));
+  } else if (object.contains("rotationDegrees")) {
+    const glm::vec3 degrees = vector<3>(object, "rotationDegrees", path, glm::vec3(0.0f));
+    const glm::vec3 radians = glm::radians(degrees);
+    rotation = glm::angleAxis(radians.z, glm::vec3(0, 0, 1)) * glm::angleAxis(radians.y, glm::vec3(0, 1, 0)) *
+               glm::angleAxis(radians.x, glm::vec3(1, 0, 0));
+  }
+  glm::vec3 scale(1.0f);
+  if (const auto it = object.find("scale"); it != object.end())
+    scale = it->is_number() ? glm::vec3(number(object, "scale", path, 1.0f)) : vector<3>(object, "scale", path, scale);
+  return glm::translate(glm::mat4(1.0f), translation) * glm::mat4_cast(rotation) * glm::scale(glm::mat4(1.0f), scale);
+}
+
+Light parseLight(const Json& json, const std::string& path) {
+  allowOnly(json, path,
+            {"type", "name", "color", "intensity", "range", "position", "direction", "innerConeAngle", "outerConeAngle"});
+  Light light;
+  const std::string type = text(json, "type", path, "");
+  if (type == "directional") light.type = LightType::Directional;
+  else if (type == "point") light.type = LightType::Point;
+  else if (type == "spot") light.type = LightType::Spot;
+  else throw FormatError(path + ".type", "expected \"directional\", \"point\" or \"spot\"");
+  light.name = text(json, "name", path, "");
+  light.color = vector<3>(json, "color", path, glm::vec3(1.0f));
+  light.intensity = number(json, "intensity", path, 1.0f);
+  light.range = number(json, "range", path, 0.0f);
+  light.position = vector<3>(json, "position", path, glm::vec3(0.0f));
+  light.direction = direction(json, path);
+  light.innerConeAngle = number(json, "innerConeAngle", path, 0.0f);
+  light.outerConeAngle = number(json, "outerConeAngle", path, std::numbers::pi_v<float> / 4);
+  if (light.type == LightType::Spot &&
+      !(light.innerConeAngle >= 0.0f && light.innerConeAngle < light.outerConeAngle &&
+        light.outerConeAngle <= std::numbers::pi_v<float> / 2 + 1e-6f))
+    throw FormatError(path, "spot cone angles need 0 <= innerConeAngle < outerConeAngle <= pi/2");
+  if (light.range < 0.0f) throw FormatError(path + ".range", "must be >= 0");
+  return light;
+}
+
+CameraPath parseCameraPath(const Json& json, const std::string& path, size_t index) {
+  if (!json.is_object()) throw FormatError(path, "expected an object");
+  CameraPath out;
+  const std::string type = text(json, "type", path, "");
+  out.name = text(json, "name", path, "path " + std::to_string(index));
+  if (type == "orbit") {
+    allowOnly(json, path, {"type", "name", "center", "radius", "height", "seconds"});
+    out.type = CameraPath::Type::Orbit;
+    out.center = vector<3>(json, "center", path, glm::vec3(0.0f));
+    out.radius = requiredNumber(json, "radius", path);
+    out.height = number(json, "height", path, 0.0f);
+    out.seconds = number(json, "seconds", path, 10.0f);
+    if (!(out.radius > 0.0f)) throw FormatError(path + ".radius", "must be > 0");
+    if (!(out.seconds > 0.0f)) throw FormatError(path + ".seconds", "must be > 0");
+  } else if (type == "keys") {
+    allowOnly(json, path, {"type", "name", "keys"});
+    out.type = CameraPath::Type::Keys;
+    const auto keys = json.find("keys");
+    if (keys == json.end() || !keys->is_array() || keys->empty())
+      throw FormatError(path + ".keys", "expected an array of at least one key");
+    for (size_t k = 0; k < keys->size(); ++k) {
+      const std::string keyPath = path + ".keys[" + std::to_string(k) + "]";
+      const Json& key = (*keys)[k];
+      allowOnly(key, keyPath, {"t", "position", "target"});
+      CameraKey parsed{requiredNumber(key, "t", keyPath), requiredVector<3>(key, "position", keyPath),
+                       requiredVector<3>(key, "target", keyPath)};
+      if (!out.keys.empty() && !(parsed.time > out.keys.back().time))
+        throw FormatError(keyPath + ".t", "key times must increase strictly");
+      if (parsed.position == parsed.target) throw FormatError(keyPath, "position and target are the same point");
+      out.keys.push_back(parsed);
+    }
+  } else {
+    throw FormatError(path + ".type", "expected \"orbit\" or \"keys\"");
+  }
+  return out;
+}
+
+SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadOptions& options) {
+  allowOnly(root, "the document", {"objects", "lights", "cameraPaths"});
+  const auto objects = root.find("objects");
+  if (objects == root.end() || !objects->is_array()) throw FormatError("objects", "expected an array");
+
+  SceneFile result;
+  // Each glTF file is loaded once and its meshes, materials and textures are
+  // stored once, however many objects place it.
+  struct Placements {
+    std::vector<Instance> instances;
+    std::vector<Light> lights;
+    std::vector<Camera> cameras;
+    int meshBase = 0;
+  };
+  std::map<std::filesystem::path, Placements> loaded;
+  for (size_t i = 0; i < objects->size(); ++i) {
+    const std::string path = "objects[" + std::to_string(i) + "]";
+    const Json& object = (*objects)[i];
+    allowOnly(object, path, {"gltf", "name", "translation", "rotation", "rotationDegrees", "scale", "shading"});
+    const std::string gltf = text(object, "gltf", path, "");
+    if (gltf.empty()) throw FormatError(path + ".gltf", "required property is missing");
+    const std::filesystem::path gltfPath = (file.parent_path() / gltf).lexically_normal();
+    std::optional<ShadingMode> shading;
+    if (object.contains("shading")) {
+      shading = parseShadingMode(text(object, "shading", path, ""));
+      if (!shading) throw FormatError(path + ".shading", "expected \"auto\", \"decoupled\" or \"forward\"");
+    }
+    const glm::mat4 transform = objectTransform(object, path);
+    const std::string name = text(object, "name", path, gltfPath.stem().string());
+
+    auto it = loaded.find(gltfPath);
+    if (it == loaded.end()) {
+      Scene scene;
+      try {
+        scene = loadGltf(gltfPath, options);
+      } catch (const SceneError& error) {
+        throw FormatError(path + ".gltf", error.what());
+      }
+      Placements placements{std::move(scene.instances), std::move(scene.lights), std::move(scene.cameras),
+                            static_cast<int>(result.scene.meshes.size())};
+      scene.instances.clear();
+      scene.lights.clear();
+      scene.cameras.clear();
+      appendScene(result.scene, std::move(scene), glm::mat4(1.0f), gltfPath.filename().string() + ": ");
+      it = loaded.emplace(gltfPath, std::move(placements)).first;
+    }
+    const Placements& placements = it->second;
+    for (Instance instance : placements.instances) {
+      instance.mesh += placements.meshBase;
+      instance.world = transform * instance.world;
+      instance.name = name + "/" + instance.name;
+      if (shading) instance.shading = *shading;
+      result.scene.instances.push_back(std::move(instance));
+    }
+    Scene placed;  // lights and cameras, moved by appendScene's transform rules
+    placed.lights = placements.lights;
+    placed.cameras = placements.cameras;
+    appendScene(result.scene, std::move(placed), transform);
+  }
+
+  if (const auto lights = root.find("lights"); lights != root.end()) {
+    if (!lights->is_array()) throw FormatError("lights", "expected an array");
+    for (size_t i = 0; i < lights->size(); ++i)
+      result.scene.lights.push_back(parseLight((*lights)[i], "lights[" + std::to_string(i) + "]"));
+  }
+  if (const auto paths = root.find("cameraPaths"); paths != root.end()) {
+    if (!paths->is_array()) throw FormatError("cameraPaths", "expected an array");
+    for (size_t i = 0; i < paths->size(); ++i)
+      result.cameraPaths.push_back(parseCameraPath((*paths)[i], "cameraPaths[" + std::to_string(i) + "]", i));
+  }
+  return result;
+}
+
+}  // namespace
+
+SceneFile loadSceneFile(const std::filesystem::path& file, const LoadOptions& options) {
+  std::ifstream stream(file);
+  if (!stream) throw SceneError(file, "cannot open the file");
+  try {
+    const Json root = Json::parse(stream);
+    return parse(root, file, options);
+  } catch (const Json::parse_error& error) {
+    throw SceneError(file, std::string("invalid JSON: ") + error.what());
+  } catch (const Json::exception& error) {
+    throw SceneError(file, error.what());
+  } catch (const FormatError& error) {
+    throw SceneError(file, error.what());
+  }
+}
+
+}  // namespace sg::scene

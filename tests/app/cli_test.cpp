@@ -1,0 +1,112 @@
+// The shadelgraph CLI as a user runs it: exit codes, messages, the PNG it
+// writes and the plan it prints. Runs with SG_VALIDATION=1 (set by ctest for
+// device tests), so any validation message makes the command fail.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include <shadelgraph/image/png.hpp>
+
+namespace {
+
+struct Run {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr
+};
+
+Run run(const std::string& args) {
+  const std::string command = std::string(SG_CLI) + " " + args + " 2>&1";
+  Run r;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buffer;
+  size_t n;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::filesystem::path tempDir() {
+  auto dir = std::filesystem::temp_directory_path() / "sg-cli-test";
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+TEST(Cli, VersionAndHelp) {
+  auto version = run("--version");
+  EXPECT_EQ(version.exitCode, 0);
+  EXPECT_NE(version.output.find("0."), std::string::npos);
+  auto help = run("--help");
+  EXPECT_EQ(help.exitCode, 0);
+  for (const char* command : {"render", "graph", "inspect"}) EXPECT_NE(help.output.find(command), std::string::npos) << command;
+}
+
+TEST(Cli, RenderWritesANonBlankPngAndATimingTable) {
+  const auto png = tempDir() / "default.png";
+  std::filesystem::remove(png);
+  auto r = run("render -o " + png.string() + " --size 160x90 --frames 1");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const char* pass : {"z-prepass", "forward-opaque", "exposure", "tonemap", "GPU ms"})
+    EXPECT_NE(r.output.find(pass), std::string::npos) << pass << " missing from:\n" << r.output;
+  const auto image = sg::image::readPng(png);
+  ASSERT_EQ(image.width, 160u);
+  ASSERT_EQ(image.height, 90u);
+  // Not blank: many distinct colours.
+  std::set<uint32_t> colours;
+  for (size_t i = 0; i < image.pixels.size(); i += 4)
+    colours.insert(uint32_t(image.pixels[i]) << 16 | uint32_t(image.pixels[i + 1]) << 8 | image.pixels[i + 2]);
+  EXPECT_GT(colours.size(), 500u);
+}
+
+TEST(Cli, BadArgumentsFailWithOneLineReason) {
+  auto size = run("render --size 12by7");
+  EXPECT_NE(size.exitCode, 0);
+  EXPECT_NE(size.output.find("--size"), std::string::npos) << size.output;
+  auto missing = run("render /nonexistent/scene.gltf");
+  EXPECT_NE(missing.exitCode, 0);
+  EXPECT_NE(missing.output.find("/nonexistent/scene.gltf"), std::string::npos) << missing.output;
+  auto decoupled = run("render --mode decoupled --size 32x32");
+  EXPECT_NE(decoupled.exitCode, 0);
+  EXPECT_NE(decoupled.output.find("decoupled"), std::string::npos) << decoupled.output;
+}
+
+TEST(Cli, GraphJsonListsPassesResourcesBarriersAndWaits) {
+  auto r = run("graph --json --size 160x90");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const auto plan = nlohmann::json::parse(r.output);
+  ASSERT_TRUE(plan.contains("passes"));
+  ASSERT_TRUE(plan.contains("resources"));
+  std::set<std::string> names;
+  for (const auto& p : plan["passes"]) {
+    names.insert(p["name"].get<std::string>());
+    EXPECT_TRUE(p.contains("queue"));
+    EXPECT_TRUE(p["culled"].is_boolean());
+    EXPECT_TRUE(p["accesses"].is_array());
+    EXPECT_TRUE(p["barriers"].is_array());
+    EXPECT_TRUE(p["waits"].is_array());
+  }
+  EXPECT_TRUE(names.count("forward-opaque"));
+  // The default scene has no blended material: no blend pass in its graph.
+  EXPECT_FALSE(names.count("forward-blend"));
+  bool transientWithMemory = false;
+  for (const auto& res : plan["resources"]) {
+    EXPECT_TRUE(res.contains("kind"));
+    if (res["kind"] == "TransientImage") transientWithMemory |= res.contains("memory") && res["memory"].contains("offset");
+  }
+  EXPECT_TRUE(transientWithMemory);
+}
+
+TEST(Cli, GraphDotIsAGraphvizDigraph) {
+  auto r = run("graph --dot --size 64x64");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output.rfind("digraph", 0), 0u) << r.output.substr(0, 200);
+}
+
+}  // namespace

@@ -1,0 +1,153 @@
+// Strips and fans, flat normals, tangents.
+#include <gtest/gtest.h>
+
+#include <shadelgraph/scene/gltf_loader.hpp>
+#include <shadelgraph/scene/normals.hpp>
+#include <shadelgraph/scene/tangents.hpp>
+#include <shadelgraph/scene/triangulate.hpp>
+
+#include "scene_test_support.hpp"
+
+namespace sg::scene {
+namespace {
+
+TEST(Triangulate, StripAlternatesWinding) {
+  const std::vector<uint32_t> strip{0, 1, 2, 3, 4};
+  EXPECT_EQ(toTriangleList(strip, Topology::TriangleStrip), (std::vector<uint32_t>{0, 1, 2, 1, 3, 2, 2, 3, 4}));
+}
+
+TEST(Triangulate, StripDropsStitchingTriangles) {
+  // Two sub-strips joined by repeating 3 and 4: the degenerate joins vanish.
+  const std::vector<uint32_t> strip{0, 1, 2, 3, 3, 4, 4, 5, 6, 7};
+  const std::vector<uint32_t> list = toTriangleList(strip, Topology::TriangleStrip);
+  for (size_t i = 0; i < list.size(); i += 3) {
+    EXPECT_NE(list[i], list[i + 1]);
+    EXPECT_NE(list[i + 1], list[i + 2]);
+    EXPECT_NE(list[i], list[i + 2]);
+  }
+  EXPECT_EQ(list.size(), 4u * 3u);
+}
+
+TEST(Triangulate, FanPivotsOnFirstVertex) {
+  const std::vector<uint32_t> fan{0, 1, 2, 3, 4};
+  EXPECT_EQ(toTriangleList(fan, Topology::TriangleFan), (std::vector<uint32_t>{1, 2, 0, 2, 3, 0, 3, 4, 0}));
+}
+
+TEST(Triangulate, ShortInputs) {
+  EXPECT_TRUE(toTriangleList(std::vector<uint32_t>{0, 1}, Topology::TriangleStrip).empty());
+  EXPECT_TRUE(toTriangleList(std::vector<uint32_t>{0, 1}, Topology::TriangleFan).empty());
+  EXPECT_EQ(toTriangleList(std::vector<uint32_t>{0, 1, 2, 3}, Topology::TriangleList), (std::vector<uint32_t>{0, 1, 2}));
+}
+
+TEST(FlatNormals, DeindexAndFaceNormals) {
+  Primitive p;
+  // A unit square folded along its diagonal: one half in z = 0, the other rising.
+  p.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 1}};
+  p.uv0 = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  p.indices = {0, 1, 2, 0, 2, 3};
+  generateFlatNormals(p);
+  ASSERT_EQ(p.positions.size(), 6u);
+  EXPECT_EQ(p.indices, (std::vector<uint32_t>{0, 1, 2, 3, 4, 5}));
+  EXPECT_EQ(p.uv0[5], glm::vec2(0, 1)) << "other attributes expanded alongside";
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(p.normals[static_cast<size_t>(k)], glm::vec3(0, 0, 1));
+  const glm::vec3 second = glm::normalize(glm::cross(glm::vec3(1, 1, 0), glm::vec3(0, 1, 1)));
+  for (size_t k = 3; k < 6; ++k) EXPECT_NEAR(glm::distance(p.normals[k], second), 0.0f, 1e-6f);
+}
+
+TEST(FlatNormals, DegenerateTriangleGetsAFallback) {
+  Primitive p;
+  p.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
+  p.indices = {0, 1, 2};
+  generateFlatNormals(p);
+  EXPECT_EQ(p.normals[0], glm::vec3(0, 0, 1));
+}
+
+// A quad in the XY plane facing +Z, UVs laid out as a glTF image is: u to the
+// right, v downwards (origin top-left), so v = 1 - y.
+struct Quad {
+  std::vector<glm::vec3> positions{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  std::vector<glm::vec3> normals{4, glm::vec3(0, 0, 1)};
+  std::vector<glm::vec2> uvs{{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+  std::vector<uint32_t> indices{0, 1, 2, 0, 2, 3};
+};
+
+TEST(Tangents, AlongPlusUWithPositiveHandedness) {
+  const Quad quad;
+  const auto tangents = generateTangents(quad.positions, quad.normals, quad.uvs, quad.indices);
+  ASSERT_EQ(tangents.size(), 4u);
+  for (const glm::vec4& t : tangents) {
+    EXPECT_NEAR(glm::distance(glm::vec3(t), glm::vec3(1, 0, 0)), 0.0f, 1e-6f);
+    EXPECT_EQ(t.w, 1.0f);
+    // glTF: bitangent = cross(normal, tangent) * w is the image's up, +Y here.
+    EXPECT_EQ(glm::cross(glm::vec3(0, 0, 1), glm::vec3(t)) * t.w, glm::vec3(0, 1, 0));
+  }
+}
+
+TEST(Tangents, MirroredUvsFlipHandedness) {
+  Quad quad;
+  for (glm::vec2& uv : quad.uvs) uv.x = 1.0f - uv.x;  // mirrored left-right
+  const auto tangents = generateTangents(quad.positions, quad.normals, quad.uvs, quad.indices);
+  for (const glm::vec4& t : tangents) {
+    EXPECT_NEAR(glm::distance(glm::vec3(t), glm::vec3(-1, 0, 0)), 0.0f, 1e-6f);
+    EXPECT_EQ(t.w, -1.0f);
+    EXPECT_EQ(glm::cross(glm::vec3(0, 0, 1), glm::vec3(t)) * t.w, glm::vec3(0, 1, 0)) << "image up is still +Y";
+  }
+}
+
+TEST(Tangents, OrthogonalToTheNormal) {
+  Quad quad;
+  for (glm::vec3& n : quad.normals) n = glm::normalize(glm::vec3(0.3f, 0.0f, 1.0f));  // bent normals
+  const auto tangents = generateTangents(quad.positions, quad.normals, quad.uvs, quad.indices);
+  for (size_t i = 0; i < tangents.size(); ++i) {
+    EXPECT_NEAR(glm::dot(glm::vec3(tangents[i]), quad.normals[i]), 0.0f, 1e-6f);
+    EXPECT_NEAR(glm::length(glm::vec3(tangents[i])), 1.0f, 1e-6f);
+  }
+}
+
+TEST(Tangents, NoUvGradientFallsBackToAPerpendicular) {
+  Quad quad;
+  for (glm::vec2& uv : quad.uvs) uv = glm::vec2(0.5f);
+  const auto tangents = generateTangents(quad.positions, quad.normals, quad.uvs, quad.indices);
+  for (const glm::vec4& t : tangents) {
+    EXPECT_NEAR(glm::dot(glm::vec3(t), glm::vec3(0, 0, 1)), 0.0f, 1e-6f);
+    EXPECT_EQ(t.w, 1.0f);
+  }
+}
+
+// NormalTangentMirrorTest ships Blender's MikkTSpace tangents, including
+// mirrored (w = -1) parts: ours agree on every handedness and nearly on
+// every direction.
+TEST(Tangents, AgreeWithTheMirrorTestModel) {
+  SG_REQUIRE_ASSETS();
+  const Scene scene = loadGltf(test::samplePath("NormalTangentMirrorTest"), LoadOptions{.decodeImages = false});
+  const Primitive& p = scene.meshes.at(0).primitives.at(0);
+  ASSERT_FALSE(p.tangents.empty());
+  const auto ours = generateTangents(p.positions, p.normals, p.uv0, p.indices);
+  size_t mirrored = 0, sameHandedness = 0;
+  double dotSum = 0.0;
+  for (size_t i = 0; i < ours.size(); ++i) {
+    mirrored += p.tangents[i].w < 0.0f;
+    sameHandedness += ours[i].w == p.tangents[i].w;
+    dotSum += static_cast<double>(glm::dot(glm::vec3(ours[i]), glm::vec3(p.tangents[i])));
+  }
+  EXPECT_GT(mirrored, 0u);
+  EXPECT_EQ(sameHandedness, ours.size());
+  EXPECT_GT(dotSum / static_cast<double>(ours.size()), 0.99);
+}
+
+TEST(Tangents, GeneratedWhenANormalMapHasNone) {
+  SG_REQUIRE_ASSETS();
+  const Scene scene = loadGltf(test::samplePath("DamagedHelmet"), LoadOptions{.decodeImages = false});
+  const Primitive& p = scene.meshes.at(0).primitives.at(0);
+  ASSERT_EQ(p.tangents.size(), p.positions.size());
+  for (size_t i = 0; i < p.tangents.size(); ++i) {
+    EXPECT_NEAR(glm::length(glm::vec3(p.tangents[i])), 1.0f, 1e-4f);
+    EXPECT_TRUE(p.tangents[i].w == 1.0f || p.tangents[i].w == -1.0f);
+  }
+  // Box has no normal map: no tangents are made up.
+  const Scene box = loadGltf(test::samplePath("Box"));
+  EXPECT_TRUE(box.meshes.at(0).primitives.at(0).tangents.empty());
+}
+
+}  // namespace
+}  // namespace sg::scene
