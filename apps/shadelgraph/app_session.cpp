@@ -9,7 +9,10 @@
 
 namespace sg::app {
 
-AppSession::AppSession(const std::string& scenePath) : scene(loadSceneArgument(scenePath)) {
+AppSession::AppSession(const std::string& scenePath) {
+  auto loaded = loadSceneArgument(scenePath);
+  scene = std::move(loaded.scene);
+  cameraPaths = std::move(loaded.cameraPaths);
   context = std::make_unique<gpu::Context>();
   device = std::make_unique<gpu::Device>(*context);
   device->shaders().add(gpu::builtinShaders());

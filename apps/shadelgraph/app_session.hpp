@@ -4,10 +4,12 @@
 // renderer running the forward recipe.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <shadelgraph/gpu/context.hpp>
 #include <shadelgraph/gpu/device.hpp>
 #include <shadelgraph/render/renderer.hpp>
+#include <shadelgraph/scene/camera_path.hpp>
 #include <shadelgraph/scene/scene.hpp>
 
 namespace sg::app {
@@ -19,6 +21,7 @@ struct AppSession {
   int validationExitCode() const;
 
   scene::Scene scene;
+  std::vector<scene::CameraPath> cameraPaths;
   std::unique_ptr<gpu::Context> context;
   std::unique_ptr<gpu::Device> device;
   std::unique_ptr<render::Renderer> renderer;

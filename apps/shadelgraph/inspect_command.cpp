@@ -15,7 +15,7 @@ void addInspectCommand(CLI::App& app) {
   static std::string path;
   cmd->add_option("scene", path, "a .gltf/.glb/.json scene (default: the built-in scene)");
   cmd->callback([] {
-    const scene::Scene s = loadSceneArgument(path);
+    const scene::Scene s = loadSceneArgument(path).scene;
     std::printf("%zu meshes, %zu instances, %zu materials, %zu textures, %zu lights, %zu cameras, %zu triangles drawn\n",
                 s.meshes.size(), s.instances.size(), s.materials.size(), s.textures.size(), s.lights.size(),
                 s.cameras.size(), scene::instancedTriangleCount(s));

@@ -22,6 +22,8 @@ struct RenderArgs {
   std::string output = "out/render.png";
   std::string size = "1280x720";
   int camera = -1;
+  int frame = -1;
+  int path = 0;
   std::string mode = "auto";
   std::string stats;
   std::string trace;
@@ -72,6 +74,22 @@ void writeStats(const std::string& path, const AppSession& session, const render
   out << stats.dump(2) << "\n";
 }
 
+// The camera at frame `frame` (30 per second) of the scene file's camera path `path`.
+scene::Camera pathCamera(const AppSession& session, int path, int frame) {
+  if (session.cameraPaths.empty()) throw std::invalid_argument("--frame: the scene has no camera paths (a .json scene file defines them)");
+  if (path < 0 || size_t(path) >= session.cameraPaths.size())
+    throw std::invalid_argument("--path " + std::to_string(path) + ": the scene has " +
+                                std::to_string(session.cameraPaths.size()) + " camera path(s)");
+  const auto pose = scene::evaluatePose(session.cameraPaths[size_t(path)], float(frame) / 30.0f);
+  const scene::Bounds bounds = scene::worldBounds(session.scene);
+  scene::Camera camera{.name = "path", .yfov = 0.8f};
+  camera.world = scene::lookAtWorld(pose.position, pose.target);
+  const float reach = glm::distance(pose.position, bounds.center()) + bounds.radius();
+  camera.znear = std::max(reach * 1e-3f, 1e-3f);
+  camera.zfar = reach * 1.5f;
+  return camera;
+}
+
 void runRender(const RenderArgs& args) {
   render::RenderSettings settings;
   parseSize(args.size, settings.width, settings.height);
@@ -82,6 +100,7 @@ void runRender(const RenderArgs& args) {
   if (args.frames < 1) throw std::invalid_argument("--frames must be at least 1");
 
   AppSession session(args.scene);
+  if (args.frame >= 0) settings.cameraOverride = pathCamera(session, args.path, args.frame);
   // The first frame pays for pipeline creation; report the last one.
   render::FrameResult frame;
   for (int i = 0; i < args.frames; ++i) frame = session.renderer->render(settings);
@@ -113,7 +132,9 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("scene", args.scene, "a .gltf/.glb/.json scene (default: the built-in scene)");
   cmd->add_option("-o,--output", args.output, "PNG to write")->capture_default_str();
   cmd->add_option("--size", args.size, "WIDTHxHEIGHT")->capture_default_str();
-  cmd->add_option("--camera", args.camera, "camera index of the scene (default: its first, else framing)");
+  auto* camera = cmd->add_option("--camera", args.camera, "camera index of the scene (default: its first, else framing)");
+  cmd->add_option("--frame", args.frame, "frame along a camera path of the scene file (30 per second)")->excludes(camera);
+  cmd->add_option("--path", args.path, "which camera path --frame follows")->capture_default_str();
   cmd->add_option("--mode", args.mode, "shading of every object: forward, decoupled, auto")
       ->check(CLI::IsMember({"forward", "decoupled", "auto"}))
       ->capture_default_str();

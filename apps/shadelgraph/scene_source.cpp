@@ -9,11 +9,14 @@
 
 namespace sg::app {
 
-scene::Scene loadSceneArgument(const std::string& path) {
-  if (path.empty()) return scene::makeDefaultScene();
+LoadedScene loadSceneArgument(const std::string& path) {
+  if (path.empty()) return {scene::makeDefaultScene(), {}};
   const auto ext = std::filesystem::path(path).extension();
-  if (ext == ".gltf" || ext == ".glb") return scene::loadGltf(path);
-  if (ext == ".json") return scene::loadSceneFile(path).scene;
+  if (ext == ".gltf" || ext == ".glb") return {scene::loadGltf(path), {}};
+  if (ext == ".json") {
+    auto file = scene::loadSceneFile(path);
+    return {std::move(file.scene), std::move(file.cameraPaths)};
+  }
   throw std::invalid_argument(path + ": unknown scene type (expected .gltf, .glb or .json)");
 }
 

@@ -25,6 +25,7 @@ Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, FrameRecipe r
 Renderer::~Renderer() = default;
 
 scene::Camera Renderer::camera(const RenderSettings& settings) const {
+  if (settings.cameraOverride) return *settings.cameraOverride;
   if (settings.camera >= 0) {
     if (size_t(settings.camera) >= scene_.cameras.size())
       throw gpu::GpuError("--camera " + std::to_string(settings.camera) + ": the scene has " +

@@ -17,6 +17,7 @@ struct RenderSettings {
   uint32_t width = 1280;
   uint32_t height = 720;
   int camera = -1;  // index into the scene's cameras; -1: the first, or framing of the bounds
+  std::optional<scene::Camera> cameraOverride;  // e.g. a pose along a camera path; wins over `camera`
   bool aliasing = true;
 };
 

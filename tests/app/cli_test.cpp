@@ -3,6 +3,7 @@
 // device tests), so any validation message makes the command fail.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -101,6 +102,60 @@ TEST(Cli, GraphJsonListsPassesResourcesBarriersAndWaits) {
     if (res["kind"] == "TransientImage") transientWithMemory |= res.contains("memory") && res["memory"].contains("offset");
   }
   EXPECT_TRUE(transientWithMemory);
+}
+
+std::string asset(const std::string& model) {
+  return std::string(SG_ASSETS_DIR) + "/" + model + "/glTF/" + model + ".gltf";
+}
+
+#define REQUIRE_ASSETS()                                                                     \
+  if (!std::filesystem::exists(SG_ASSETS_DIR))                                               \
+  GTEST_SKIP() << "shared assets not found at " << SG_ASSETS_DIR << " (../shared/assets/gltf)"
+
+TEST(Cli, OnlyScenesWithBlendedMaterialsGetABlendPass) {
+  REQUIRE_ASSETS();
+  auto r = run("graph --json --size 64x64 " + asset("AlphaBlendModeTest"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  bool blend = false;
+  const auto plan = nlohmann::json::parse(r.output);
+  for (const auto& p : plan["passes"]) blend |= p["name"] == "forward-blend";
+  EXPECT_TRUE(blend);
+}
+
+TEST(Cli, InspectReportsChartVerdicts) {
+  REQUIRE_ASSETS();
+  auto suzanne = run("inspect " + asset("Suzanne"));
+  ASSERT_EQ(suzanne.exitCode, 0) << suzanne.output;
+  EXPECT_NE(suzanne.output.find("chart: unique"), std::string::npos) << suzanne.output;
+  auto helmet = run("inspect " + asset("DamagedHelmet"));
+  ASSERT_EQ(helmet.exitCode, 0) << helmet.output;
+  EXPECT_NE(helmet.output.find("15452 triangles"), std::string::npos) << helmet.output;
+  EXPECT_NE(helmet.output.find("chart: not unique"), std::string::npos) << helmet.output;
+  EXPECT_NE(helmet.output.find("10 zero-UV-area triangles"), std::string::npos) << helmet.output;
+  auto box = run("inspect " + asset("Box"));
+  EXPECT_NE(box.output.find("UV sets: none"), std::string::npos) << box.output;
+}
+
+TEST(Cli, MalformedGltfFailsWithTheFileAndTheProblem) {
+  const std::string dir = "/usr/share/assimp/models/glTF2/";
+  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "assimp-testmodels not installed (./sg installs it)";
+  auto r = run("render --size 32x32 " + dir + "IndexOutOfRange/IndexOutOfRange.gltf");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("IndexOutOfRange.gltf"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("out of range"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << "one line: " << r.output;
+}
+
+TEST(Cli, MissingTextureIsAnErrorNotABlankMaterial) {
+  REQUIRE_ASSETS();
+  const auto dir = tempDir() / "missing-texture";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto source = std::filesystem::path(SG_ASSETS_DIR) / "BoxTextured/glTF";
+  for (const char* f : {"BoxTextured.gltf", "BoxTextured0.bin"}) std::filesystem::copy(source / f, dir / f);
+  auto r = run("render --size 32x32 " + (dir / "BoxTextured.gltf").string());
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("CesiumLogoFlat.png"), std::string::npos) << r.output;
 }
 
 TEST(Cli, GraphDotIsAGraphvizDigraph) {
