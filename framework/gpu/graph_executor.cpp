@@ -205,7 +205,7 @@ FrameTimings GraphExecutor::execute(const graph::RenderGraph& graph, const graph
       recordBarriers(cmd, plan, before);
       const uint32_t scope = timer_.begin(cmd, planned.name);
       CpuTimer recordTimer;
-      if (const auto& callback = graph.pass(id).callback) {
+      if (const auto& callback = graph.callback(id)) {
         PassContext ctx(cmd, device_, descriptors_, *this);
         callback(ctx);
       }

@@ -1,28 +1,15 @@
 // glTF metallic-roughness shading of one surface point with the frame's
 // punctual lights and a hemispherical ambient term. Needs frame.glsl and
-// material.glsl included first. SG_SAMPLE(tex, uv) is defined by the variant
-// (fragment: implicit derivatives).
+// material.glsl included first. Textures are sampled with the surface's UV
+// derivatives (materialSample), whichever variant runs it.
 #ifndef SG_GLTF_PBR_GLSL
 #define SG_GLTF_PBR_GLSL
 
 #include "brdf.glsl"
 
-#ifndef SG_SAMPLE
-#define SG_SAMPLE(tex, uv) texture(tex, uv)
-#endif
-
-struct Surface {
-  vec3 position;  // world
-  vec3 normal;    // world, unit, facing the viewer for double-sided back faces
-  vec4 tangent;   // world xyz, w = handedness
-  vec2 uv0;
-  vec2 uv1;
-  vec4 color;     // COLOR_0
-};
-
 vec4 materialBaseColor(Surface s) {
   vec4 c = material.baseColorFactor * s.color;
-  if (materialHas(SG_TEX_BASE_COLOR)) c *= SG_SAMPLE(baseColorTexture, materialUv(SG_TEX_BASE_COLOR, s.uv0, s.uv1));
+  if (materialHas(SG_TEX_BASE_COLOR)) c *= materialSample(baseColorTexture, SG_TEX_BASE_COLOR, s);
   return c;
 }
 
@@ -32,7 +19,7 @@ vec3 shadingNormal(Surface s) {
   if (dot(t, t) < 1e-12) return s.normal;
   t = normalize(t);
   vec3 b = cross(s.normal, t) * s.tangent.w;
-  vec3 m = SG_SAMPLE(normalTexture, materialUv(SG_TEX_NORMAL, s.uv0, s.uv1)).xyz * 2.0 - 1.0;
+  vec3 m = materialSample(normalTexture, SG_TEX_NORMAL, s).xyz * 2.0 - 1.0;
   m.xy *= material.emissiveFactor.w;
   return normalize(mat3(t, b, s.normal) * m);
 }
@@ -48,15 +35,15 @@ vec4 shadeGltfPbr(Surface s) {
   vec4 baseColor = materialBaseColor(s);
   float metallic = material.params.x, roughness = material.params.y;
   if (materialHas(SG_TEX_METALLIC_ROUGHNESS)) {
-    vec4 mr = SG_SAMPLE(metallicRoughnessTexture, materialUv(SG_TEX_METALLIC_ROUGHNESS, s.uv0, s.uv1));
+    vec4 mr = materialSample(metallicRoughnessTexture, SG_TEX_METALLIC_ROUGHNESS, s);
     roughness *= mr.g;
     metallic *= mr.b;
   }
   float occlusion = 1.0;
   if (materialHas(SG_TEX_OCCLUSION))
-    occlusion = 1.0 + material.params.z * (SG_SAMPLE(occlusionTexture, materialUv(SG_TEX_OCCLUSION, s.uv0, s.uv1)).r - 1.0);
+    occlusion = 1.0 + material.params.z * (materialSample(occlusionTexture, SG_TEX_OCCLUSION, s).r - 1.0);
   vec3 emissive = material.emissiveFactor.rgb;
-  if (materialHas(SG_TEX_EMISSIVE)) emissive *= SG_SAMPLE(emissiveTexture, materialUv(SG_TEX_EMISSIVE, s.uv0, s.uv1)).rgb;
+  if (materialHas(SG_TEX_EMISSIVE)) emissive *= materialSample(emissiveTexture, SG_TEX_EMISSIVE, s).rgb;
 
   vec3 N = shadingNormal(s);
   vec3 V = normalize(frame.cameraPosition.xyz - s.position);

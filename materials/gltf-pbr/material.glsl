@@ -3,6 +3,8 @@
 #ifndef SG_MATERIAL_GLSL
 #define SG_MATERIAL_GLSL
 
+#include "surface.glsl"
+
 #define SG_ALPHA_OPAQUE 0u
 #define SG_ALPHA_MASK 1u
 #define SG_ALPHA_BLEND 2u
@@ -39,6 +41,19 @@ vec2 materialUv(int slot, vec2 uv0, vec2 uv1) {
   TextureSlot s = material.slots[slot];
   vec2 uv = s.row1.w > 0.5 ? uv1 : uv0;
   return vec2(dot(s.row0.xyz, vec3(uv, 1.0)), dot(s.row1.xyz, vec3(uv, 1.0)));
+}
+
+// A UV derivative through the slot's transform (its linear part only).
+vec2 materialUvDelta(int slot, vec2 d0, vec2 d1) {
+  TextureSlot s = material.slots[slot];
+  vec2 d = s.row1.w > 0.5 ? d1 : d0;
+  return vec2(dot(s.row0.xy, d), dot(s.row1.xy, d));
+}
+
+// Samples a material texture at the surface with explicit derivatives.
+vec4 materialSample(sampler2D tex, int slot, Surface s) {
+  return textureGrad(tex, materialUv(slot, s.uv0, s.uv1), materialUvDelta(slot, s.uv0Dx, s.uv1Dx),
+                     materialUvDelta(slot, s.uv0Dy, s.uv1Dy));
 }
 
 #endif

@@ -23,6 +23,10 @@ void main() {
   s.uv0 = inUv0;
   s.uv1 = inUv1;
   s.color = inColor;
+  s.uv0Dx = dFdx(inUv0);
+  s.uv0Dy = dFdy(inUv0);
+  s.uv1Dx = dFdx(inUv1);
+  s.uv1Dy = dFdy(inUv1);
   vec4 shaded = shadeGltfPbr(s);
   if (material.flags.x == SG_ALPHA_MASK && shaded.a < material.params.w) discard;
   if (material.flags.x == SG_ALPHA_BLEND)
