@@ -25,7 +25,7 @@ DescriptorArena::~DescriptorArena() { vkDestroyDescriptorPool(device_, pool_, nu
 
 void DescriptorArena::reset() { SG_VK(vkResetDescriptorPool(device_, pool_, 0)); }
 
-void DescriptorArena::bind(VkCommandBuffer cmd, const Pipeline& pipeline, std::initializer_list<DescriptorWrite> writes) {
+void DescriptorArena::bind(VkCommandBuffer cmd, const Pipeline& pipeline, std::span<const DescriptorWrite> writes) {
   VkDescriptorSetLayout layout = pipeline.setLayout();
   VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
   alloc.descriptorPool = pool_;

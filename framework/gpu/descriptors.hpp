@@ -3,6 +3,7 @@
 // whole when the frame's work is done (no per-set bookkeeping, works on every
 // Vulkan 1.3 device, unlike push descriptors).
 #include <initializer_list>
+#include <span>
 #include <variant>
 
 #include <vulkan/vulkan.h>
@@ -36,7 +37,10 @@ class DescriptorArena {
 
   // Allocates a set for the pipeline's set-0 layout, writes it (descriptor
   // types come from the pipeline's bindings) and binds it.
-  void bind(VkCommandBuffer cmd, const Pipeline& pipeline, std::initializer_list<DescriptorWrite> writes);
+  void bind(VkCommandBuffer cmd, const Pipeline& pipeline, std::span<const DescriptorWrite> writes);
+  void bind(VkCommandBuffer cmd, const Pipeline& pipeline, std::initializer_list<DescriptorWrite> writes) {
+    bind(cmd, pipeline, std::span<const DescriptorWrite>(writes.begin(), writes.size()));
+  }
   void reset();
 
  private:

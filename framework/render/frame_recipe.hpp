@@ -6,14 +6,21 @@
 
 #include <glm/glm.hpp>
 
+#include <shadelgraph/gpu/device.hpp>
+#include <shadelgraph/gpu/graph_executor.hpp>
 #include <shadelgraph/graph/render_graph.hpp>
+#include <shadelgraph/scene/scene.hpp>
 #include <shadelgraph/render/scene_view.hpp>
 
 namespace sg::render {
 
 struct FrameInputs {
-  SceneView view;
+  SceneView view;  // view.draws: every draw of the scene
+  const scene::Scene& scene;
+  gpu::Device& device;
+  gpu::GraphExecutor& executor;  // to bind the recipe's own persistent and imported resources
   glm::vec3 cameraPosition{0.0f};
+  uint32_t width = 0, height = 0;
   graph::ResourceHandle output;  // imported 8-bit sRGB colour image
 };
 

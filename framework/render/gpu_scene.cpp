@@ -180,6 +180,7 @@ void GpuScene::uploadGeometry(gpu::Context& context, gpu::MemoryAllocator& memor
     }
   }
   if (vertices.empty()) throw gpu::GpuError("the scene has no triangles to draw");
+  for (uint32_t i = 0; i < draws_.size(); ++i) allDraws_.push_back(i);
   vertices_ = uploadBuffer(context, memory, vertices.data(), vertices.size() * sizeof(GpuVertex),
                            VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "vertices");
   indices_ = uploadBuffer(context, memory, indices.data(), indices.size() * 4,

@@ -55,6 +55,10 @@ class GpuScene {
   VkDescriptorSetLayout materialSetLayout() const { return materialLayout_; }
   VkDescriptorSet materialSet(uint32_t material) const { return materialSets_[material]; }
   bool hasAlphaMode(scene::AlphaMode mode) const;
+  VkBuffer vertexBuffer() const { return vertices_.handle(); }
+  VkBuffer indexBuffer() const { return indices_.handle(); }
+  // Every draw's index, 0..n-1 (a SceneView's draw list for all objects).
+  const std::vector<uint32_t>& allDraws() const { return allDraws_; }
   // Binds the vertex and index buffers.
   void bindGeometry(VkCommandBuffer cmd) const;
   size_t triangleCount() const;
@@ -67,6 +71,7 @@ class GpuScene {
   VkDevice device_;
   gpu::Buffer vertices_, indices_;
   std::vector<DrawItem> draws_;
+  std::vector<uint32_t> allDraws_;
   std::vector<gpu::Image> textures_;  // scene textures, then white, then flat normal
   std::vector<VkSampler> samplers_;
   std::vector<gpu::Buffer> materialBuffers_;

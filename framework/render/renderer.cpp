@@ -49,12 +49,13 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
                                    .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                    .name = "output", .category = "output"});
   }
-  auto frame = std::make_unique<Frame>(Frame{{gpuScene_, frameUniforms_}, {}, {}});
+  auto frame = std::make_unique<Frame>(Frame{{gpuScene_, frameUniforms_, gpuScene_.allDraws()}, {}, {}});
   frame->output = frame->graph.importImage(
       "output", {.format = graph::Format::RGBA8Srgb, .size = graph::Size::absolute(settings.width, settings.height)},
       graph::ImportedState{graph::Layout::Undefined},
       graph::FinalState{graph::Layout::TransferSrc, graph::PipelineStage::Transfer, graph::AccessFlag::TransferRead});
-  const auto result = recipe_(frame->graph, {frame->view, cam.position(), frame->output});
+  const auto result = recipe_(frame->graph, {frame->view, scene_, device_, executor_, cam.position(), settings.width,
+                                             settings.height, frame->output});
   frame->graph.markOutput(result);
   return frame;
 }

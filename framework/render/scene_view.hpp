@@ -1,6 +1,8 @@
 #pragma once
 // What scene passes draw: the uploaded scene and this frame's uniform buffer
 // (camera, lights; written by the host before the frame is submitted).
+#include <span>
+
 #include <shadelgraph/gpu/buffer.hpp>
 #include <shadelgraph/render/gpu_scene.hpp>
 
@@ -9,6 +11,7 @@ namespace sg::render {
 struct SceneView {
   const GpuScene& scene;
   const gpu::Buffer& frameUniforms;
+  std::span<const uint32_t> draws;  // the draws (indices into scene.draws()) the pass takes
 };
 
 // Push constants and cull mode for one draw, then the indexed draw.

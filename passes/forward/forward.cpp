@@ -46,7 +46,7 @@ ForwardTargets addForwardOpaque(graph::RenderGraph& graph, const render::SceneVi
     ctx.bind(pipeline, {{0, gpu::BufferBinding{view.frameUniforms.handle()}}});
     view.scene.bindGeometry(ctx.cmd());
     const auto& draws = view.scene.draws();
-    for (uint32_t i = 0; i < draws.size(); ++i)
+    for (uint32_t i : view.draws)
       if (draws[i].alphaMode != scene::AlphaMode::Blend) drawMaterial(ctx, pipeline, view, draws[i], i);
     ctx.endRendering();
   });
@@ -65,7 +65,7 @@ graph::ResourceHandle addForwardBlend(graph::RenderGraph& graph, const render::S
     // compromise for per-object sorting (intersecting objects stay wrong).
     std::vector<uint32_t> order;
     const auto& draws = view.scene.draws();
-    for (uint32_t i = 0; i < draws.size(); ++i)
+    for (uint32_t i : view.draws)
       if (draws[i].alphaMode == scene::AlphaMode::Blend) order.push_back(i);
     auto distance = [&](uint32_t i) { return glm::distance(glm::vec3(draws[i].world[3]), cameraPosition); };
     std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return distance(a) > distance(b); });

@@ -22,7 +22,7 @@ graph::ResourceHandle addZPrepass(graph::RenderGraph& graph, const render::Scene
     ctx.bind(pipeline, {{0, gpu::BufferBinding{view.frameUniforms.handle()}}});
     view.scene.bindGeometry(ctx.cmd());
     const auto& draws = view.scene.draws();
-    for (uint32_t i = 0; i < draws.size(); ++i)
+    for (uint32_t i : view.draws)
       if (draws[i].alphaMode == scene::AlphaMode::Opaque) render::drawItem(ctx.cmd(), pipeline, draws[i], i);
     ctx.endRendering();
   });

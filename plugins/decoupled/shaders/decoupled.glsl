@@ -32,6 +32,7 @@ struct SgShadeCounters {
   uint chunksAllocated;
   uint overflowChunks;
   uint compositeMisses;
+  uint coveredPixels;                   // fragments composite wrote
   uint levelChunks[SG_MAX_LEVELS];      // marked chunks per detail level
 };
 

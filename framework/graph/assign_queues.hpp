@@ -1,0 +1,35 @@
+#pragma once
+
+#include <shadelgraph/graph/compiled_plan.hpp>
+#include <shadelgraph/graph/dependencies.hpp>
+#include <shadelgraph/graph/render_graph.hpp>
+
+#include <span>
+#include <vector>
+
+namespace sg::graph {
+
+struct QueueSchedule {
+  std::vector<Batch> batches;         // submission order; passes are ranges of the order given
+  std::vector<SemaphoreWait> waits;   // grouped by batch
+  std::vector<uint32_t> passBatch;    // per pass; kInvalidIndex for passes not in the order
+
+  std::span<const SemaphoreWait> waitsOf(const Batch& batch) const { return slice(waits, batch.waits); }
+};
+
+// Splits `order` into batches (consecutive passes on the same logical queue)
+// and turns every dependency between batches on different queues into a
+// timeline-semaphore wait on the producing batch's value (its 1-based index
+// among its queue's batches). Waits are minimal: one per producing queue per
+// batch (the highest value needed), and none where an earlier batch on the same
+// queue already waited for at least that value at those stages (a wait also
+// blocks every later submission on the queue). Chains through a third queue are
+// not trusted: a signal only orders commands that ran in the waited stages.
+// A batch signals only if somebody waits on it.
+QueueSchedule assignQueues(const RenderGraph& graph, std::span<const PassId> order, const DependencyGraph& deps,
+                           std::span<const Dependency> handoffs = {});
+// The same into `schedule`, reusing its memory.
+void assignQueues(const RenderGraph& graph, std::span<const PassId> order, const DependencyGraph& deps,
+                  std::span<const Dependency> handoffs, QueueSchedule& schedule);
+
+}  // namespace sg::graph

@@ -1,0 +1,123 @@
+#include <shadelgraph/graph/compile.hpp>
+
+#include <shadelgraph/graph/cull.hpp>
+#include <shadelgraph/graph/order.hpp>
+#include <shadelgraph/graph/plan_resources.hpp>
+#include <shadelgraph/graph/validate.hpp>
+
+#include <stdexcept>
+#include <utility>
+
+namespace sg::graph {
+namespace {
+
+// Requirements of the used transients, from the options (or estimated).
+void gatherRequirements(const std::vector<PlannedResource>& resources, const CompileOptions& options,
+                        std::vector<MemoryRequirements>& requirements, bool& estimated) {
+  requirements.assign(resources.size(), MemoryRequirements{});
+  estimated = false;
+  for (uint32_t r = 0; r < resources.size(); ++r) {
+    if (!isTransient(resources[r].kind) || resources[r].culled) continue;
+    if (!options.memoryRequirements.empty()) {
+      if (r >= options.memoryRequirements.size()) {
+        throw std::invalid_argument("CompileOptions::memoryRequirements has no entry for '" + resources[r].name +
+                                    "'");
+      }
+      requirements[r] = options.memoryRequirements[r];
+    } else if (options.queryMemoryRequirements) {
+      requirements[r] = options.queryMemoryRequirements(resources[r].desc);
+    } else {
+      requirements[r] = estimateMemoryRequirements(resources[r].desc);
+      estimated = true;
+    }
+  }
+}
+
+}  // namespace
+
+CompiledPlan compile(const RenderGraph& graph, const CompileOptions& options) {
+  PlanCompiler compiler;
+  compiler.compile(graph, options);
+  return compiler.takePlan();
+}
+
+const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const CompileOptions& options) {
+  indexVersions(graph, versions_);
+  // One dependency graph over all passes: validate() looks for cycles in it,
+  // and the later steps ignore the edges of culled passes.
+  buildDependencies(graph, versions_, {}, deps_);
+  if (std::vector<ValidationError> errors = validate(graph, versions_, deps_, options); !errors.empty()) {
+    throw GraphError(std::move(errors));
+  }
+  cullPasses(graph, versions_, options.externalWritesAreSideEffects, culled_);
+
+  CompiledPlan& plan = plan_;
+  plan.outputWidth = options.outputWidth;
+  plan.outputHeight = options.outputHeight;
+  orderPasses(deps_, culled_, plan.order);
+  planResources(graph, plan.order, options.outputWidth, options.outputHeight, plan.resources);
+
+  gatherRequirements(plan.resources, options, requirements_, plan.memoryEstimated);
+  placeTransients(plan.resources, requirements_, options.enableAliasing, memory_);
+  for (uint32_t r = 0; r < plan.resources.size(); ++r) {
+    PlannedResource& resource = plan.resources[r];
+    resource.requirements = requirements_[r];
+    resource.memory = memory_.placements[r];
+    resource.aliasesWith = memory_.aliasesWith[r];
+  }
+  plan.aliases.assign(memory_.aliases.begin(), memory_.aliases.end());
+  plan.heaps.assign(memory_.heaps.begin(), memory_.heaps.end());
+  plan.heapBytes = memory_.heapBytes;
+  plan.heapBytesWithoutAliasing = memory_.heapBytesWithoutAliasing;
+
+  planBarriers(graph, plan.order, plan.resources, plan.aliases, barriers_);
+  assignQueues(graph, plan.order, deps_, barriers_.handoffs, schedule_);
+
+  // Accesses: one copy when the declaration holds them in pass order already
+  // (passes declared one after the other), else pass by pass.
+  const GraphDeclaration& declared = graph.declaration();
+  bool inPassOrder = true;
+  uint32_t next = 0;
+  for (const PassDecl& pass : declared.passes) {
+    inPassOrder = inPassOrder && pass.accesses.first == next;
+    next = pass.accesses.first + pass.accesses.count;
+  }
+  inPassOrder = inPassOrder && next == declared.accesses.size();
+  plan.accesses.clear();
+  if (inPassOrder) plan.accesses.assign(declared.accesses.begin(), declared.accesses.end());
+
+  plan.passes.resize(graph.passCount());
+  for (uint32_t p = 0; p < graph.passCount(); ++p) {
+    const PassDecl& pass = graph.pass(PassId{p});
+    PlannedPass& out = plan.passes[p];
+    out.name = declared.passNames[p];
+    out.queue = pass.queue;
+    out.kind = pass.kind;
+    out.sideEffect = pass.sideEffect;
+    out.culled = culled_[p];
+    if (inPassOrder) {
+      out.accesses = pass.accesses;
+    } else {
+      const std::span<const ResourceAccess> accesses = graph.accessesOf(PassId{p});
+      out.accesses = {static_cast<uint32_t>(plan.accesses.size()), static_cast<uint32_t>(accesses.size())};
+      plan.accesses.insert(plan.accesses.end(), accesses.begin(), accesses.end());
+    }
+    out.barriersBefore = barriers_.before[p];
+    out.barriersAfter = barriers_.after[p];
+    out.batch = schedule_.passBatch[p];
+    out.orderIndex = kInvalidIndex;
+  }
+  for (uint32_t position = 0; position < plan.order.size(); ++position) {
+    plan.passes[plan.order[position].index].orderIndex = position;
+  }
+  plan.barriers.assign(barriers_.barriers.begin(), barriers_.barriers.end());
+  plan.batches.assign(schedule_.batches.begin(), schedule_.batches.end());
+  plan.waits.assign(schedule_.waits.begin(), schedule_.waits.end());
+  plan.finalBarriers.assign(barriers_.finals.begin(), barriers_.finals.end());
+  for (FinalBarrier& f : plan.finalBarriers) {
+    if (f.afterPass.valid()) f.batch = schedule_.passBatch[f.afterPass.index];
+  }
+  return plan;
+}
+
+}  // namespace sg::graph

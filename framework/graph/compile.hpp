@@ -1,0 +1,41 @@
+#pragma once
+
+#include <shadelgraph/graph/assign_queues.hpp>
+#include <shadelgraph/graph/compile_options.hpp>
+#include <shadelgraph/graph/compiled_plan.hpp>
+#include <shadelgraph/graph/dependencies.hpp>
+#include <shadelgraph/graph/place_transients.hpp>
+#include <shadelgraph/graph/plan_barriers.hpp>
+#include <shadelgraph/graph/render_graph.hpp>
+#include <shadelgraph/graph/version_table.hpp>
+
+#include <vector>
+
+namespace sg::graph {
+
+// Runs the compile steps in turn: validate (throws GraphError with every
+// error), cullPasses, orderPasses, planResources, placeTransients (memory
+// requirements from `options`), planBarriers, assignQueues.
+CompiledPlan compile(const RenderGraph& graph, const CompileOptions& options = {});
+
+// The same, frame after frame: keeps the plan and every step's output between
+// calls and reuses their memory, so a steady-state recompile allocates (almost)
+// nothing. The plan returned stays valid until the next compile().
+class PlanCompiler {
+ public:
+  const CompiledPlan& compile(const RenderGraph& graph, const CompileOptions& options = {});
+  const CompiledPlan& plan() const { return plan_; }
+  CompiledPlan takePlan() { return std::move(plan_); }
+
+ private:
+  VersionTable versions_;
+  DependencyGraph deps_;
+  std::vector<bool> culled_;
+  std::vector<MemoryRequirements> requirements_;
+  MemoryPlan memory_;
+  BarrierPlan barriers_;
+  QueueSchedule schedule_;
+  CompiledPlan plan_;
+};
+
+}  // namespace sg::graph

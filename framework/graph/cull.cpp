@@ -1,0 +1,51 @@
+#include <shadelgraph/graph/cull.hpp>
+
+namespace sg::graph {
+
+std::vector<bool> cullPasses(const RenderGraph& graph, const VersionTable& versions,
+                             bool externalWritesAreSideEffects) {
+  std::vector<bool> culled;
+  cullPasses(graph, versions, externalWritesAreSideEffects, culled);
+  return culled;
+}
+
+void cullPasses(const RenderGraph& graph, const VersionTable& versions, bool externalWritesAreSideEffects,
+                std::vector<bool>& culled) {
+  const uint32_t passCount = graph.passCount();
+  culled.assign(passCount, true);
+  std::vector<PassId> needed;
+  needed.reserve(passCount);
+  const auto keep = [&](PassId p) {
+    if (p.valid() && culled[p.index]) {
+      culled[p.index] = false;
+      needed.push_back(p);
+    }
+  };
+
+  for (uint32_t p = 0; p < passCount; ++p) {
+    const PassDecl& pass = graph.pass(PassId{p});
+    bool root = pass.sideEffect;
+    for (const ResourceAccess& a : graph.accessesOf(PassId{p})) {
+      if (root) break;
+      if (!a.write || !externalWritesAreSideEffects || !graph.isValid(a.resource)) continue;
+      const ResourceKind kind = graph.resource(a.resource).kind;
+      root = kind == ResourceKind::Imported || kind == ResourceKind::Persistent;
+    }
+    if (root) keep(PassId{p});
+  }
+  for (const ResourceHandle output : graph.outputs()) {
+    if (graph.isValid(output.id)) keep(versions.producerOf(output.id, output.version));
+  }
+
+  // A kept pass needs the producer of each version it reads, and of the version
+  // it writes over (the write may keep part of it: load ops, partial writes).
+  while (!needed.empty()) {
+    const PassId pass = needed.back();
+    needed.pop_back();
+    for (const ResourceAccess& a : graph.accessesOf(pass)) {
+      if (graph.isValid(a.resource)) keep(versions.producerOf(a.resource, a.version));
+    }
+  }
+}
+
+}  // namespace sg::graph

@@ -1,0 +1,55 @@
+#include <shadelgraph/graph/dependencies.hpp>
+
+namespace sg::graph {
+namespace {
+
+// Calls edge(from, to, resource, dstStages) for every dependency of a kept pass.
+template <class Edge>
+void forEachDependency(const RenderGraph& graph, const VersionTable& versions, const std::vector<bool>& culled,
+                       Edge&& edge) {
+  const auto kept = [&](PassId p) { return p.valid() && (culled.empty() || !culled[p.index]); };
+  for (uint32_t p = 0; p < graph.passCount(); ++p) {
+    const PassId pass{p};
+    if (!kept(pass)) continue;
+    for (const ResourceAccess& a : graph.accessesOf(pass)) {
+      const uint32_t slot = graph.isValid(a.resource) ? versions.slot(a.resource, a.version) : kInvalidIndex;
+      if (slot == kInvalidIndex) continue;
+      // Read after write, or write after write: after the version's producer.
+      const PassId producer = versions.producer[slot];
+      if (kept(producer) && producer != pass) edge(producer, pass, a);
+      // Write after read: after everyone reading the version written over.
+      if (!a.write) continue;
+      for (const PassId reader : versions.readersOf(slot)) {
+        if (kept(reader) && reader != pass) edge(reader, pass, a);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+DependencyGraph buildDependencies(const RenderGraph& graph, const VersionTable& versions,
+                                  const std::vector<bool>& culled) {
+  DependencyGraph deps;
+  buildDependencies(graph, versions, culled, deps);
+  return deps;
+}
+
+void buildDependencies(const RenderGraph& graph, const VersionTable& versions, const std::vector<bool>& culled,
+                       DependencyGraph& deps) {
+  // Two walks: count each source's edges, then place them (grouped by source,
+  // each source's in declaration order).
+  const uint32_t passCount = graph.passCount();
+  deps.firstEdge.assign(passCount + 1, 0);
+  forEachDependency(graph, versions, culled,
+                    [&](PassId from, PassId, const ResourceAccess&) { ++deps.firstEdge[from.index + 1]; });
+  for (uint32_t p = 0; p < passCount; ++p) deps.firstEdge[p + 1] += deps.firstEdge[p];
+  deps.edges.resize(deps.firstEdge[passCount]);
+  forEachDependency(graph, versions, culled, [&](PassId from, PassId to, const ResourceAccess& a) {
+    deps.edges[deps.firstEdge[from.index]++] = {from, to, a.resource, a.stages};
+  });
+  for (uint32_t p = passCount; p > 0; --p) deps.firstEdge[p] = deps.firstEdge[p - 1];
+  deps.firstEdge[0] = 0;
+}
+
+}  // namespace sg::graph

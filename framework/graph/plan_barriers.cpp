@@ -1,0 +1,373 @@
+#include <shadelgraph/graph/plan_barriers.hpp>
+
+#include <algorithm>
+#include <array>
+
+namespace sg::graph {
+namespace {
+
+// What one kept pass does to one resource (its accesses merged).
+struct Use {
+  PassId pass;
+  QueueClass queue = QueueClass::Graphics;
+  PipelineStage stages = PipelineStage::None;
+  AccessFlag access = AccessFlag::None;
+  Layout layout = Layout::Undefined;
+  bool write = false;
+};  // 12 bytes
+
+// Uses grouped by resource, each group in execution order.
+struct UseTable {
+  std::vector<uint32_t> first;  // per resource, plus one
+  std::vector<Use> uses;
+
+  std::span<const Use> of(uint32_t r) const { return {uses.data() + first[r], uses.data() + first[r + 1]}; }
+};
+
+UseTable collectUses(const RenderGraph& graph, std::span<const PassId> order, uint32_t resourceCount) {
+  // Two walks over the kept passes: count each resource's uses (one per pass),
+  // then place them, merging a pass's accesses to the same resource.
+  UseTable table;
+  table.first.assign(resourceCount + 1, 0);
+  std::vector<uint32_t> lastPass(resourceCount, kInvalidIndex);
+  for (const PassId p : order) {
+    for (const ResourceAccess& a : graph.accessesOf(p)) {
+      if (lastPass[a.resource.index] == p.index) continue;
+      lastPass[a.resource.index] = p.index;
+      ++table.first[a.resource.index + 1];
+    }
+  }
+  for (uint32_t r = 0; r < resourceCount; ++r) table.first[r + 1] += table.first[r];
+  table.uses.resize(table.first[resourceCount]);
+  std::vector<uint32_t> cursor(table.first.begin(), table.first.end() - 1);
+  for (const PassId p : order) {
+    const QueueClass queue = graph.pass(p).queue;
+    for (const ResourceAccess& a : graph.accessesOf(p)) {
+      uint32_t& next = cursor[a.resource.index];
+      if (next > table.first[a.resource.index] && table.uses[next - 1].pass == p) {
+        Use& use = table.uses[next - 1];
+        use.stages |= a.stages;
+        use.access |= a.accessFlags;
+        use.write = use.write || a.write;
+        if (const auto merged = mergeLayouts(use.layout, a.layout)) use.layout = *merged;
+        continue;
+      }
+      table.uses[next++] = {p, queue, a.stages, a.accessFlags, a.layout, a.write};
+    }
+  }
+  return table;
+}
+
+// Barriers as they are found (resource by resource), before grouping by pass.
+struct EmittedBarriers {
+  struct Entry {
+    uint32_t slot;  // pass * 2, + 1 for "after the pass"
+    Barrier barrier;
+  };
+  std::vector<Entry> entries;
+  std::vector<FinalBarrier> finals;
+  std::vector<Dependency> handoffs;
+
+  void add(PassId pass, bool after, const Barrier& b) { entries.push_back({pass.index * 2 + (after ? 1 : 0), b}); }
+};
+
+// What a queue already guarantees about the current version of a resource.
+struct QueueSync {
+  PipelineStage waitStages = PipelineStage::None;  // reads and barrier destinations a later write/transition waits for
+  PipelineStage visibleStages = PipelineStage::None;
+  AccessFlag visibleAccess = AccessFlag::None;
+  bool allVisible = false;    // the last write arrived through a semaphore
+  bool writeChained = false;  // a barrier here already waited for the last write; later ones chain through waitStages
+  bool transitioned = false;  // the layout changed here since the last write
+};
+
+// Walks one resource's uses and emits its barriers.
+class ResourceBarrierPlanner {
+ public:
+  ResourceBarrierPlanner(ResourceId id, const PlannedResource& resource, std::span<const Use> uses,
+                         std::span<const PassId> order, EmittedBarriers& out)
+      : id_(id), resource_(resource), uses_(uses), order_(order), out_(out) {
+    image_ = resource.desc.type == ResourceType::Image;
+    if (isTransient(resource.kind)) return;
+    layout_ = resource.initialState.layout;
+    // The initial state stands for work before the frame on whichever queue
+    // uses the resource first (cross-frame, cross-queue sync is the executor's).
+    const AccessFlag writes = writeBits(resource.initialState.access);
+    if (any(writes)) {
+      written_ = true;
+      writeExternal_ = true;
+      writeStages_ = resource.initialState.stages;
+      writeAccess_ = writes;
+    } else {
+      externalWait_ = resource.initialState.stages;
+    }
+  }
+
+  void run(PipelineStage aliasedStages, AccessFlag aliasedWrites, bool aliased) {
+    for (std::size_t i = 0; i < uses_.size();) {
+      if (uses_[i].write) {
+        write(uses_[i], i == 0 && aliased, aliasedStages, aliasedWrites);
+        ++i;
+        continue;
+      }
+      std::size_t end = i;
+      QueueMask queues = QueueMask::None;
+      while (end < uses_.size() && !uses_[end].write) queues |= toMask(uses_[end++].queue);
+      if (queueCount(queues) > 1) {
+        sharedReads(i, end);
+      } else {
+        for (std::size_t k = i; k < end; ++k) read(k, end);
+      }
+      i = end;
+    }
+    if (!isTransient(resource_.kind)) finish();
+  }
+
+ private:
+  bool sameQueueWrite(QueueClass q) const { return written_ && (writeExternal_ || writeQueue_ == q); }
+
+  bool crossQueuePrior(QueueClass q) const {
+    if (written_ && !sameQueueWrite(q)) return true;
+    for (uint32_t other = 0; other < kQueueClassCount; ++other) {
+      if (other != queueIndex(q) && any(queues_[other].waitStages)) return true;
+    }
+    return false;
+  }
+
+  // The source scope every barrier on queue q needs: what already ran on q,
+  // plus the last write unless an earlier barrier on q chained after it.
+  Barrier sourceOn(QueueClass q) const {
+    Barrier b{.resource = id_};
+    b.srcStages = queues_[queueIndex(q)].waitStages | externalWait_;
+    if (sameQueueWrite(q) && !queues_[queueIndex(q)].writeChained) {
+      b.srcStages |= writeStages_;
+      b.srcAccess = writeAccess_;
+    }
+    return b;
+  }
+
+  void setLayouts(Barrier& b, Layout newLayout) const {
+    if (!image_) return;
+    b.oldLayout = layout_;
+    b.newLayout = newLayout;
+    b.discard = b.discard || layout_ == Layout::Undefined;
+  }
+
+  void emit(PassId pass, bool after, const Barrier& b, QueueClass q) {
+    out_.add(pass, after, b);
+    QueueSync& qs = queues_[queueIndex(q)];
+    if (!any(b.dstStages)) return;  // nothing on this queue can chain through it
+    qs.waitStages |= b.dstStages;
+    if (sameQueueWrite(q)) qs.writeChained = true;
+  }
+
+  void write(const Use& u, bool aliased, PipelineStage aliasedStages, AccessFlag aliasedWrites) {
+    Barrier b = sourceOn(u.queue);
+    b.dstStages = u.stages;
+    b.dstAccess = u.access;
+    const bool layoutChange = image_ && layout_ != u.layout;
+    if (aliased) {
+      // Taking over memory: after every access of the previous occupants (same queue).
+      b.srcStages |= aliasedStages;
+      b.srcAccess |= aliasedWrites;
+      b.discard = true;
+    }
+    if (layoutChange && crossQueuePrior(u.queue)) b.srcStages |= u.stages;  // chain with the semaphore wait
+    setLayouts(b, u.layout);
+    if (any(b.srcStages) || layoutChange || aliased) out_.add(u.pass, false, b);
+
+    layout_ = u.layout;
+    written_ = true;
+    writeExternal_ = false;
+    writeQueue_ = u.queue;
+    writeStages_ = u.stages;
+    writeAccess_ = writeBits(u.access);
+    externalWait_ = PipelineStage::None;
+    for (uint32_t q = 0; q < kQueueClassCount; ++q) {
+      queues_[q] = QueueSync{};
+      queues_[q].allVisible = q != queueIndex(u.queue);  // other queues get it through semaphores
+    }
+  }
+
+  // A read of a version only one queue reads.
+  void read(std::size_t i, std::size_t segmentEnd) {
+    const Use& u = uses_[i];
+    QueueSync& qs = queues_[queueIndex(u.queue)];
+    const bool layoutChange = image_ && layout_ != u.layout;
+    const bool pendingWrite = (sameQueueWrite(u.queue) && any(writeAccess_)) || qs.transitioned;
+    const bool covered = qs.allVisible || (contains(qs.visibleStages, u.stages) && contains(qs.visibleAccess, u.access));
+    if (!layoutChange && (!pendingWrite || covered)) {
+      qs.waitStages |= u.stages;
+      return;
+    }
+    Barrier b = sourceOn(u.queue);
+    // Later readers in the same layout share this barrier.
+    b.dstStages = u.stages;
+    b.dstAccess = u.access;
+    for (std::size_t k = i + 1; k < segmentEnd && (!image_ || uses_[k].layout == u.layout); ++k) {
+      b.dstStages |= uses_[k].stages;
+      b.dstAccess |= uses_[k].access;
+    }
+    if (layoutChange && crossQueuePrior(u.queue)) b.srcStages |= u.stages;  // chain with the semaphore wait
+    setLayouts(b, u.layout);
+    emit(u.pass, false, b, u.queue);
+    if (layoutChange) {
+      layout_ = u.layout;
+      qs.visibleStages = b.dstStages;
+      qs.visibleAccess = b.dstAccess;
+      qs.allVisible = false;
+      qs.transitioned = true;
+    } else {
+      qs.visibleStages |= b.dstStages;
+      qs.visibleAccess |= b.dstAccess;
+    }
+    qs.waitStages |= u.stages;
+  }
+
+  // A version read on several queues: one layout for all readers, one transition.
+  void sharedReads(std::size_t begin, std::size_t end) {
+    Layout readLayout = uses_[begin].layout;
+    for (std::size_t k = begin + 1; k < end && image_; ++k) {
+      const auto merged = mergeLayouts(readLayout, uses_[k].layout);
+      readLayout = merged ? *merged : Layout::General;
+    }
+    const bool produced = begin > 0;  // else the version is the frame-start content
+    const Use& host = produced ? uses_[begin - 1] : uses_[begin];
+    const QueueClass q = host.queue;
+    const bool layoutChange = image_ && layout_ != readLayout;
+
+    Barrier b = produced ? Barrier{.resource = id_, .srcStages = writeStages_, .srcAccess = writeAccess_}
+                         : sourceOn(q);
+    for (std::size_t k = begin; k < end; ++k) {
+      if (uses_[k].queue != q) continue;
+      b.dstStages |= uses_[k].stages;
+      b.dstAccess |= uses_[k].access;
+    }
+    setLayouts(b, readLayout);
+    const bool needed = layoutChange || (produced ? any(b.dstStages) : any(b.srcAccess));
+    if (needed) {
+      emit(host.pass, produced, b, q);
+      QueueSync& qs = queues_[queueIndex(q)];
+      qs.visibleStages = b.dstStages;
+      qs.visibleAccess = b.dstAccess;
+      qs.transitioned = layoutChange;
+    }
+    // Readers on other queues of a frame-start version wait for the first
+    // reader's transition; a produced version's signal already covers it.
+    if (layoutChange && !produced) {
+      for (std::size_t k = begin; k < end; ++k) {
+        if (uses_[k].queue != q) out_.handoffs.push_back({host.pass, uses_[k].pass, id_, uses_[k].stages});
+      }
+    }
+    layout_ = readLayout;
+    for (std::size_t k = begin; k < end; ++k) queues_[queueIndex(uses_[k].queue)].waitStages |= uses_[k].stages;
+  }
+
+  void finish() {
+    const ResourceState& final = resource_.finalState;
+    if (uses_.empty()) {
+      if (!image_ || layout_ == final.layout) return;
+      Barrier b{.resource = id_,
+                .srcStages = resource_.initialState.stages,
+                .dstStages = final.stages,
+                .srcAccess = writeBits(resource_.initialState.access),
+                .dstAccess = final.access};
+      setLayouts(b, final.layout);
+      out_.finals.push_back({b, order_.empty() ? PassId{} : order_.back(), kInvalidIndex});
+      return;
+    }
+    const Use& host = uses_.back();
+    Barrier b = sourceOn(host.queue);
+    b.srcStages |= host.stages;
+    b.dstStages = final.stages;
+    b.dstAccess = final.access;
+    const bool layoutChange = image_ && layout_ != final.layout;
+    const bool pendingWrite = any(b.srcAccess);
+    const bool nextWrites = any(writeBits(final.access));
+    if (!layoutChange && !(any(final.stages) && (pendingWrite || nextWrites))) return;
+    setLayouts(b, final.layout);
+    out_.finals.push_back({b, host.pass, kInvalidIndex});
+    // Last readers on other queues must finish before the host's queue changes the layout.
+    if (host.write) return;
+    for (auto it = uses_.rbegin(); it != uses_.rend() && !it->write; ++it) {
+      if (it->queue != host.queue) out_.handoffs.push_back({it->pass, host.pass, id_, host.stages});
+    }
+  }
+
+  ResourceId id_;
+  const PlannedResource& resource_;
+  std::span<const Use> uses_;
+  std::span<const PassId> order_;
+  EmittedBarriers& out_;
+
+  bool image_ = false;
+  Layout layout_ = Layout::Undefined;
+  bool written_ = false;
+  bool writeExternal_ = false;  // the "write" is the initial state: same queue as anyone
+  QueueClass writeQueue_ = QueueClass::Graphics;
+  PipelineStage writeStages_ = PipelineStage::None;
+  AccessFlag writeAccess_ = AccessFlag::None;
+  PipelineStage externalWait_ = PipelineStage::None;  // read-only initial state's stages
+  std::array<QueueSync, kQueueClassCount> queues_{};
+};
+
+}  // namespace
+
+BarrierPlan planBarriers(const RenderGraph& graph, std::span<const PassId> order,
+                         std::span<const PlannedResource> resources, std::span<const ResourceId> aliases) {
+  BarrierPlan plan;
+  planBarriers(graph, order, resources, aliases, plan);
+  return plan;
+}
+
+void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::span<const PlannedResource> resources,
+                  std::span<const ResourceId> aliases, BarrierPlan& plan) {
+  const auto resourceCount = static_cast<uint32_t>(resources.size());
+  const UseTable uses = collectUses(graph, order, resourceCount);
+
+  // Every stage and write of each resource: what a transient taking over its memory waits for.
+  std::vector<PipelineStage> usedStages(resourceCount, PipelineStage::None);
+  std::vector<AccessFlag> writes(resourceCount, AccessFlag::None);
+  for (uint32_t r = 0; r < resourceCount; ++r) {
+    for (const Use& u : uses.of(r)) {
+      usedStages[r] |= u.stages;
+      writes[r] |= writeBits(u.access);
+    }
+  }
+
+  EmittedBarriers emitted;
+  emitted.entries.reserve(order.size() * 2);
+  for (uint32_t r = 0; r < resourceCount; ++r) {
+    const PlannedResource& resource = resources[r];
+    PipelineStage aliasedStages = PipelineStage::None;
+    AccessFlag aliasedWrites = AccessFlag::None;
+    bool aliased = false;
+    for (const ResourceId other : aliases.subspan(resource.aliasesWith.first, resource.aliasesWith.count)) {
+      if (resources[other.index].lastUse >= resource.firstUse) continue;  // a later occupant
+      aliased = true;
+      aliasedStages |= usedStages[other.index];
+      aliasedWrites |= writes[other.index];
+    }
+    ResourceBarrierPlanner(ResourceId{r}, resource, uses.of(r), order, emitted)
+        .run(aliasedStages, aliasedWrites, aliased);
+  }
+
+  // Group by pass (counting sort keeps resource order within a pass).
+  const uint32_t slots = graph.passCount() * 2;
+  std::vector<uint32_t> first(slots + 1, 0);
+  for (const EmittedBarriers::Entry& e : emitted.entries) ++first[e.slot + 1];
+  for (uint32_t s = 0; s < slots; ++s) first[s + 1] += first[s];
+  plan.barriers.resize(emitted.entries.size());
+  std::vector<uint32_t> cursor(first.begin(), first.end() - 1);
+  for (const EmittedBarriers::Entry& e : emitted.entries) plan.barriers[cursor[e.slot]++] = e.barrier;
+  plan.before.resize(graph.passCount());
+  plan.after.resize(graph.passCount());
+  for (uint32_t p = 0; p < graph.passCount(); ++p) {
+    plan.before[p] = {first[2 * p], first[2 * p + 1] - first[2 * p]};
+    plan.after[p] = {first[2 * p + 1], first[2 * p + 2] - first[2 * p + 1]};
+  }
+  plan.finals = std::move(emitted.finals);
+  plan.handoffs = std::move(emitted.handoffs);
+}
+
+}  // namespace sg::graph

@@ -1,0 +1,52 @@
+#pragma once
+
+#include <shadelgraph/graph/compiled_plan.hpp>
+#include <shadelgraph/graph/dependencies.hpp>
+#include <shadelgraph/graph/render_graph.hpp>
+
+#include <span>
+#include <vector>
+
+namespace sg::graph {
+
+struct BarrierPlan {
+  std::vector<Barrier> barriers;  // grouped by pass: each pass's before, then its after
+  std::vector<Range> before;      // per pass, into `barriers`
+  std::vector<Range> after;       // per pass, into `barriers`
+  std::vector<FinalBarrier> finals;  // `batch` left unset: queues are assigned later
+  // Extra cross-queue orderings that layout hand-offs rely on; assignQueues()
+  // turns them into semaphore waits like ordinary dependencies.
+  std::vector<Dependency> handoffs;
+
+  std::span<const Barrier> beforePass(PassId p) const { return slice(barriers, before[p.index]); }
+  std::span<const Barrier> afterPass(PassId p) const { return slice(barriers, after[p.index]); }
+};
+
+// The barriers of every kept pass, walking each resource's uses in `order`.
+//
+// - Same queue: the narrowest stages and accesses. read -> read with the same
+//   layout: none; write -> write: one; write -> read: one, and consecutive
+//   readers with the same layout share it (its destination covers all of them);
+//   read -> write: execution only (srcAccess None) once the write was made available.
+// - Across queues the semaphore wait carries the memory dependency; a barrier
+//   only transitions the layout, with srcStages = its own stages so it chains
+//   with the wait.
+// - A version read on more than one queue is read in one layout (General if the
+//   readers disagree, DepthReadOnly for depth test + sampling). The transition
+//   happens once, on the producer's queue right after the producer
+//   (barriersAfter), so no two queues ever transition the same image. For a
+//   version present at frame start, the first reader transitions it and the
+//   other queues' readers wait for it (a hand-off).
+// - A transient that takes over aliased memory gets a discard barrier whose
+//   source covers every stage of the previous occupants on its queue.
+// - External resources start in their initial state; final barriers leave them
+//   in their final state, after their last use (hand-offs make the other
+//   queues' last readers finish first).
+// `aliases` is the storage the resources' aliasesWith ranges point into.
+BarrierPlan planBarriers(const RenderGraph& graph, std::span<const PassId> order,
+                         std::span<const PlannedResource> resources, std::span<const ResourceId> aliases);
+// The same into `plan`, reusing its memory.
+void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::span<const PlannedResource> resources,
+                  std::span<const ResourceId> aliases, BarrierPlan& plan);
+
+}  // namespace sg::graph

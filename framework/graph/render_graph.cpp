@@ -1,0 +1,116 @@
+#include <shadelgraph/graph/render_graph.hpp>
+
+#include <utility>
+
+namespace sg::graph {
+
+RenderGraph::RenderGraph() : declaration_(std::make_unique<GraphDeclaration>()) {}
+
+ResourceHandle RenderGraph::add(ResourceDecl decl) {
+  std::vector<ResourceDecl>& resources = declaration_->resources;
+  resources.push_back(std::move(decl));
+  declaration_->versionCounts.push_back(1);
+  return {ResourceId{static_cast<uint32_t>(resources.size() - 1)}, 0};
+}
+
+ResourceHandle RenderGraph::createImage(std::string name, const ImageDesc& desc) {
+  ResourceDecl decl{.kind = ResourceKind::TransientImage, .type = ResourceType::Image};
+  decl.name = std::move(name);
+  decl.image = desc;
+  return add(std::move(decl));
+}
+
+ResourceHandle RenderGraph::createBuffer(std::string name, const BufferDesc& desc) {
+  ResourceDecl decl{.kind = ResourceKind::TransientBuffer, .type = ResourceType::Buffer};
+  decl.name = std::move(name);
+  decl.buffer = desc;
+  return add(std::move(decl));
+}
+
+ResourceHandle RenderGraph::importImage(std::string name, const ImageDesc& desc, ImportedState initial,
+                                        FinalState final, ImportMode mode) {
+  ResourceDecl decl{.kind = ResourceKind::Imported, .type = ResourceType::Image};
+  decl.name = std::move(name);
+  decl.image = desc;
+  decl.initialState = initial;
+  decl.finalState = final;
+  decl.readOnly = mode == ImportMode::ReadOnly;
+  return add(std::move(decl));
+}
+
+ResourceHandle RenderGraph::importBuffer(std::string name, const BufferDesc& desc, ImportedState initial,
+                                         FinalState final, ImportMode mode) {
+  ResourceDecl decl{.kind = ResourceKind::Imported, .type = ResourceType::Buffer};
+  decl.name = std::move(name);
+  decl.buffer = desc;
+  decl.initialState = initial;
+  decl.finalState = final;
+  decl.readOnly = mode == ImportMode::ReadOnly;
+  return add(std::move(decl));
+}
+
+ResourceHandle RenderGraph::importPersistentImage(std::string name, const ImageDesc& desc, ResourceState resting) {
+  ResourceDecl decl{.kind = ResourceKind::Persistent, .type = ResourceType::Image};
+  decl.name = std::move(name);
+  decl.image = desc;
+  decl.initialState = resting;
+  decl.finalState = resting;
+  return add(std::move(decl));
+}
+
+ResourceHandle RenderGraph::importPersistentBuffer(std::string name, const BufferDesc& desc, ResourceState resting) {
+  ResourceDecl decl{.kind = ResourceKind::Persistent, .type = ResourceType::Buffer};
+  decl.name = std::move(name);
+  decl.buffer = desc;
+  decl.initialState = resting;
+  decl.finalState = resting;
+  return add(std::move(decl));
+}
+
+ResourceHandle RenderGraph::history(ResourceHandle persistent) {
+  if (!isValid(persistent.id)) return {};
+  std::vector<ResourceDecl>& resources = declaration_->resources;
+  if (resources[persistent.id.index].history.valid()) return {resources[persistent.id.index].history, 0};
+  const ResourceDecl& source = resources[persistent.id.index];
+  ResourceDecl decl{.kind = ResourceKind::History, .type = source.type};
+  decl.name = source.name + ".history";
+  decl.image = source.image;
+  decl.buffer = source.buffer;
+  // Last frame's copy was left in the persistent resource's final state, and
+  // becomes next frame's persistent resource: it must be left in its initial state.
+  decl.initialState = source.finalState;
+  decl.finalState = source.initialState;
+  decl.readOnly = true;
+  decl.historyOf = persistent.id;
+  const ResourceHandle handle = add(std::move(decl));  // invalidates `source`
+  resources[persistent.id.index].history = handle.id;
+  return handle;
+}
+
+Pass& RenderGraph::addPass(std::string name, QueueClass queue) {
+  return addPass(std::move(name), queue, defaultPassKind(queue));
+}
+
+Pass& RenderGraph::addPass(std::string name, QueueClass queue, PassKind kind) {
+  const PassId id{passCount()};
+  const auto end = static_cast<uint32_t>(declaration_->accesses.size());
+  declaration_->passes.push_back({.accesses = {end, 0}, .queue = queue, .kind = kind});
+  declaration_->passNames.push_back(std::move(name));
+  declaration_->callbacks.emplace_back();
+  return builders_.emplace_back(*declaration_, id);
+}
+
+void RenderGraph::markOutput(ResourceHandle version) { declaration_->outputs.push_back(version); }
+
+void RenderGraph::clear() {
+  declaration_->resources.clear();
+  declaration_->passes.clear();
+  declaration_->passNames.clear();
+  declaration_->callbacks.clear();
+  declaration_->accesses.clear();
+  declaration_->outputs.clear();
+  declaration_->versionCounts.clear();
+  builders_.clear();
+}
+
+}  // namespace sg::graph

@@ -1,0 +1,47 @@
+#include <shadelgraph/graph/resource_desc.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sg::graph {
+namespace {
+
+uint32_t scaleExtent(uint32_t extent, float scale) {
+  if (extent == 0 || !(scale > 0.0f)) return 0;
+  const double scaled = std::floor(static_cast<double>(extent) * static_cast<double>(scale));
+  return static_cast<uint32_t>(std::max(1.0, scaled));
+}
+
+}  // namespace
+
+ResolvedImageDesc resolveImageDesc(const ImageDesc& desc, uint32_t outputWidth, uint32_t outputHeight) {
+  ResolvedImageDesc out;
+  out.format = desc.format;
+  if (desc.size.mode == Size::Mode::Absolute) {
+    out.width = desc.size.width;
+    out.height = desc.size.height;
+  } else {
+    out.width = scaleExtent(outputWidth, desc.size.scaleX);
+    out.height = scaleExtent(outputHeight, desc.size.scaleY);
+  }
+  out.depth = desc.depth;
+  out.layers = desc.layers;
+  out.mipLevels = desc.mipLevels;
+  out.samples = desc.samples;
+  return out;
+}
+
+std::string_view toString(ResourceKind kind) {
+  switch (kind) {
+    case ResourceKind::TransientImage: return "TransientImage";
+    case ResourceKind::TransientBuffer: return "TransientBuffer";
+    case ResourceKind::Imported: return "Imported";
+    case ResourceKind::Persistent: return "Persistent";
+    case ResourceKind::History: return "History";
+  }
+  return "?";
+}
+
+std::string_view toString(ResourceType type) { return type == ResourceType::Image ? "Image" : "Buffer"; }
+
+}  // namespace sg::graph

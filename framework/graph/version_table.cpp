@@ -1,0 +1,61 @@
+#include <shadelgraph/graph/version_table.hpp>
+
+#include <algorithm>
+
+namespace sg::graph {
+
+VersionTable indexVersions(const RenderGraph& graph) {
+  VersionTable table;
+  indexVersions(graph, table);
+  return table;
+}
+
+void indexVersions(const RenderGraph& graph, VersionTable& table) {
+  const uint32_t resourceCount = graph.resourceCount();
+  const uint32_t passCount = graph.passCount();
+  // Slots: one per version the declaration references (counted while declaring).
+  // Versions of forged handles are left out; validate() reports them.
+  const std::vector<uint32_t>& versionCounts = graph.declaration().versionCounts;
+  const auto indexed = [&](const ResourceAccess& a) {
+    return graph.isValid(a.resource) && a.version + (a.write ? 2u : 1u) <= versionCounts[a.resource.index];
+  };
+  table.firstSlot.resize(resourceCount + 1);
+  table.firstSlot[0] = 0;
+  for (uint32_t r = 0; r < resourceCount; ++r) table.firstSlot[r + 1] = table.firstSlot[r] + versionCounts[r];
+  const uint32_t slots = table.firstSlot[resourceCount];
+
+  // Producers (a second writer of the same version is branching) and reader counts.
+  table.producer.assign(slots, PassId{});
+  table.firstReader.assign(slots + 1, 0);
+  table.branches.clear();
+  for (uint32_t p = 0; p < passCount; ++p) {
+    for (const ResourceAccess& a : graph.accessesOf(PassId{p})) {
+      if (!indexed(a)) continue;
+      const uint32_t slot = table.firstSlot[a.resource.index] + a.version;
+      if (!a.write) {
+        ++table.firstReader[slot + 1];
+        continue;
+      }
+      PassId& producer = table.producer[slot + 1];
+      if (!producer.valid()) {
+        producer = PassId{p};
+      } else if (producer.index != p) {
+        table.branches.push_back({slot, PassId{p}});
+      }
+    }
+  }
+  for (uint32_t s = 0; s < slots; ++s) table.firstReader[s + 1] += table.firstReader[s];
+
+  // Readers (counting sort: firstReader[s] serves as the cursor, then is restored).
+  table.readers.resize(table.firstReader[slots]);
+  for (uint32_t p = 0; p < passCount; ++p) {
+    for (const ResourceAccess& a : graph.accessesOf(PassId{p})) {
+      if (a.write || !indexed(a)) continue;
+      table.readers[table.firstReader[table.firstSlot[a.resource.index] + a.version]++] = PassId{p};
+    }
+  }
+  for (uint32_t s = slots; s > 0; --s) table.firstReader[s] = table.firstReader[s - 1];
+  table.firstReader[0] = 0;
+}
+
+}  // namespace sg::graph

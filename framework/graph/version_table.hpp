@@ -1,0 +1,53 @@
+#pragma once
+
+#include <shadelgraph/graph/handles.hpp>
+#include <shadelgraph/graph/render_graph.hpp>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace sg::graph {
+
+// Who produces and who reads each version of each resource, over all declared
+// passes (culled or not). Every compile step starts from this index.
+struct VersionTable {
+  // A pass writing over a version somebody else already wrote over (branching).
+  struct BranchingWrite {
+    uint32_t slot = kInvalidIndex;  // the version written over
+    PassId pass;
+  };
+
+  // Versions of resource r live in slots [firstSlot[r], firstSlot[r + 1]).
+  std::vector<uint32_t> firstSlot;
+  // Per slot: the pass producing that version; invalid for version 0 and for
+  // versions no pass writes.
+  std::vector<PassId> producer;
+  // Readers of slot s are readers[firstReader[s] .. firstReader[s + 1]). A pass
+  // reading a version twice is listed twice; a pass that also writes over the
+  // version (read-modify-write) is listed too.
+  std::vector<uint32_t> firstReader;
+  std::vector<PassId> readers;
+  std::vector<BranchingWrite> branches;
+
+  uint32_t versionCount(ResourceId r) const { return firstSlot[r.index + 1] - firstSlot[r.index]; }
+  // kInvalidIndex if the version was never referenced.
+  uint32_t slot(ResourceId r, uint32_t version) const {
+    return version < versionCount(r) ? firstSlot[r.index] + version : kInvalidIndex;
+  }
+  PassId producerOf(ResourceId r, uint32_t version) const {
+    const uint32_t s = slot(r, version);
+    return s == kInvalidIndex ? PassId{} : producer[s];
+  }
+  // The pass writing over version `version` (the producer of version + 1).
+  PassId overwriterOf(ResourceId r, uint32_t version) const { return producerOf(r, version + 1); }
+  std::span<const PassId> readersOf(uint32_t slot) const {
+    return {readers.data() + firstReader[slot], readers.data() + firstReader[slot + 1]};
+  }
+};
+
+VersionTable indexVersions(const RenderGraph& graph);
+// The same into `table`, reusing its memory.
+void indexVersions(const RenderGraph& graph, VersionTable& table);
+
+}  // namespace sg::graph

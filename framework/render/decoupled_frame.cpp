@@ -1,0 +1,58 @@
+#include <shadelgraph/render/decoupled_frame.hpp>
+
+#include <vector>
+
+#include <shadelgraph/gpu/pass_context.hpp>
+
+namespace sg::render {
+
+gpu::PipelineLayoutDesc decoupledLayout(std::initializer_list<uint32_t> bindings, bool layerImageStorage,
+                                        uint32_t pushConstantBytes,
+                                        std::initializer_list<VkDescriptorSetLayout> extraSets) {
+  gpu::PipelineLayoutDesc layout{.extraSets = extraSets, .pushConstantBytes = pushConstantBytes};
+  for (uint32_t b : bindings) {
+    VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    if (b == kBindFrame || b == kBindParams) type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    if (b == kBindLayerImage)
+      type = layerImageStorage ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    layout.bindings.push_back({b, type});
+  }
+  return layout;
+}
+
+void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const DecoupledFrame& f,
+                   std::initializer_list<uint32_t> bindings) {
+  std::vector<gpu::DescriptorWrite> writes;
+  for (uint32_t b : bindings) {
+    auto buffer = [&](VkBuffer vk) { writes.push_back({b, gpu::BufferBinding{vk}}); };
+    switch (b) {
+      case kBindFrame: buffer(f.view.frameUniforms.handle()); break;
+      case kBindParams: buffer(f.params.handle()); break;
+      case kBindObjects: buffer(f.objects.handle()); break;
+      case kBindShadelInstances: buffer(f.shadelInstances.handle()); break;
+      case kBindLevelRects: buffer(f.levelRects.handle()); break;
+      case kBindRemap: buffer(ctx.buffer(f.remap).handle()); break;
+      case kBindOwnedEntries: buffer(f.ownedEntries.handle()); break;
+      case kBindCounters: buffer(ctx.buffer(f.counters).handle()); break;
+      case kBindWork: buffer(ctx.buffer(f.work).handle()); break;
+      case kBindArgs: buffer(ctx.buffer(f.args).handle()); break;
+      case kBindIdMaps: buffer(f.idMaps.handle()); break;
+      case kBindVertices: buffer(f.view.scene.vertexBuffer()); break;
+      case kBindIndices: buffer(f.view.scene.indexBuffer()); break;
+      case kBindLayerImage: {
+        const auto& pipelineBindings = pipeline.bindings();
+        bool storage = false;
+        for (const auto& pb : pipelineBindings)
+          if (pb.binding == b) storage = pb.type == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+        writes.push_back({b, gpu::ImageBinding{ctx.image(f.layerImage).view(),
+                                               storage ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                               storage ? VK_NULL_HANDLE : ctx.device().nearestSampler()}});
+        break;
+      }
+    }
+  }
+  vkCmdBindPipeline(ctx.cmd(), pipeline.bindPoint(), pipeline.handle());
+  ctx.descriptors().bind(ctx.cmd(), pipeline, writes);
+}
+
+}  // namespace sg::render

@@ -1,0 +1,50 @@
+#pragma once
+// What the decoupled-shading passes of one frame share: the static tables the
+// host uploaded (objects, shadel-space rectangles, owned remap entries,
+// triangle-ID maps), the per-frame parameters, and the graph resources the
+// passes hand to each other. The decoupled recipe (plugins/decoupled) fills it.
+#include <initializer_list>
+#include <span>
+
+#include <shadelgraph/gpu/buffer.hpp>
+#include <shadelgraph/gpu/pipeline.hpp>
+#include <shadelgraph/graph/handles.hpp>
+#include <shadelgraph/render/scene_view.hpp>
+
+namespace sg {
+class PassContext;
+}
+
+namespace sg::render {
+
+// Bindings of set 0 (plugins/decoupled/shaders/decoupled.glsl).
+inline constexpr uint32_t kBindFrame = 0, kBindParams = 1, kBindObjects = 2, kBindShadelInstances = 3,
+                          kBindLevelRects = 4, kBindRemap = 5, kBindOwnedEntries = 6, kBindCounters = 7,
+                          kBindWork = 8, kBindArgs = 9, kBindIdMaps = 10, kBindVertices = 11, kBindIndices = 12,
+                          kBindLayerImage = 13;
+
+struct DecoupledFrame {
+  SceneView view;  // view.draws: the decoupled objects' draws, in object order
+  const gpu::Buffer& params;
+  const gpu::Buffer& objects;
+  const gpu::Buffer& shadelInstances;
+  const gpu::Buffer& levelRects;
+  const gpu::Buffer& ownedEntries;
+  const gpu::Buffer& idMaps;
+  uint32_t ownedEntryCount = 0;
+  uint32_t objectCount = 0;
+  uint32_t layerCount = 1;
+  int filter = 2;  // composite: 0 point, 1 bilinear, 2 trilinear
+  graph::ResourceHandle remap, counters, work, args, layerImage;
+};
+
+// The set-0 layout of a decoupled pass using `bindings`; the layer image is a
+// storage image when `layerImageStorage`, else sampled.
+gpu::PipelineLayoutDesc decoupledLayout(std::initializer_list<uint32_t> bindings, bool layerImageStorage = false,
+                                        uint32_t pushConstantBytes = 0,
+                                        std::initializer_list<VkDescriptorSetLayout> extraSets = {});
+// Binds `pipeline` with the descriptors of `bindings` from the frame.
+void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const DecoupledFrame& frame,
+                   std::initializer_list<uint32_t> bindings);
+
+}  // namespace sg::render

@@ -1,0 +1,55 @@
+#include <algorithm>
+#include <cmath>
+
+#include <shadelgraph/shadel/level_selection.hpp>
+
+namespace sg::shadel {
+namespace {
+
+// Keeps log2 finite for zero derivatives (a pixel whose UVs do not change,
+// e.g. on a zero-UV-area triangle): level -33, clamped to 0.
+constexpr float kMinFootprintSquared = 1e-20f;
+
+}  // namespace
+
+LevelSelection selectDetailLevel(glm::vec2 dShadelDx, glm::vec2 dShadelDy, float bias, uint32_t levelCount) {
+  const float rhoSquared = std::max(glm::dot(dShadelDx, dShadelDx), glm::dot(dShadelDy, dShadelDy));
+  LevelSelection selection;
+  selection.level = 0.5f * std::log2(std::max(rhoSquared, kMinFootprintSquared)) + bias;
+  float clamped = selection.level;
+  if (!(clamped >= 0.0f)) clamped = 0.0f;  // also catches NaN
+  clamped = std::min(clamped, static_cast<float>(levelCount - 1));
+  selection.fine = static_cast<uint32_t>(std::floor(clamped));
+  selection.coarse = std::min(selection.fine + 1, levelCount - 1);
+  selection.blend = selection.coarse == selection.fine ? 0.0f : clamped - static_cast<float>(selection.fine);
+  return selection;
+}
+
+BilinearTaps bilinearTaps(glm::vec2 uv, uint32_t levelSize) {
+  const float size = static_cast<float>(levelSize);
+  const glm::vec2 p = uv * size - 0.5f;
+  const glm::vec2 base = glm::floor(p);
+  BilinearTaps taps;
+  taps.lo = glm::uvec2(glm::clamp(base, glm::vec2(0.0f), glm::vec2(size - 1.0f)));
+  taps.hi = glm::uvec2(glm::clamp(base + 1.0f, glm::vec2(0.0f), glm::vec2(size - 1.0f)));
+  taps.weight = glm::clamp(p - base, glm::vec2(0.0f), glm::vec2(1.0f));
+  return taps;
+}
+
+TrilinearFootprint trilinearFootprint(glm::vec2 uv, const LevelSelection& selection, std::span<const LevelRect> levels) {
+  TrilinearFootprint footprint;
+  footprint.selection = selection;
+  const uint32_t chosen[2] = {selection.fine, selection.coarse};
+  for (uint32_t i = 0; i < 2; ++i) {
+    const LevelRect& rect = levels[chosen[i]];
+    const BilinearTaps taps = bilinearTaps(uv, rect.size);
+    (i == 0 ? footprint.fineWeight : footprint.coarseWeight) = taps.weight;
+    footprint.shadels[i * 4 + 0] = rect.origin + glm::uvec2(taps.lo.x, taps.lo.y);
+    footprint.shadels[i * 4 + 1] = rect.origin + glm::uvec2(taps.hi.x, taps.lo.y);
+    footprint.shadels[i * 4 + 2] = rect.origin + glm::uvec2(taps.lo.x, taps.hi.y);
+    footprint.shadels[i * 4 + 3] = rect.origin + glm::uvec2(taps.hi.x, taps.hi.y);
+  }
+  return footprint;
+}
+
+}  // namespace sg::shadel

@@ -1,0 +1,43 @@
+#include "composite.hpp"
+
+#include <shadelgraph/gpu/pass_context.hpp>
+
+namespace sg::passes {
+
+graph::ResourceHandle addComposite(graph::RenderGraph& graph, render::DecoupledFrame& frame, graph::ResourceHandle color,
+                                   graph::ResourceHandle depth) {
+  auto& pass = graph.addPass("composite", graph::QueueClass::Graphics);
+  pass.read(color, graph::Access::ColorAttachmentRead);
+  pass.read(depth, graph::Access::DepthRead);
+  pass.read(frame.remap, graph::Access::StorageRead);
+  pass.read(frame.layerImage, graph::Access::Sampled);
+  frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);  // misses
+  color = pass.write(color, graph::Access::ColorAttachment);
+  pass.execute([frame, color, depth](PassContext& ctx) {
+    using namespace render;
+    const auto bindings = {kBindFrame, kBindParams, kBindObjects, kBindShadelInstances, kBindLevelRects,
+                               kBindRemap, kBindCounters, kBindLayerImage};
+    const auto& pipeline = ctx.device().pipeline("composite/" + std::to_string(frame.filter), [&] {
+      return gpu::GraphicsPipelineDesc{
+          .vertex = {.path = "passes/composite/composite.vert"},
+          .fragment = {.path = "passes/composite/composite.frag",
+                       .defines = {{"SG_COMPOSITE_FILTER", std::to_string(frame.filter)}}},
+          .layout = decoupledLayout(bindings, false, sizeof(ObjectConstants)),
+          .vertexInput = sceneVertexInput(),
+          .colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT},
+          .depthFormat = VK_FORMAT_D32_SFLOAT,
+          .depthTest = true,
+          .depthWrite = false};
+    });
+    ctx.beginRendering({ColorTarget{color}}, DepthTarget{depth, {}, true}, true);
+    bindDecoupled(ctx, pipeline, frame, bindings);
+    frame.view.scene.bindGeometry(ctx.cmd());
+    const auto& draws = frame.view.scene.draws();
+    for (uint32_t object = 0; object < frame.view.draws.size(); ++object)
+      drawItem(ctx.cmd(), pipeline, draws[frame.view.draws[object]], object);
+    ctx.endRendering();
+  });
+  return color;
+}
+
+}  // namespace sg::passes

@@ -1,0 +1,52 @@
+#version 460
+// Filters the shaded samples: the same level selection as shadel-mark, then
+// manual bilinear at the fine and coarse levels through the remap table,
+// blended (trilinear). A lookup that finds no stored shadel is counted
+// (composite misses: must be zero, the watertightness guarantee).
+#include <framework/render/shaders/object.glsl>
+#include <plugins/decoupled/shaders/decoupled.glsl>
+
+layout(early_fragment_tests) in;
+layout(set = 0, binding = 13) uniform sampler2D layerImage;  // texelFetch only
+layout(location = 0) in vec2 inShadingUv;
+layout(location = 0) out vec4 outColor;
+
+// SG_COMPOSITE_FILTER (a define from the pass): 0 point (nearest shadel of
+// the fine level), 1 bilinear (fine level only), 2 trilinear.
+#ifndef SG_COMPOSITE_FILTER
+#define SG_COMPOSITE_FILTER 2
+#endif
+const uint kFilter = SG_COMPOSITE_FILTER;
+
+vec4 fetchShadel(uvec2 shadel) {
+  SgShadelAddress a = sgShadelAddress(shadel, params.entriesPerSideLog2);
+  uint physical = sgPhysicalChunk(remap[a.entryIndex], a.chunkIndex);
+  if (physical == SG_INVALID_CHUNK) {
+    atomicAdd(counters.compositeMisses, 1u);
+    return vec4(1.0, 0.0, 1.0, 1.0);  // magenta: visible if it ever happens
+  }
+  return texelFetch(layerImage, ivec2(sgStorageTexel(physical, a.texelIndex, params.storageWidthChunks)), 0);
+}
+
+vec4 filterLevel(uint level) {
+  SgLevelRect rect = sgLevelRect(object.objectId, level);
+  SgBilinearTaps taps = sgBilinearTaps(inShadingUv, rect.size);
+  if (kFilter == 0u) {
+    uvec2 nearest = uvec2(mix(vec2(taps.lo), vec2(taps.hi), greaterThanEqual(taps.weight, vec2(0.5))));
+    return fetchShadel(rect.origin + nearest);
+  }
+  vec4 c00 = fetchShadel(sgFootprintShadel(rect, taps, 0u)), c10 = fetchShadel(sgFootprintShadel(rect, taps, 1u));
+  vec4 c01 = fetchShadel(sgFootprintShadel(rect, taps, 2u)), c11 = fetchShadel(sgFootprintShadel(rect, taps, 3u));
+  return mix(mix(c00, c10, taps.weight.x), mix(c01, c11, taps.weight.x), taps.weight.y);
+}
+
+void main() {
+  atomicAdd(counters.coveredPixels, 1u);
+  SgShadelInstance instance = shadelInstances[object.objectId];
+  float size0 = float(instance.level0Size);
+  SgLevelSelection sel =
+      sgSelectDetailLevel(dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0, params.bias, instance.levelCount);
+  vec4 color = filterLevel(sel.fine);
+  if (kFilter == 2u && sel.coarse != sel.fine) color = mix(color, filterLevel(sel.coarse), sel.blend);
+  outColor = vec4(color.rgb, 1.0);
+}

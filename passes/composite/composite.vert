@@ -1,0 +1,16 @@
+#version 460
+// Decoupled objects once more: same shading UV and `precise` depth as shadel-mark.
+#define SG_VERTEX_SHADER
+#include <framework/render/shaders/frame.glsl>
+#include <framework/render/shaders/object.glsl>
+#include <plugins/decoupled/shaders/decoupled.glsl>
+
+layout(location = 0) out vec2 outShadingUv;
+
+void main() {
+  SgDecoupledObject o = objects[object.objectId];
+  outShadingUv = (o.shadingUvSet == 1u ? inUv1 : inUv0) - o.tileOffset;
+  precise vec4 world = object.model * vec4(inPosition, 1.0);
+  precise vec4 clip = frame.viewProjection * world;
+  gl_Position = clip;
+}

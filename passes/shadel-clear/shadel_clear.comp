@@ -1,0 +1,31 @@
+#version 460
+// Resets the remap entries of allocated instances only (cost follows the
+// allocated entries, not the virtual sheet), the shade counters and the
+// per-object work counts.
+#include <plugins/decoupled/shaders/decoupled.glsl>
+#include <plugins/decoupled/shaders/work.glsl>
+
+layout(local_size_x = 64) in;
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i < params.ownedEntryCount) {
+    SgOwnedEntry owned = ownedEntries[i];
+    remap[owned.entryIndex].storageBase = SG_NO_STORAGE;
+    remap[owned.entryIndex].objectInstanceId = owned.instanceId;
+    remap[owned.entryIndex].occupancy = uint64_t(0);
+  }
+  if (i < params.objectCount) {
+    work[sgObjectChunksSlot(i)] = 0u;
+    work[sgObjectFillSlot(i)] = 0u;
+  }
+  if (i < SG_STORAGE_COUNTERS) counters.allocated[i] = 0u;
+  if (i < SG_MAX_LEVELS) counters.levelChunks[i] = 0u;
+  if (i == 0u) {
+    counters.chunksMarked = 0u;
+    counters.chunksAllocated = 0u;
+    counters.overflowChunks = 0u;
+    counters.compositeMisses = 0u;
+    counters.coveredPixels = 0u;
+  }
+}

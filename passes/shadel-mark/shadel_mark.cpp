@@ -1,0 +1,36 @@
+#include "shadel_mark.hpp"
+
+#include <shadelgraph/gpu/pass_context.hpp>
+
+namespace sg::passes {
+
+void addShadelMark(graph::RenderGraph& graph, render::DecoupledFrame& frame, graph::ResourceHandle depth) {
+  auto& pass = graph.addPass("shadel-mark", graph::QueueClass::Graphics);
+  pass.read(depth, graph::Access::DepthRead);
+  frame.remap = pass.write(frame.remap, graph::Access::StorageReadWrite, graph::ShaderStage::Fragment);
+  pass.execute([frame, depth](PassContext& ctx) {
+    using namespace render;
+    const auto& pipeline = ctx.device().pipeline("shadel-mark", [] {
+      return gpu::GraphicsPipelineDesc{
+          .vertex = {.path = "passes/shadel-mark/shadel_mark.vert"},
+          .fragment = {.path = "passes/shadel-mark/shadel_mark.frag"},
+          .layout = decoupledLayout({kBindFrame, kBindParams, kBindObjects, kBindShadelInstances, kBindLevelRects,
+                                     kBindRemap},
+                                    false, sizeof(ObjectConstants)),
+          .vertexInput = sceneVertexInput(),
+          .depthFormat = VK_FORMAT_D32_SFLOAT,
+          .depthTest = true,
+          .depthWrite = false};
+    });
+    ctx.beginRendering({}, DepthTarget{depth, {}, true}, true);
+    bindDecoupled(ctx, pipeline, frame,
+                  {kBindFrame, kBindParams, kBindObjects, kBindShadelInstances, kBindLevelRects, kBindRemap});
+    frame.view.scene.bindGeometry(ctx.cmd());
+    const auto& draws = frame.view.scene.draws();
+    for (uint32_t object = 0; object < frame.view.draws.size(); ++object)
+      drawItem(ctx.cmd(), pipeline, draws[frame.view.draws[object]], object);
+    ctx.endRendering();
+  });
+}
+
+}  // namespace sg::passes

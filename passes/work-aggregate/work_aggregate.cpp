@@ -1,0 +1,39 @@
+#include "work_aggregate.hpp"
+
+#include <shadelgraph/gpu/pass_context.hpp>
+
+namespace sg::passes {
+
+void addWorkAggregate(graph::RenderGraph& graph, render::DecoupledFrame& frame) {
+  auto& pass = graph.addPass("work-aggregate", graph::QueueClass::AsyncCompute);
+  pass.read(frame.remap, graph::Access::StorageRead);
+  frame.work = pass.write(frame.work, graph::Access::StorageReadWrite);
+  frame.args = pass.write(frame.args, graph::Access::StorageWrite);
+  pass.execute([frame](PassContext& ctx) {
+    using namespace render;
+    const auto& offsets = ctx.device().pipeline("work-offsets", [] {
+      return gpu::ComputePipelineDesc{.shader = {.path = "passes/work-aggregate/work_offsets.comp"},
+                                      .layout = decoupledLayout({kBindParams, kBindWork, kBindArgs})};
+    });
+    const auto& fill = ctx.device().pipeline("work-fill", [] {
+      return gpu::ComputePipelineDesc{
+          .shader = {.path = "passes/work-aggregate/work_fill.comp"},
+          .layout = decoupledLayout({kBindParams, kBindRemap, kBindOwnedEntries, kBindWork})};
+    });
+    bindDecoupled(ctx, offsets, frame, {kBindParams, kBindWork, kBindArgs});
+    vkCmdDispatch(ctx.cmd(), 1, 1, 1);
+    // The fill step reads the offsets the first step wrote: a barrier inside the pass.
+    VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    barrier.srcStageMask = barrier.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    barrier.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.memoryBarrierCount = 1;
+    dep.pMemoryBarriers = &barrier;
+    vkCmdPipelineBarrier2(ctx.cmd(), &dep);
+    bindDecoupled(ctx, fill, frame, {kBindParams, kBindRemap, kBindOwnedEntries, kBindWork});
+    if (frame.ownedEntryCount) vkCmdDispatch(ctx.cmd(), (frame.ownedEntryCount + 63) / 64, 1, 1);
+  });
+}
+
+}  // namespace sg::passes

@@ -1,0 +1,188 @@
+#include "decoupled_shading.hpp"
+
+#include <cstring>
+#include <map>
+#include <stdexcept>
+
+#include <shadelgraph/gpu/pass_context.hpp>
+#include <shadelgraph/render/decoupled_frame.hpp>
+#include <shadelgraph/scene/uv_chart.hpp>
+#include <shadelgraph/shadel/id_map_cache.hpp>
+#include <shadelgraph/shadel/level0_resolution.hpp>
+#include <shadelgraph/shadel/shadel_gpu_tables.hpp>
+
+#include "composite/composite.hpp"
+#include "exposure/exposure.hpp"
+#include "forward/forward.hpp"
+#include "layer-shade/layer_shade.hpp"
+#include "shadel-allocate/shadel_allocate.hpp"
+#include "shadel-clear/shadel_clear.hpp"
+#include "shadel-mark/shadel_mark.hpp"
+#include "tonemap/tonemap.hpp"
+#include "work-aggregate/work_aggregate.hpp"
+#include "z-prepass/z_prepass.hpp"
+
+namespace sg::plugins {
+namespace {
+
+template <class T>
+gpu::Buffer upload(gpu::Device& device, const std::vector<T>& data, const char* name) {
+  const size_t bytes = std::max<size_t>(data.size() * sizeof(T), 16);
+  gpu::Buffer buffer(device.context(), device.memory(),
+                     {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryLocation::Upload, name, "decoupled tables"});
+  if (!data.empty()) buffer.write(data.data(), data.size() * sizeof(T));
+  return buffer;
+}
+
+}  // namespace
+
+DecoupledShading::DecoupledShading(std::vector<ShadingChoice> choices, DecoupledSettings settings)
+    : choices_(std::move(choices)), settings_(settings), adjuster_(settings.adjuster) {
+  bias_ = settings_.fixedBias.value_or(adjuster_.bias());
+}
+
+DecoupledShading::~DecoupledShading() = default;
+
+render::FrameRecipe DecoupledShading::recipe() {
+  return [this](graph::RenderGraph& graph, const render::FrameInputs& inputs) { return declare(graph, inputs); };
+}
+
+void DecoupledShading::initialize(const render::FrameInputs& in) {
+  gpu::Device& device = in.device;
+  const auto& draws = in.view.scene.draws();
+  space_ = std::make_unique<shadel::ShadelSpace>(shadel::ShadelSpaceConfig{settings_.sheetSizeLog2});
+  shadel::IdMapCache cache;
+  std::map<int, std::pair<shadel::TriangleIdMap, uint32_t>> maps;  // by mesh: map and its offset
+  std::vector<uint32_t> idTexels;
+  std::vector<DecoupledObject> objects;
+  for (uint32_t d = 0; d < draws.size(); ++d) {
+    ShadingChoice& choice = choices_[draws[d].instance];
+    if (!choice.decoupled) {
+      forwardDraws_.push_back(d);
+      continue;
+    }
+    const int meshIndex = in.scene.instances[choice.instance].mesh;
+    const scene::Mesh& mesh = in.scene.meshes[size_t(meshIndex)];
+    auto it = maps.find(meshIndex);
+    if (it == maps.end()) {
+      const scene::ChartVerdict chart = scene::chooseShadingChart(mesh);
+      const uint32_t level0 = shadel::chooseLevel0Size(mesh, chart, shadel::meshTextureDensity(in.scene, mesh));
+      auto map = cache.loadOrBake(mesh, chart, {.level0Size = level0});
+      const auto offset = uint32_t(idTexels.size());
+      idTexels.insert(idTexels.end(), map.texels.begin(), map.texels.end());
+      it = maps.emplace(meshIndex, std::pair{std::move(map), offset}).first;
+    }
+    const auto& [map, offset] = it->second;
+    const auto object = uint32_t(objects.size());
+    const auto result = space_->allocate(object, map.levels);
+    if (!result.ok()) {
+      choice.decoupled = false;
+      choice.reason = "no shadel space: " + result.message;
+      forwardDraws_.push_back(d);
+      continue;
+    }
+    const auto& draw = draws[d];
+    objects.push_back({draw.world, draw.firstIndex, draw.vertexOffset, draw.indexCount / 3, draw.material, offset,
+                       uint32_t(choice.uvSet), choice.tileOffset});
+    decoupledDraws_.push_back(d);
+  }
+  const auto tables = shadel::buildGpuTables(*space_);
+  ownedEntryCount_ = uint32_t(tables.ownedEntries.size());
+  idMapBytes_ = idTexels.size() * 4;
+  objects_ = upload(device, objects, "decoupled objects");
+  shadelInstances_ = upload(device, tables.instances, "shadel instances");
+  levelRects_ = upload(device, tables.levelRects, "level rects");
+  ownedEntries_ = upload(device, tables.ownedEntries, "owned remap entries");
+  idMaps_ = upload(device, idTexels, "triangle-ID maps");
+  const uint64_t entriesPerSide = uint64_t(1) << (settings_.sheetSizeLog2 - 6);
+  remap_ = gpu::Buffer(device.context(), device.memory(),
+                       {entriesPerSide * entriesPerSide * sizeof(shadel::RemapEntry), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                        gpu::MemoryLocation::Device, "remap", "remap"});
+  readback_ = gpu::Buffer(device.context(), device.memory(),
+                          {sizeof(ShadeCounters), VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryLocation::Readback,
+                           "shade counters readback", "readback"});
+  std::memset(readback_.mapped(), 0, sizeof(ShadeCounters));
+  params_ = gpu::Buffer(device.context(), device.memory(),
+                        {sizeof(DecoupledParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryLocation::Upload,
+                         "decoupled params", "decoupled tables"});
+  initialized_ = true;
+}
+
+graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const render::FrameInputs& in) {
+  if (!initialized_) initialize(in);
+  // The adjuster reads the counters of the frame before (complete: frames are
+  // waited for), which was rendered with lastFrameBias_.
+  if (frames_ > 0 && !settings_.fixedBias) {
+    const auto c = stats().counters;
+    bias_ = adjuster_.update({lastFrameBias_, uint64_t(c.chunksMarked), storage_.capacityChunks()});
+  }
+  lastFrameBias_ = bias_;
+  ++frames_;
+
+  storage_ = shadel::storageLayoutFor(shadel::chunksForOutput(in.width, in.height, settings_.storageFactor));
+  const auto objectCount = uint32_t(decoupledDraws_.size());
+  const DecoupledParams params{bias_, settings_.sheetSizeLog2 - 6, storage_.widthChunks, storage_.chunksPerCounter,
+                               ownedEntryCount_, objectCount, 1u, storage_.capacityChunks()};
+  params_.write(&params, sizeof params);
+
+  render::SceneView forwardView{in.view.scene, in.view.frameUniforms, forwardDraws_};
+  render::DecoupledFrame frame{.view = {in.view.scene, in.view.frameUniforms, decoupledDraws_},
+                               .params = params_, .objects = objects_, .shadelInstances = shadelInstances_,
+                               .levelRects = levelRects_, .ownedEntries = ownedEntries_, .idMaps = idMaps_,
+                               .ownedEntryCount = ownedEntryCount_, .objectCount = objectCount,
+                               .layerCount = 1, .filter = settings_.filter};
+  const graph::ResourceState anyUse{graph::Layout::Undefined, graph::PipelineStage::AllCommands,
+                                    graph::AccessFlag::ShaderStorageRead | graph::AccessFlag::ShaderStorageWrite};
+  frame.remap = graph.importPersistentBuffer("remap", {.size = remap_.size()}, anyUse);
+  frame.counters = graph.createBuffer("shade counters", {.size = sizeof(ShadeCounters)});
+  frame.work = graph.createBuffer("work", {.size = workBufferBytes(objectCount, storage_.capacityChunks())});
+  frame.args = graph.createBuffer("dispatch args", {.size = std::max<uint64_t>(12ull * objectCount, 12)});
+  frame.layerImage = graph.createImage(
+      "shade storage", {.format = graph::Format::RGBA16F,
+                        .size = graph::Size::absolute(storage_.widthTexels(), storage_.heightTexels())});
+  auto readback = graph.importBuffer("shade counters readback", {.size = sizeof(ShadeCounters)}, {},
+                                     {graph::Layout::Undefined, graph::PipelineStage::AllCommands, graph::AccessFlag::None});
+  in.executor.bindBuffer(frame.remap, remap_);
+  in.executor.bindBuffer(readback, readback_);
+
+  passes::ForwardTargets targets;
+  targets.depth = graph.createImage("depth", {.format = graph::Format::D32F});
+  targets.color = graph.createImage("hdr", {.format = graph::Format::RGBA16F});
+  targets.depth = passes::addZPrepass(graph, in.view, targets.depth);
+  if (objectCount) {
+    passes::addShadelClear(graph, frame);
+    passes::addShadelMark(graph, frame, targets.depth);
+    passes::addShadelAllocate(graph, frame);
+    passes::addWorkAggregate(graph, frame);
+    passes::addLayerShade(graph, frame);
+  }
+  targets = passes::addForwardOpaque(graph, forwardView, targets);
+  if (objectCount) {
+    targets.color = passes::addComposite(graph, frame, targets.color, targets.depth);
+    auto& copy = graph.addPass("counters-readback", graph::QueueClass::Graphics, graph::PassKind::Transfer);
+    copy.read(frame.counters, graph::Access::TransferSrc);
+    readback = copy.write(readback, graph::Access::TransferDst);
+    copy.execute([counters = frame.counters, readback](PassContext& ctx) {
+      const VkBufferCopy region{0, 0, sizeof(ShadeCounters)};
+      vkCmdCopyBuffer(ctx.cmd(), ctx.buffer(counters).handle(), ctx.buffer(readback).handle(), 1, &region);
+    });
+  }
+  if (in.view.scene.hasAlphaMode(scene::AlphaMode::Blend))
+    targets.color = passes::addForwardBlend(graph, forwardView, in.cameraPosition, targets);
+  const auto exposure = passes::addExposure(graph, targets.color);
+  return passes::addTonemap(graph, targets.color, exposure, in.output);
+}
+
+DecoupledStats DecoupledShading::stats() const {
+  DecoupledStats s;
+  if (readback_) std::memcpy(&s.counters, readback_.mapped(), sizeof s.counters);
+  s.bias = lastFrameBias_;
+  s.objects = uint32_t(decoupledDraws_.size());
+  s.capacityChunks = storage_.capacityChunks();
+  s.storageBytes = uint64_t(storage_.widthTexels()) * storage_.heightTexels() * 8;
+  s.remapBytes = remap_.size();
+  s.idMapBytes = idMapBytes_;
+  return s;
+}
+
+}  // namespace sg::plugins

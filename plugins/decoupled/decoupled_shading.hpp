@@ -1,0 +1,72 @@
+#pragma once
+// The decoupled-shading recipe (Baker & Jarzynski 2022) on the render graph:
+// z-prepass, shadel-clear, shadel-mark, shadel-allocate, work-aggregate and
+// layer-shade (async compute), forward objects, composite, the forward tail
+// (blend, exposure, tonemap) and the readback of the shade counters that
+// drives the global shade-space adjuster. Owns what lives across frames: the
+// virtual shadel space, the remap table, the triangle-ID maps and the tables
+// the passes read.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <shadelgraph/gpu/buffer.hpp>
+#include <shadelgraph/render/frame_recipe.hpp>
+#include <shadelgraph/shadel/shadel_space.hpp>
+#include <shadelgraph/shadel/shadel_storage.hpp>
+
+#include "decoupled_tables.hpp"
+#include "shade_space_adjuster.hpp"
+#include "shading_choice.hpp"
+
+namespace sg::plugins {
+
+struct DecoupledSettings {
+  uint32_t sheetSizeLog2 = 16;  // 64K x 64K virtual shadels; up to 19 (512K)
+  double storageFactor = shadel::kDefaultStorageFactor;  // shade storage = factor x output pixels
+  int filter = 2;                      // composite: 0 point, 1 bilinear, 2 trilinear
+  std::optional<float> fixedBias;      // else the adjuster decides
+  ShadeSpaceAdjusterOptions adjuster;
+};
+
+struct DecoupledStats {
+  ShadeCounters counters{};  // of the last executed frame
+  float bias = 0.0f;         // the bias that frame was rendered with
+  uint32_t objects = 0;
+  uint32_t capacityChunks = 0;
+  uint64_t storageBytes = 0;  // shade storage, per layer
+  uint64_t remapBytes = 0;
+  uint64_t idMapBytes = 0;
+};
+
+class DecoupledShading {
+ public:
+  DecoupledShading(std::vector<ShadingChoice> choices, DecoupledSettings settings = {});
+  ~DecoupledShading();
+
+  render::FrameRecipe recipe();
+  graph::ResourceHandle declare(graph::RenderGraph& graph, const render::FrameInputs& inputs);
+  // Reads the counters of the last executed frame (call after it completed).
+  DecoupledStats stats() const;
+  const std::vector<ShadingChoice>& choices() const { return choices_; }
+  float nextBias() const { return bias_; }
+
+ private:
+  void initialize(const render::FrameInputs& inputs);
+
+  std::vector<ShadingChoice> choices_;
+  DecoupledSettings settings_;
+  ShadeSpaceAdjuster adjuster_;
+  float bias_ = 0.0f;
+  float lastFrameBias_ = 0.0f;
+  uint64_t frames_ = 0;
+  bool initialized_ = false;
+  std::vector<uint32_t> decoupledDraws_, forwardDraws_;
+  std::unique_ptr<shadel::ShadelSpace> space_;
+  uint32_t ownedEntryCount_ = 0;
+  shadel::StorageLayout storage_;
+  uint64_t idMapBytes_ = 0;
+  gpu::Buffer params_, objects_, shadelInstances_, levelRects_, ownedEntries_, idMaps_, remap_, readback_;
+};
+
+}  // namespace sg::plugins

@@ -1,0 +1,53 @@
+#pragma once
+// Host mirrors of the GPU records in plugins/decoupled/shaders/decoupled.glsl.
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+namespace sg::plugins {
+
+inline constexpr uint32_t kStorageCounters = 16;  // SG_STORAGE_COUNTERS
+inline constexpr uint32_t kMaxLevels = 16;        // SG_MAX_LEVELS
+
+// SgDecoupledObject (std430).
+struct DecoupledObject {
+  glm::mat4 world;
+  uint32_t firstIndex;
+  int32_t vertexOffset;
+  uint32_t triangleCount;
+  uint32_t material;
+  uint32_t idMapOffset;
+  uint32_t shadingUvSet;
+  glm::vec2 tileOffset;
+};
+static_assert(sizeof(DecoupledObject) == 96);
+
+// SgShadeCounters (std430).
+struct ShadeCounters {
+  uint32_t allocated[kStorageCounters];
+  uint32_t chunksMarked;
+  uint32_t chunksAllocated;
+  uint32_t overflowChunks;
+  uint32_t compositeMisses;
+  uint32_t coveredPixels;
+  uint32_t levelChunks[kMaxLevels];
+};
+
+// DecoupledParams (std140).
+struct DecoupledParams {
+  float bias;
+  uint32_t entriesPerSideLog2;
+  uint32_t storageWidthChunks;
+  uint32_t chunksPerCounter;
+  uint32_t ownedEntryCount;
+  uint32_t objectCount;
+  uint32_t layerCount;
+  uint32_t workCapacity;
+};
+static_assert(sizeof(DecoupledParams) == 32);
+
+// The work buffer (work.glsl): 3 counters per object, then 4 uints per item.
+constexpr uint64_t workBufferBytes(uint32_t objects, uint32_t items) { return 4ull * (3ull * objects + 4ull * items); }
+
+}  // namespace sg::plugins

@@ -1,0 +1,53 @@
+#include "shading_choice.hpp"
+
+#include <map>
+
+#include <shadelgraph/scene/uv_chart.hpp>
+#include <shadelgraph/shadel/auto_chart.hpp>
+
+namespace sg::plugins {
+
+std::vector<ShadingChoice> chooseShading(scene::Scene& scene, std::optional<scene::ShadingMode> override) {
+  std::vector<ShadingChoice> choices;
+  std::map<int, scene::ChartVerdict> verdicts;  // by mesh, after any automatic chart
+  for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+    const auto& instance = scene.instances[i];
+    const auto mode = override.value_or(instance.shading);
+    ShadingChoice choice{.instance = i};
+    auto& mesh = scene.meshes[size_t(instance.mesh)];
+    if (mode == scene::ShadingMode::Forward) {
+      choice.reason = "forward by request";
+    } else if (mesh.primitives.size() != 1) {
+      choice.reason = std::to_string(mesh.primitives.size()) + " primitives (decoupled shading takes single-primitive meshes so far)";
+    } else if (scene.materials[size_t(mesh.primitives[0].material)].alphaMode != scene::AlphaMode::Opaque) {
+      choice.reason = "alpha-masked or blended material (decoupled shading takes opaque materials so far)";
+    } else {
+      auto it = verdicts.find(instance.mesh);
+      if (it == verdicts.end()) {
+        scene::ChartVerdict verdict = scene::chooseShadingChart(mesh);
+        if (!verdict.unique && mode == scene::ShadingMode::Decoupled) {
+          auto charted = shadel::autoChartMesh(mesh, {.replaceUv1 = true});
+          if (charted.ok()) {
+            mesh = std::move(charted.mesh);
+            verdict = scene::chooseShadingChart(mesh);
+            verdict.reason = "automatic chart (" + std::to_string(charted.stats.charts) + " charts)";
+          } else {
+            verdict.reason += "; automatic chart failed: " + charted.error;
+          }
+        }
+        it = verdicts.emplace(instance.mesh, verdict).first;
+      }
+      const auto& verdict = it->second;
+      choice.decoupled = verdict.unique;
+      choice.uvSet = verdict.uvSet;
+      choice.tileOffset = verdict.tileOffset;
+      choice.reason = verdict.unique ? (verdict.reason.empty() ? "unique TEXCOORD_" + std::to_string(verdict.uvSet)
+                                                               : verdict.reason)
+                                     : "no unique chart: " + verdict.reason;
+    }
+    choices.push_back(std::move(choice));
+  }
+  return choices;
+}
+
+}  // namespace sg::plugins

@@ -1,0 +1,28 @@
+#pragma once
+// Which instances are shaded decoupled and which forward, and why: the
+// per-object mode (glTF extras, scene file, or --mode for all), the shading
+// chart, and what the decoupled path supports so far. Meshes that will be
+// shaded decoupled but have no unique chart get an automatic one (in uv1)
+// when the mode is `decoupled`; `auto` only takes objects that already have one.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include <shadelgraph/scene/scene.hpp>
+
+namespace sg::plugins {
+
+struct ShadingChoice {
+  uint32_t instance = 0;
+  bool decoupled = false;
+  std::string reason;  // why forward, or how decoupled ("unique TEXCOORD_0", "automatic chart: 212 charts")
+  int uvSet = -1;      // shading chart
+  glm::vec2 tileOffset{0.0f};
+};
+
+// May replace meshes of `scene` by auto-charted copies. `override`: --mode.
+std::vector<ShadingChoice> chooseShading(scene::Scene& scene, std::optional<scene::ShadingMode> override);
+
+}  // namespace sg::plugins
