@@ -24,7 +24,11 @@ struct RenderArgs {
   int camera = -1;
   int frame = -1;
   int path = 0;
-  std::string mode = "auto";
+  std::string mode;  // empty: each object's own mode (glTF extras, scene file; default auto)
+  std::string view = "final";
+  int filter = 2;
+  float bias = -1.0f;  // < 0: the adjuster
+  double storage = 2.0;
   std::string stats;
   std::string trace;
   int frames = 2;
@@ -50,6 +54,8 @@ void printTable(const gpu::FrameTimings& t, uint64_t transientBytes, const gpu::
 
 void writeStats(const std::string& path, const AppSession& session, const render::FrameResult& frame,
                 const gpu::MemoryTotals& memory) {
+  const auto d = session.decoupled->stats();
+  const uint64_t shaded = uint64_t(d.counters.chunksAllocated) * 64;
   nlohmann::json passMs = nlohmann::json::object(), passCpuMs = nlohmann::json::object();
   for (const auto& p : frame.timings.passes) {
     passMs[p.name] = p.gpuMs;
@@ -65,8 +71,19 @@ void writeStats(const std::string& path, const AppSession& session, const render
                        {"draws", session.renderer->gpuScene().draws().size()},
                        {"transient_bytes", frame.transientBytes},
                        {"memory_bytes", memoryJson},
-                       {"objects_forward", session.scene.instances.size()},
-                       {"objects_decoupled", 0},
+                       {"objects_forward", session.scene.instances.size() - d.objects},
+                       {"objects_decoupled", d.objects},
+                       {"covered_pixels", d.counters.coveredPixels},
+                       {"shadels_marked", uint64_t(d.counters.chunksMarked) * 64},
+                       {"shadels_allocated", uint64_t(d.counters.chunksAllocated) * 64},
+                       {"shadels_shaded", shaded},
+                       {"shadels_per_pixel", d.counters.coveredPixels ? double(shaded) / d.counters.coveredPixels : 0.0},
+                       {"overflow_chunks", d.counters.overflowChunks},
+                       {"composite_misses", d.counters.compositeMisses},
+                       {"global_bias", d.bias},
+                       {"shade_storage_bytes", d.storageBytes},
+                       {"remap_bytes", d.remapBytes},
+                       {"id_map_bytes", d.idMapBytes},
                        {"device", session.context->deviceName()}};
   if (std::filesystem::path(path).has_parent_path()) std::filesystem::create_directories(std::filesystem::path(path).parent_path());
   std::ofstream out(path);
@@ -95,11 +112,14 @@ void runRender(const RenderArgs& args) {
   parseSize(args.size, settings.width, settings.height);
   settings.camera = args.camera;
   settings.aliasing = !args.noAliasing;
-  if (args.mode == "decoupled")
-    throw std::runtime_error("--mode decoupled: decoupled shading is not implemented yet; use --mode forward or auto");
   if (args.frames < 1) throw std::invalid_argument("--frames must be at least 1");
 
-  AppSession session(args.scene);
+  plugins::DecoupledSettings decoupled{.storageFactor = args.storage, .filter = args.filter};
+  if (args.bias >= 0.0f) decoupled.fixedBias = args.bias;
+  AppSession session(args.scene, args.mode, decoupled);
+  for (const auto& choice : session.decoupled->choices())
+    if (!choice.decoupled && args.mode == "decoupled")
+      std::printf("forward: %s (%s)\n", session.scene.instances[choice.instance].name.c_str(), choice.reason.c_str());
   if (args.frame >= 0) settings.cameraOverride = pathCamera(session, args.path, args.frame);
   // The first frame pays for pipeline creation; report the last one.
   render::FrameResult frame;
@@ -107,9 +127,16 @@ void runRender(const RenderArgs& args) {
   image::writePng(args.output, frame.image.width, frame.image.height, frame.image.rgba8.data());
   const auto memory = session.device->memory().totals();
   printTable(frame.timings, frame.transientBytes, memory);
-  std::printf("wrote %s (%ux%u, %zu triangles, %zu draws, all objects forward)\n", args.output.c_str(),
+  const auto d = session.decoupled->stats();
+  std::printf("wrote %s (%ux%u, %zu triangles, %zu draws, %u objects decoupled, %zu forward)\n", args.output.c_str(),
               frame.image.width, frame.image.height, session.renderer->gpuScene().triangleCount(),
-              session.renderer->gpuScene().draws().size());
+              session.renderer->gpuScene().draws().size(), d.objects, session.scene.instances.size() - d.objects);
+  if (d.objects)
+    std::printf("decoupled: bias %.2f, %u chunks marked, %u allocated of %u, %u overflowed, %u composite misses, "
+                "%.2f shadels per covered pixel\n",
+                double(d.bias), d.counters.chunksMarked, d.counters.chunksAllocated, d.capacityChunks,
+                d.counters.overflowChunks, d.counters.compositeMisses,
+                d.counters.coveredPixels ? 64.0 * d.counters.chunksAllocated / d.counters.coveredPixels : 0.0);
   if (!args.stats.empty()) writeStats(args.stats, session, frame, memory);
   if (!args.trace.empty()) {
     std::vector<gpu::TraceEvent> events;
@@ -135,9 +162,13 @@ void addRenderCommand(CLI::App& app) {
   auto* camera = cmd->add_option("--camera", args.camera, "camera index of the scene (default: its first, else framing)");
   cmd->add_option("--frame", args.frame, "frame along a camera path of the scene file (30 per second)")->excludes(camera);
   cmd->add_option("--path", args.path, "which camera path --frame follows")->capture_default_str();
-  cmd->add_option("--mode", args.mode, "shading of every object: forward, decoupled, auto")
-      ->check(CLI::IsMember({"forward", "decoupled", "auto"}))
+  cmd->add_option("--mode", args.mode, "shading of every object: forward, decoupled, auto (default: each object's own)")
+      ->check(CLI::IsMember({"forward", "decoupled", "auto"}));
+  cmd->add_option("--filter", args.filter, "decoupled composite filter: 0 point, 1 bilinear, 2 trilinear")
+      ->check(CLI::Range(0, 2))
       ->capture_default_str();
+  cmd->add_option("--bias", args.bias, "fixed global level bias (default: the shade-space adjuster decides)");
+  cmd->add_option("--storage", args.storage, "shade storage in shadels per output pixel")->capture_default_str();
   cmd->add_option("--stats", args.stats, "write frame statistics as JSON");
   cmd->add_option("--trace", args.trace, "write per-pass timings as a Chrome trace (Perfetto)");
   cmd->add_option("--frames", args.frames, "frames to render; the last is reported")->capture_default_str();

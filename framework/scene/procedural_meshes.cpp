@@ -119,7 +119,8 @@ Primitive makeCylinder(float radius, float height, int segments) {
     const auto center = static_cast<uint32_t>(p.positions.size());
     addVertex(p, {0, y, 0}, n, {1, 0, 0}, centerUv);
     for (int i = 0; i <= segments; ++i) {
-      const float a = float(i) / float(segments) * 2 * kPi;
+      // i % segments: the closing vertex repeats the first exactly (no sliver overlap at the seam).
+      const float a = float(i % segments) / float(segments) * 2 * kPi;
       const glm::vec2 dir{std::cos(a), std::sin(a)};
       addVertex(p, {dir.x * radius, y, dir.y * radius}, n, {1, 0, 0}, centerUv + dir * kUvRadius);
     }

@@ -18,13 +18,13 @@ void main() {
   if (count == 0u) return;
   atomicAdd(counters.chunksMarked, count);
   atomicAdd(counters.levelChunks[min(owned.level, SG_MAX_LEVELS - 1u)], count);
-  uint partition = sgStorageCounter(owned.entryIndex, SG_STORAGE_COUNTERS);
-  uint base = atomicAdd(counters.allocated[partition], count);
+  uint storagePartition = sgStorageCounter(owned.entryIndex, SG_STORAGE_COUNTERS);
+  uint base = atomicAdd(counters.allocated[storagePartition], count);
   if (base + count > params.chunksPerCounter) {
     atomicAdd(counters.overflowChunks, count);
     return;  // storageBase stays SG_NO_STORAGE (shadel-clear)
   }
-  remap[owned.entryIndex].storageBase = partition * params.chunksPerCounter + base;
+  remap[owned.entryIndex].storageBase = storagePartition * params.chunksPerCounter + base;
   atomicAdd(counters.chunksAllocated, count);
   atomicAdd(work[sgObjectChunksSlot(owned.instanceId)], count);
 }

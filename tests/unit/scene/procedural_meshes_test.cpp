@@ -6,6 +6,7 @@
 
 #include <shadelgraph/scene/default_scene.hpp>
 #include <shadelgraph/scene/procedural_meshes.hpp>
+#include <shadelgraph/scene/uv_chart.hpp>
 #include <shadelgraph/scene/tangents.hpp>
 
 namespace sg::scene {
@@ -86,6 +87,14 @@ TEST(ProceduralMeshes, UvsInsideUnitSquare) {
       EXPECT_GE(uv.y, 0.0f) << name;
       EXPECT_LE(uv.y, 1.0f) << name;
     }
+  }
+}
+
+TEST(DefaultScene, EveryMeshHasAUniqueChart) {
+  const Scene s = makeDefaultScene(16);
+  for (const auto& mesh : s.meshes) {
+    const auto verdict = chooseShadingChart(mesh);
+    EXPECT_TRUE(verdict.unique) << mesh.name << ": " << verdict.reason;
   }
 }
 
