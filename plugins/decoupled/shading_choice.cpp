@@ -1,9 +1,12 @@
 #include "shading_choice.hpp"
 
+#include <algorithm>
+#include <bit>
 #include <map>
 
 #include <shadelgraph/scene/uv_chart.hpp>
 #include <shadelgraph/shadel/auto_chart.hpp>
+#include <shadelgraph/shadel/level0_resolution.hpp>
 
 namespace sg::plugins {
 
@@ -26,7 +29,10 @@ std::vector<ShadingChoice> chooseShading(scene::Scene& scene, std::optional<scen
       if (it == verdicts.end()) {
         scene::ChartVerdict verdict = scene::chooseShadingChart(mesh);
         if (!verdict.unique && mode == scene::ShadingMode::Decoupled) {
-          auto charted = shadel::autoChartMesh(mesh, {.replaceUv1 = true});
+          // Gutters measured at the resolution the mesh's textures suggest (what level 0 will be near).
+          const auto texture = shadel::meshTextureDensity(scene, mesh);
+          const uint32_t resolution = std::max(texture.resolution > 0 ? std::bit_ceil(texture.resolution) : 0u, 256u);
+          auto charted = shadel::autoChartMesh(mesh, {.resolution = resolution, .replaceUv1 = true});
           if (charted.ok()) {
             mesh = std::move(charted.mesh);
             verdict = scene::chooseShadingChart(mesh);
