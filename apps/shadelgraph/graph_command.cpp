@@ -15,12 +15,15 @@ void addGraphCommand(CLI::App& app) {
   struct Args {
     std::string scene;
     std::string size = "1280x720";
+    std::string mode;
     bool dot = false, json = false, noAliasing = false;
   };
   static Args args;
   auto* cmd = app.add_subcommand("graph", "Print the compiled render graph of the frame 'render' would run");
   cmd->add_option("scene", args.scene, "a .gltf/.glb/.json scene (default: the built-in scene)");
   cmd->add_option("--size", args.size, "WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--mode", args.mode, "shading of every object: forward, decoupled, auto (default: each object's own)")
+      ->check(CLI::IsMember({"forward", "decoupled", "auto"}));
   auto* dot = cmd->add_flag("--dot", args.dot, "Graphviz DOT");
   cmd->add_flag("--json", args.json, "JSON")->excludes(dot);
   cmd->add_flag("--no-aliasing", args.noAliasing, "give every transient its own memory");
@@ -28,7 +31,7 @@ void addGraphCommand(CLI::App& app) {
     render::RenderSettings settings;
     parseSize(args.size, settings.width, settings.height);
     settings.aliasing = !args.noAliasing;
-    AppSession session(args.scene);
+    AppSession session(args.scene, args.mode);
     const auto plan = session.renderer->plan(settings);
     const std::string text = args.dot ? graph::toDot(plan) : args.json ? graph::toJson(plan) : graph::toText(plan);
     std::fwrite(text.data(), 1, text.size(), stdout);

@@ -18,7 +18,7 @@ void main() {
   if (count == 0u) return;
   atomicAdd(counters.chunksMarked, count);
   atomicAdd(counters.levelChunks[min(owned.level, SG_MAX_LEVELS - 1u)], count);
-  uint storagePartition = sgStorageCounter(owned.entryIndex, SG_STORAGE_COUNTERS);
+  uint storagePartition = sgStorageCounter(owned.entryIndex, params.storageCounters);
   uint base = atomicAdd(counters.allocated[storagePartition], count);
   if (base + count > params.chunksPerCounter) {
     atomicAdd(counters.overflowChunks, count);

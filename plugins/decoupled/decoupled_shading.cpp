@@ -1,5 +1,6 @@
 #include "decoupled_shading.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <map>
 #include <stdexcept>
@@ -114,15 +115,20 @@ graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const
   // waited for), which was rendered with lastFrameBias_.
   if (frames_ > 0 && !settings_.fixedBias) {
     const auto c = stats().counters;
-    bias_ = adjuster_.update({lastFrameBias_, uint64_t(c.chunksMarked), storage_.capacityChunks()});
+    bias_ = adjuster_.update({lastFrameBias_, uint64_t(c.chunksMarked), storage_.capacityChunks(), c.overflowChunks});
   }
   lastFrameBias_ = bias_;
   ++frames_;
 
-  storage_ = shadel::storageLayoutFor(shadel::chunksForOutput(in.width, in.height, settings_.storageFactor));
+  // An entry takes up to 64 chunks from one partition at once: keep partitions
+  // at least 4 entries large, so a small storage does not fail every big entry.
+  const uint32_t chunks = settings_.storageChunks ? settings_.storageChunks
+                                                  : shadel::chunksForOutput(in.width, in.height, settings_.storageFactor);
+  storage_ = shadel::storageLayoutFor(chunks, std::clamp<uint32_t>(chunks / 256, 1, kStorageCounters));
   const auto objectCount = uint32_t(decoupledDraws_.size());
   const DecoupledParams params{bias_, settings_.sheetSizeLog2 - 6, storage_.widthChunks, storage_.chunksPerCounter,
-                               ownedEntryCount_, objectCount, 1u, storage_.capacityChunks()};
+                               ownedEntryCount_, objectCount, 1u, storage_.capacityChunks(),
+                               storage_.counterCount, {}};
   params_.write(&params, sizeof params);
 
   render::SceneView forwardView{in.view.scene, in.view.frameUniforms, forwardDraws_};

@@ -24,6 +24,7 @@ namespace sg::plugins {
 struct DecoupledSettings {
   uint32_t sheetSizeLog2 = 16;  // 64K x 64K virtual shadels; up to 19 (512K)
   double storageFactor = shadel::kDefaultStorageFactor;  // shade storage = factor x output pixels
+  uint32_t storageChunks = 0;  // when non-zero, the shade storage in chunks regardless of the output (tests)
   int filter = 2;                      // composite: 0 point, 1 bilinear, 2 trilinear
   std::optional<float> fixedBias;      // else the adjuster decides
   ShadeSpaceAdjusterOptions adjuster;

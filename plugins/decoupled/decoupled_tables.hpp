@@ -44,8 +44,10 @@ struct DecoupledParams {
   uint32_t objectCount;
   uint32_t layerCount;
   uint32_t workCapacity;
+  uint32_t storageCounters;
+  uint32_t pad[3];
 };
-static_assert(sizeof(DecoupledParams) == 32);
+static_assert(sizeof(DecoupledParams) == 48);
 
 // The work buffer (work.glsl): 3 counters per object, then 4 uints per item.
 constexpr uint64_t workBufferBytes(uint32_t objects, uint32_t items) { return 4ull * (3ull * objects + 4ull * items); }

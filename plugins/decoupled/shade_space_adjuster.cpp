@@ -16,6 +16,10 @@ float ShadeSpaceAdjuster::update(const ShadeSpaceCounters& c) {
   };
   if (use > double(options_.high)) {
     bias_ = std::max(bias_, biasFor(options_.target));
+  } else if (c.overflowChunks > 0) {
+    // Overflow below the high watermark: one hashed partition filled before
+    // the others. Step coarser until none does.
+    bias_ = std::max(bias_, c.bias + options_.overflowStep);
   } else if (use < double(options_.low) && c.chunksRequested > 0) {
     // Relax towards the target, a step at a time, never below what that frame
     // says would reach the target.

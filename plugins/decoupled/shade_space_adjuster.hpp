@@ -16,6 +16,7 @@ struct ShadeSpaceCounters {
   float bias = 0.0f;               // the bias the frame was rendered with
   uint64_t chunksRequested = 0;    // chunks marked visible (allocated + overflowed)
   uint64_t chunksCapacity = 0;     // chunks the shade storage holds
+  uint64_t overflowChunks = 0;     // chunks that found their storage partition full
 };
 
 struct ShadeSpaceAdjusterOptions {
@@ -23,6 +24,7 @@ struct ShadeSpaceAdjusterOptions {
   float high = 0.92f;      // above: raise the bias at once
   float low = 0.55f;       // below: relax the bias gradually
   float relaxStep = 0.05f;  // at most this much finer per frame
+  float overflowStep = 0.25f;  // coarser, at least, after a frame that overflowed (partitions fill unevenly)
   float minBias = 0.0f;     // the finest the adjuster may go (a user's quality setting)
   float maxBias = 8.0f;
 };

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <string>
 
@@ -73,9 +74,9 @@ TEST(Cli, BadArgumentsFailWithOneLineReason) {
   auto missing = run("render /nonexistent/scene.gltf");
   EXPECT_NE(missing.exitCode, 0);
   EXPECT_NE(missing.output.find("/nonexistent/scene.gltf"), std::string::npos) << missing.output;
-  auto decoupled = run("render --mode decoupled --size 32x32");
-  EXPECT_NE(decoupled.exitCode, 0);
-  EXPECT_NE(decoupled.output.find("decoupled"), std::string::npos) << decoupled.output;
+  auto mode = run("render --mode sideways --size 32x32");
+  EXPECT_NE(mode.exitCode, 0);
+  EXPECT_NE(mode.output.find("--mode"), std::string::npos) << mode.output;
 }
 
 TEST(Cli, GraphJsonListsPassesResourcesBarriersAndWaits) {
@@ -156,6 +157,43 @@ TEST(Cli, MissingTextureIsAnErrorNotABlankMaterial) {
   auto r = run("render --size 32x32 " + (dir / "BoxTextured.gltf").string());
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_NE(r.output.find("CesiumLogoFlat.png"), std::string::npos) << r.output;
+}
+
+TEST(Cli, DecoupledStatsHaveTheDocumentedKeys) {
+  const auto stats = tempDir() / "stats.json";
+  auto r = run("render --mode decoupled --size 96x64 --frames 2 -o " + (tempDir() / "d.png").string() + " --stats " +
+               stats.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(stats);
+  const auto json = nlohmann::json::parse(in);
+  for (const char* key : {"frame_ms", "pass_ms", "covered_pixels", "shadels_marked", "shadels_allocated",
+                          "shadels_shaded", "shadels_per_pixel", "overflow_chunks", "composite_misses", "global_bias",
+                          "shade_storage_bytes", "remap_bytes", "objects_decoupled", "objects_forward"})
+    EXPECT_TRUE(json.contains(key)) << key;
+  EXPECT_EQ(json["objects_decoupled"], 11);
+  EXPECT_GT(json["covered_pixels"].get<uint64_t>(), 0u);
+  EXPECT_EQ(json["composite_misses"], 0);
+  for (const char* pass : {"shadel-clear", "shadel-mark", "shadel-allocate", "work-aggregate", "layer-shade", "composite"})
+    EXPECT_TRUE(json["pass_ms"].contains(pass)) << pass;
+}
+
+std::set<std::string> passNames(const std::string& args) {
+  auto r = run("graph --json --size 64x64 " + args);
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  std::set<std::string> names;
+  const auto plan = nlohmann::json::parse(r.output);
+  for (const auto& p : plan["passes"]) names.insert(p["name"].get<std::string>());
+  return names;
+}
+
+TEST(Cli, OnlyTheShadingTheSceneUsesIsInTheGraph) {
+  const auto automatic = passNames("");
+  for (const char* pass : {"shadel-clear", "shadel-mark", "shadel-allocate", "work-aggregate", "layer-shade", "composite"})
+    EXPECT_TRUE(automatic.count(pass)) << pass << ": the default scene is decoupled under auto";
+  const auto forward = passNames("--mode forward");
+  for (const auto& name : forward) EXPECT_EQ(name.find("shadel-"), std::string::npos) << name;
+  EXPECT_FALSE(forward.count("composite"));
+  EXPECT_TRUE(forward.count("forward-opaque"));
 }
 
 TEST(Cli, GraphDotIsAGraphvizDigraph) {

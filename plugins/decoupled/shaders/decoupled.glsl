@@ -45,6 +45,7 @@ layout(set = 0, binding = 1, std140) uniform DecoupledParams {
   uint objectCount;
   uint layerCount;
   uint workCapacity;          // work items the work buffer holds
+  uint storageCounters;       // partitions in use (<= SG_STORAGE_COUNTERS)
 } params;
 
 layout(set = 0, binding = 2, std430) readonly buffer Objects { SgDecoupledObject objects[]; };

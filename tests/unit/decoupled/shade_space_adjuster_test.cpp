@@ -65,6 +65,12 @@ TEST(ShadeSpaceAdjuster, RelaxesWhenStorageEmptiesButNotPastTheFinestBias) {
   EXPECT_FLOAT_EQ(biases.back(), 0.0f);                 // down to the finest allowed
 }
 
+TEST(ShadeSpaceAdjuster, OverflowBelowTheWatermarkStillRaises) {
+  ShadeSpaceAdjuster adjuster;
+  const float b = adjuster.update({.bias = 0.0f, .chunksRequested = 500, .chunksCapacity = 1000, .overflowChunks = 64});
+  EXPECT_GE(b, 0.25f);
+}
+
 TEST(ShadeSpaceAdjuster, HoldsInsideTheHysteresisBand) {
   ShadeSpaceAdjuster adjuster;
   EXPECT_FLOAT_EQ(adjuster.update({.bias = 0.0f, .chunksRequested = 700, .chunksCapacity = 1000}), 0.0f);
