@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -115,6 +116,11 @@ void runRender(const RenderArgs& args) {
   if (args.frames < 1) throw std::invalid_argument("--frames must be at least 1");
 
   plugins::DecoupledSettings decoupled{.storageFactor = args.storage, .filter = args.filter};
+  const std::map<std::string, plugins::DebugView> views{{"final", plugins::DebugView::Final},
+                                                        {"level", plugins::DebugView::Level},
+                                                        {"occupancy", plugins::DebugView::Occupancy},
+                                                        {"sheet", plugins::DebugView::Sheet}};
+  decoupled.view = views.at(args.view);
   if (args.bias >= 0.0f) decoupled.fixedBias = args.bias;
   AppSession session(args.scene, args.mode, decoupled);
   for (const auto& choice : session.decoupled->choices())
@@ -166,6 +172,9 @@ void addRenderCommand(CLI::App& app) {
       ->check(CLI::IsMember({"forward", "decoupled", "auto"}));
   cmd->add_option("--filter", args.filter, "decoupled composite filter: 0 point, 1 bilinear, 2 trilinear")
       ->check(CLI::Range(0, 2))
+      ->capture_default_str();
+  cmd->add_option("--view", args.view, "final, or a debug view of decoupled shading: level, occupancy, sheet")
+      ->check(CLI::IsMember({"final", "level", "occupancy", "sheet"}))
       ->capture_default_str();
   cmd->add_option("--bias", args.bias, "fixed global level bias (default: the shade-space adjuster decides)");
   cmd->add_option("--storage", args.storage, "shade storage in shadels per output pixel")->capture_default_str();

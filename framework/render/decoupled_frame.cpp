@@ -6,7 +6,7 @@
 
 namespace sg::render {
 
-gpu::PipelineLayoutDesc decoupledLayout(std::initializer_list<uint32_t> bindings, bool layerImageStorage,
+gpu::PipelineLayoutDesc decoupledLayout(std::span<const uint32_t> bindings, bool layerImageStorage,
                                         uint32_t pushConstantBytes,
                                         std::initializer_list<VkDescriptorSetLayout> extraSets) {
   gpu::PipelineLayoutDesc layout{.extraSets = extraSets, .pushConstantBytes = pushConstantBytes};
@@ -21,7 +21,7 @@ gpu::PipelineLayoutDesc decoupledLayout(std::initializer_list<uint32_t> bindings
 }
 
 void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const DecoupledFrame& f,
-                   std::initializer_list<uint32_t> bindings) {
+                   std::span<const uint32_t> bindings) {
   std::vector<gpu::DescriptorWrite> writes;
   for (uint32_t b : bindings) {
     auto buffer = [&](VkBuffer vk) { writes.push_back({b, gpu::BufferBinding{vk}}); };

@@ -35,16 +35,17 @@ struct DecoupledFrame {
   uint32_t objectCount = 0;
   uint32_t layerCount = 1;
   int filter = 2;  // composite: 0 point, 1 bilinear, 2 trilinear
+  bool levelView = false;  // composite shows the detail level instead of the shading
   graph::ResourceHandle remap, counters, work, args, layerImage;
 };
 
 // The set-0 layout of a decoupled pass using `bindings`; the layer image is a
 // storage image when `layerImageStorage`, else sampled.
-gpu::PipelineLayoutDesc decoupledLayout(std::initializer_list<uint32_t> bindings, bool layerImageStorage = false,
+gpu::PipelineLayoutDesc decoupledLayout(std::span<const uint32_t> bindings, bool layerImageStorage = false,
                                         uint32_t pushConstantBytes = 0,
                                         std::initializer_list<VkDescriptorSetLayout> extraSets = {});
 // Binds `pipeline` with the descriptors of `bindings` from the frame.
 void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const DecoupledFrame& frame,
-                   std::initializer_list<uint32_t> bindings);
+                   std::span<const uint32_t> bindings);
 
 }  // namespace sg::render

@@ -1,5 +1,7 @@
 #include "composite.hpp"
 
+#include <array>
+
 #include <shadelgraph/gpu/pass_context.hpp>
 
 namespace sg::passes {
@@ -15,13 +17,15 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, render::DecoupledF
   color = pass.write(color, graph::Access::ColorAttachment);
   pass.execute([frame, color, depth](PassContext& ctx) {
     using namespace render;
-    const auto bindings = {kBindFrame, kBindParams, kBindObjects, kBindShadelInstances, kBindLevelRects,
+    const std::array bindings{kBindFrame, kBindParams, kBindObjects, kBindShadelInstances, kBindLevelRects,
                                kBindRemap, kBindCounters, kBindLayerImage};
-    const auto& pipeline = ctx.device().pipeline("composite/" + std::to_string(frame.filter), [&] {
+    const std::string variant = std::to_string(frame.filter) + (frame.levelView ? "/level" : "");
+    const auto& pipeline = ctx.device().pipeline("composite/" + variant, [&] {
+      std::vector<std::pair<std::string, std::string>> defines{{"SG_COMPOSITE_FILTER", std::to_string(frame.filter)}};
+      if (frame.levelView) defines.emplace_back("SG_VIEW_LEVEL", "1");
       return gpu::GraphicsPipelineDesc{
           .vertex = {.path = "passes/composite/composite.vert"},
-          .fragment = {.path = "passes/composite/composite.frag",
-                       .defines = {{"SG_COMPOSITE_FILTER", std::to_string(frame.filter)}}},
+          .fragment = {.path = "passes/composite/composite.frag", .defines = defines},
           .layout = decoupledLayout(bindings, false, sizeof(ObjectConstants)),
           .vertexInput = sceneVertexInput(),
           .colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT},

@@ -5,6 +5,7 @@
 // (composite misses: must be zero, the watertightness guarantee).
 #include <framework/render/shaders/object.glsl>
 #include <plugins/decoupled/shaders/decoupled.glsl>
+#include <passes/debug-views/debug_color.glsl>
 
 layout(early_fragment_tests) in;
 layout(set = 0, binding = 13) uniform sampler2D layerImage;  // texelFetch only
@@ -46,7 +47,14 @@ void main() {
   float size0 = float(instance.level0Size);
   SgLevelSelection sel =
       sgSelectDetailLevel(dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0, params.bias, instance.levelCount);
+#ifdef SG_VIEW_LEVEL
+  // --view level: the detail level the pixel reads (fractional: fine + blend), shaded lightly.
+  vec4 shaded = filterLevel(sel.fine);
+  float level = float(sel.fine) + sel.blend;
+  outColor = vec4(sgLevelColor(level) * (0.55 + 0.45 * clamp(dot(shaded.rgb, vec3(0.3, 0.5, 0.2)), 0.0, 1.0)), 1.0);
+#else
   vec4 color = filterLevel(sel.fine);
   if (kFilter == 2u && sel.coarse != sel.fine) color = mix(color, filterLevel(sel.coarse), sel.blend);
   outColor = vec4(color.rgb, 1.0);
+#endif
 }

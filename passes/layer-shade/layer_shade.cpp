@@ -1,5 +1,7 @@
 #include "layer_shade.hpp"
 
+#include <array>
+
 #include <shadelgraph/gpu/pass_context.hpp>
 
 namespace sg::passes {
@@ -11,7 +13,7 @@ void addLayerShade(graph::RenderGraph& graph, render::DecoupledFrame& frame) {
   frame.layerImage = pass.write(frame.layerImage, graph::Access::StorageWrite);
   pass.execute([frame](PassContext& ctx) {
     using namespace render;
-    const auto bindings = {kBindFrame, kBindParams, kBindObjects, kBindShadelInstances, kBindLevelRects,
+    const std::array bindings{kBindFrame, kBindParams, kBindObjects, kBindShadelInstances, kBindLevelRects,
                                kBindWork, kBindIdMaps, kBindVertices, kBindIndices, kBindLayerImage};
     const auto& pipeline = ctx.device().pipeline("layer-shade/gltf-pbr", [&] {
       return gpu::ComputePipelineDesc{

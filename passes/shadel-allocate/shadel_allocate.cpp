@@ -1,5 +1,7 @@
 #include "shadel_allocate.hpp"
 
+#include <array>
+
 #include <shadelgraph/gpu/pass_context.hpp>
 
 namespace sg::passes {
@@ -11,12 +13,13 @@ void addShadelAllocate(graph::RenderGraph& graph, render::DecoupledFrame& frame)
   frame.work = pass.write(frame.work, graph::Access::StorageReadWrite);
   pass.execute([frame](PassContext& ctx) {
     using namespace render;
-    const auto& pipeline = ctx.device().pipeline("shadel-allocate", [] {
+    const std::array bindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindCounters, kBindWork};
+    const auto& pipeline = ctx.device().pipeline("shadel-allocate", [&] {
       return gpu::ComputePipelineDesc{
           .shader = {.path = "passes/shadel-allocate/shadel_allocate.comp"},
-          .layout = decoupledLayout({kBindParams, kBindRemap, kBindOwnedEntries, kBindCounters, kBindWork})};
+          .layout = decoupledLayout(bindings)};
     });
-    bindDecoupled(ctx, pipeline, frame, {kBindParams, kBindRemap, kBindOwnedEntries, kBindCounters, kBindWork});
+    bindDecoupled(ctx, pipeline, frame, bindings);
     if (frame.ownedEntryCount) vkCmdDispatch(ctx.cmd(), (frame.ownedEntryCount + 63) / 64, 1, 1);
   });
 }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <array>
+
 #include <shadelgraph/gpu/pass_context.hpp>
 
 namespace sg::passes {
@@ -13,12 +15,13 @@ void addShadelClear(graph::RenderGraph& graph, render::DecoupledFrame& frame) {
   frame.work = pass.write(frame.work, graph::Access::StorageWrite);
   pass.execute([frame](PassContext& ctx) {
     using namespace render;
-    const auto& pipeline = ctx.device().pipeline("shadel-clear", [] {
+    const std::array bindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindCounters, kBindWork};
+    const auto& pipeline = ctx.device().pipeline("shadel-clear", [&] {
       return gpu::ComputePipelineDesc{
           .shader = {.path = "passes/shadel-clear/shadel_clear.comp"},
-          .layout = decoupledLayout({kBindParams, kBindRemap, kBindOwnedEntries, kBindCounters, kBindWork})};
+          .layout = decoupledLayout(bindings)};
     });
-    bindDecoupled(ctx, pipeline, frame, {kBindParams, kBindRemap, kBindOwnedEntries, kBindCounters, kBindWork});
+    bindDecoupled(ctx, pipeline, frame, bindings);
     const uint32_t n = std::max({frame.ownedEntryCount, frame.objectCount, 64u});
     vkCmdDispatch(ctx.cmd(), (n + 63) / 64, 1, 1);
   });

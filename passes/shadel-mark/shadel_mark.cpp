@@ -1,5 +1,7 @@
 #include "shadel_mark.hpp"
 
+#include <array>
+
 #include <shadelgraph/gpu/pass_context.hpp>
 
 namespace sg::passes {
@@ -10,12 +12,12 @@ void addShadelMark(graph::RenderGraph& graph, render::DecoupledFrame& frame, gra
   frame.remap = pass.write(frame.remap, graph::Access::StorageReadWrite, graph::ShaderStage::Fragment);
   pass.execute([frame, depth](PassContext& ctx) {
     using namespace render;
-    const auto& pipeline = ctx.device().pipeline("shadel-mark", [] {
+    const std::array bindings{kBindFrame, kBindParams, kBindObjects, kBindShadelInstances, kBindLevelRects, kBindRemap};
+    const auto& pipeline = ctx.device().pipeline("shadel-mark", [&] {
       return gpu::GraphicsPipelineDesc{
           .vertex = {.path = "passes/shadel-mark/shadel_mark.vert"},
           .fragment = {.path = "passes/shadel-mark/shadel_mark.frag"},
-          .layout = decoupledLayout({kBindFrame, kBindParams, kBindObjects, kBindShadelInstances, kBindLevelRects,
-                                     kBindRemap},
+          .layout = decoupledLayout(bindings,
                                     false, sizeof(ObjectConstants)),
           .vertexInput = sceneVertexInput(),
           .depthFormat = VK_FORMAT_D32_SFLOAT,
@@ -23,8 +25,7 @@ void addShadelMark(graph::RenderGraph& graph, render::DecoupledFrame& frame, gra
           .depthWrite = false};
     });
     ctx.beginRendering({}, DepthTarget{depth, {}, true}, true);
-    bindDecoupled(ctx, pipeline, frame,
-                  {kBindFrame, kBindParams, kBindObjects, kBindShadelInstances, kBindLevelRects, kBindRemap});
+    bindDecoupled(ctx, pipeline, frame, bindings);
     frame.view.scene.bindGeometry(ctx.cmd());
     const auto& draws = frame.view.scene.draws();
     for (uint32_t object = 0; object < frame.view.draws.size(); ++object)

@@ -5,17 +5,19 @@
 namespace sg::passes {
 
 graph::ResourceHandle addTonemap(graph::RenderGraph& graph, graph::ResourceHandle hdr, graph::ResourceHandle exposure,
-                                 graph::ResourceHandle output) {
+                                 graph::ResourceHandle output, bool passthrough) {
   auto& pass = graph.addPass("tonemap", graph::QueueClass::Graphics);
   pass.read(hdr, graph::Access::Sampled);
   pass.read(exposure, graph::Access::StorageRead);
   output = pass.write(output, graph::Access::ColorAttachment);
-  pass.execute([hdr, exposure, output](PassContext& ctx) {
+  pass.execute([hdr, exposure, output, passthrough](PassContext& ctx) {
     const VkFormat format = ctx.image(output).desc().format;
-    const auto& pipeline = ctx.device().pipeline("tonemap/" + std::to_string(format), [&] {
+    const auto& pipeline = ctx.device().pipeline("tonemap/" + std::to_string(format) + (passthrough ? "/pass" : ""), [&] {
       return gpu::GraphicsPipelineDesc{
-          .vertex = {.path = "passes/tonemap/tonemap.vert"},
-          .fragment = {.path = "passes/tonemap/tonemap.frag"},
+          .vertex = {.path = "framework/render/shaders/fullscreen.vert"},
+          .fragment = {.path = "passes/tonemap/tonemap.frag",
+                       .defines = passthrough ? std::vector<std::pair<std::string, std::string>>{{"SG_TONEMAP_PASSTHROUGH", "1"}}
+                                              : std::vector<std::pair<std::string, std::string>>{}},
           .layout = {.bindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}},
           .colorFormats = {format}};
     });

@@ -11,6 +11,11 @@ vec3 acesFilm(vec3 x) {
 }
 
 void main() {
+#ifdef SG_TONEMAP_PASSTHROUGH
+  // Debug views: their colours go to the display unchanged.
+  outColor = vec4(texture(hdr, inUv).rgb, 1.0);
+#else
   vec3 c = texture(hdr, inUv).rgb * result.exposure;
   outColor = vec4(acesFilm(c), 1.0);
+#endif
 }

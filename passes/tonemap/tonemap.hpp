@@ -3,8 +3,9 @@
 
 namespace sg::passes {
 
-// HDR -> the 8-bit sRGB output, exposed by the exposure pass's result (graphics).
+// HDR -> the 8-bit sRGB output, exposed by the exposure pass's result
+// (graphics). passthrough: copy the colours unchanged (debug views).
 graph::ResourceHandle addTonemap(graph::RenderGraph& graph, graph::ResourceHandle hdr, graph::ResourceHandle exposure,
-                                 graph::ResourceHandle output);
+                                 graph::ResourceHandle output, bool passthrough = false);
 
 }  // namespace sg::passes

@@ -1,5 +1,7 @@
 #include "work_aggregate.hpp"
 
+#include <array>
+
 #include <shadelgraph/gpu/pass_context.hpp>
 
 namespace sg::passes {
@@ -11,16 +13,18 @@ void addWorkAggregate(graph::RenderGraph& graph, render::DecoupledFrame& frame) 
   frame.args = pass.write(frame.args, graph::Access::StorageWrite);
   pass.execute([frame](PassContext& ctx) {
     using namespace render;
-    const auto& offsets = ctx.device().pipeline("work-offsets", [] {
+    const std::array offsetBindings{kBindParams, kBindWork, kBindArgs};
+    const std::array fillBindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindWork};
+    const auto& offsets = ctx.device().pipeline("work-offsets", [&] {
       return gpu::ComputePipelineDesc{.shader = {.path = "passes/work-aggregate/work_offsets.comp"},
-                                      .layout = decoupledLayout({kBindParams, kBindWork, kBindArgs})};
+                                      .layout = decoupledLayout(offsetBindings)};
     });
-    const auto& fill = ctx.device().pipeline("work-fill", [] {
+    const auto& fill = ctx.device().pipeline("work-fill", [&] {
       return gpu::ComputePipelineDesc{
           .shader = {.path = "passes/work-aggregate/work_fill.comp"},
-          .layout = decoupledLayout({kBindParams, kBindRemap, kBindOwnedEntries, kBindWork})};
+          .layout = decoupledLayout(fillBindings)};
     });
-    bindDecoupled(ctx, offsets, frame, {kBindParams, kBindWork, kBindArgs});
+    bindDecoupled(ctx, offsets, frame, offsetBindings);
     vkCmdDispatch(ctx.cmd(), 1, 1, 1);
     // The fill step reads the offsets the first step wrote: a barrier inside the pass.
     VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
@@ -31,7 +35,7 @@ void addWorkAggregate(graph::RenderGraph& graph, render::DecoupledFrame& frame) 
     dep.memoryBarrierCount = 1;
     dep.pMemoryBarriers = &barrier;
     vkCmdPipelineBarrier2(ctx.cmd(), &dep);
-    bindDecoupled(ctx, fill, frame, {kBindParams, kBindRemap, kBindOwnedEntries, kBindWork});
+    bindDecoupled(ctx, fill, frame, fillBindings);
     if (frame.ownedEntryCount) vkCmdDispatch(ctx.cmd(), (frame.ownedEntryCount + 63) / 64, 1, 1);
   });
 }

@@ -13,6 +13,7 @@
 #include <shadelgraph/shadel/shadel_gpu_tables.hpp>
 
 #include "composite/composite.hpp"
+#include "debug-views/debug_views.hpp"
 #include "exposure/exposure.hpp"
 #include "forward/forward.hpp"
 #include "layer-shade/layer_shade.hpp"
@@ -88,6 +89,16 @@ void DecoupledShading::initialize(const render::FrameInputs& in) {
     decoupledDraws_.push_back(d);
   }
   const auto tables = shadel::buildGpuTables(*space_);
+  // The occupancy view shows the square around every allocated level.
+  glm::uvec2 lo(~0u), hi(0u);
+  for (const auto& rect : tables.levelRects) {
+    lo = glm::min(lo, rect.origin / shadel::kChunkSize);
+    hi = glm::max(hi, (rect.origin + rect.allocatedSize) / shadel::kChunkSize);
+  }
+  if (!tables.levelRects.empty()) {
+    sheetRegionOrigin_ = lo;
+    sheetRegionSize_ = glm::uvec2(std::max(hi.x - lo.x, hi.y - lo.y));
+  }
   ownedEntryCount_ = uint32_t(tables.ownedEntries.size());
   idMapBytes_ = idTexels.size() * 4;
   objects_ = upload(device, objects, "decoupled objects");
@@ -136,7 +147,8 @@ graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const
                                .params = params_, .objects = objects_, .shadelInstances = shadelInstances_,
                                .levelRects = levelRects_, .ownedEntries = ownedEntries_, .idMaps = idMaps_,
                                .ownedEntryCount = ownedEntryCount_, .objectCount = objectCount,
-                               .layerCount = 1, .filter = settings_.filter};
+                               .layerCount = 1, .filter = settings_.filter,
+                               .levelView = settings_.view == DebugView::Level};
   const graph::ResourceState anyUse{graph::Layout::Undefined, graph::PipelineStage::AllCommands,
                                     graph::AccessFlag::ShaderStorageRead | graph::AccessFlag::ShaderStorageWrite};
   frame.remap = graph.importPersistentBuffer("remap", {.size = remap_.size()}, anyUse);
@@ -175,8 +187,12 @@ graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const
   }
   if (in.view.scene.hasAlphaMode(scene::AlphaMode::Blend))
     targets.color = passes::addForwardBlend(graph, forwardView, in.cameraPosition, targets);
+  if (objectCount && settings_.view == DebugView::Occupancy)
+    targets.color = passes::addOccupancyView(graph, frame, sheetRegionOrigin_, sheetRegionSize_);
+  if (objectCount && settings_.view == DebugView::Sheet) targets.color = passes::addSheetView(graph, frame);
+  const bool passthrough = settings_.view != DebugView::Final;  // debug colours as they are
   const auto exposure = passes::addExposure(graph, targets.color);
-  return passes::addTonemap(graph, targets.color, exposure, in.output);
+  return passes::addTonemap(graph, targets.color, exposure, in.output, passthrough);
 }
 
 DecoupledStats DecoupledShading::stats() const {

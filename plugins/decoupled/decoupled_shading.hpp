@@ -21,12 +21,16 @@
 
 namespace sg::plugins {
 
+// What the frame shows: the shaded image, or a debug view of decoupled shading.
+enum class DebugView { Final, Level, Occupancy, Sheet };
+
 struct DecoupledSettings {
   uint32_t sheetSizeLog2 = 16;  // 64K x 64K virtual shadels; up to 19 (512K)
   double storageFactor = shadel::kDefaultStorageFactor;  // shade storage = factor x output pixels
   uint32_t storageChunks = 0;  // when non-zero, the shade storage in chunks regardless of the output (tests)
   int filter = 2;                      // composite: 0 point, 1 bilinear, 2 trilinear
   std::optional<float> fixedBias;      // else the adjuster decides
+  DebugView view = DebugView::Final;
   ShadeSpaceAdjusterOptions adjuster;
 };
 
@@ -67,6 +71,7 @@ class DecoupledShading {
   uint32_t ownedEntryCount_ = 0;
   shadel::StorageLayout storage_;
   uint64_t idMapBytes_ = 0;
+  glm::uvec2 sheetRegionOrigin_{0}, sheetRegionSize_{1};  // allocated part of the sheet, in chunks
   gpu::Buffer params_, objects_, shadelInstances_, levelRects_, ownedEntries_, idMaps_, remap_, readback_;
 };
 

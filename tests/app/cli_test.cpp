@@ -196,6 +196,19 @@ TEST(Cli, OnlyTheShadingTheSceneUsesIsInTheGraph) {
   EXPECT_TRUE(forward.count("forward-opaque"));
 }
 
+TEST(Cli, DebugViewsRender) {
+  for (const char* view : {"level", "occupancy", "sheet"}) {
+    const auto png = tempDir() / (std::string("view-") + view + ".png");
+    auto r = run(std::string("render --size 96x64 --frames 1 --view ") + view + " -o " + png.string());
+    ASSERT_EQ(r.exitCode, 0) << view << ": " << r.output;
+    const auto image = sg::image::readPng(png);
+    std::set<uint32_t> colours;
+    for (size_t i = 0; i < image.pixels.size(); i += 4)
+      colours.insert(uint32_t(image.pixels[i]) << 16 | uint32_t(image.pixels[i + 1]) << 8 | image.pixels[i + 2]);
+    EXPECT_GT(colours.size(), 3u) << view;
+  }
+}
+
 TEST(Cli, GraphDotIsAGraphvizDigraph) {
   auto r = run("graph --dot --size 64x64");
   ASSERT_EQ(r.exitCode, 0) << r.output;
