@@ -202,14 +202,25 @@ FrameTimings GraphExecutor::execute(const graph::RenderGraph& graph, const graph
       const graph::PlannedPass& planned = plan.passes[id.index];
       std::vector<const graph::Barrier*> before;
       for (const auto& barrier : plan.barriersBefore(id)) before.push_back(&barrier);
-      recordBarriers(cmd, plan, before);
+      // The pass's time includes its barriers: layout transitions are its cost.
       const uint32_t scope = timer_.begin(cmd, planned.name);
+      recordBarriers(cmd, plan, before);
       CpuTimer recordTimer;
       if (const auto& callback = graph.callback(id)) {
         PassContext ctx(cmd, device_, descriptors_, *this);
         callback(ctx);
       }
       const double cpuMs = recordTimer.elapsedMs();
+      if (exactPassTimes_) {
+        // Drivers may still be executing the pass when its end timestamp is
+        // written (lavapipe runs work asynchronously until a barrier): wait for it.
+        VkMemoryBarrier2 all{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+        all.srcStageMask = all.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        dep.memoryBarrierCount = 1;
+        dep.pMemoryBarriers = &all;
+        vkCmdPipelineBarrier2(cmd, &dep);
+      }
       timer_.end(cmd, scope);
       std::vector<const graph::Barrier*> after;
       for (const auto& barrier : plan.barriersAfter(id)) after.push_back(&barrier);

@@ -52,6 +52,10 @@ class GraphExecutor {
   // Records, submits and waits for one frame.
   FrameTimings execute(const graph::RenderGraph& graph, const graph::CompiledPlan& plan);
 
+  // Serialize passes so each one's timestamps bracket its execution (default
+  // on: exact per-pass times; off: passes may overlap, only the frame time is exact).
+  void setExactPassTimes(bool exact) { exactPassTimes_ = exact; }
+
   // Bytes of device memory the transients of the last executed plan occupy.
   uint64_t transientBytes() const { return transientBytes_; }
   const Image& image(graph::ResourceId id) const;
@@ -82,6 +86,7 @@ class GraphExecutor {
   std::vector<Allocation> heaps_;
   std::vector<graph::MemoryPlacement> placed_;  // placement the transients are bound at
   uint64_t transientBytes_ = 0;
+  bool exactPassTimes_ = true;
 };
 
 }  // namespace sg::gpu

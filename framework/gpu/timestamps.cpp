@@ -28,12 +28,12 @@ uint32_t GpuTimer::begin(VkCommandBuffer cmd, std::string label) {
   if (labels_.size() >= maxScopes_) throw GpuError("GpuTimer: more than " + std::to_string(maxScopes_) + " scopes");
   const auto scope = static_cast<uint32_t>(labels_.size());
   labels_.push_back(std::move(label));
-  vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, pool_, scope * 2);
+  vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, scope * 2);
   return scope;
 }
 
 void GpuTimer::end(VkCommandBuffer cmd, uint32_t scope) {
-  vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, pool_, scope * 2 + 1);
+  vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, scope * 2 + 1);
 }
 
 std::vector<TimedScope> GpuTimer::read() const {
