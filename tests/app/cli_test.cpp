@@ -196,6 +196,20 @@ TEST(Cli, OnlyTheShadingTheSceneUsesIsInTheGraph) {
   EXPECT_TRUE(forward.count("forward-opaque"));
 }
 
+TEST(Cli, DecoupledAndForwardObjectsInOneFrame) {
+  REQUIRE_ASSETS();
+  const auto stats = tempDir() / "mixed.json";
+  auto r = run("render " + std::string(SG_SOURCE_DIR) + "/tests/scenes/mixed.json --frame 10 --size 160x90 -o " +
+               (tempDir() / "mixed.png").string() + " --stats " + stats.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(stats);
+  const auto json = nlohmann::json::parse(in);
+  EXPECT_EQ(json["objects_decoupled"], 1);  // the helmet, with an automatic chart
+  EXPECT_GT(json["objects_forward"].get<int>(), 1);  // the box (by request) and the engine's 67 parts
+  EXPECT_EQ(json["composite_misses"], 0);
+  EXPECT_GT(json["covered_pixels"].get<int>(), 0);
+}
+
 TEST(Cli, DebugViewsRender) {
   for (const char* view : {"level", "occupancy", "sheet"}) {
     const auto png = tempDir() / (std::string("view-") + view + ".png");
