@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   sg::app::addRenderCommand(app);
   sg::app::addGraphCommand(app);
   sg::app::addInspectCommand(app);
+  sg::app::addBenchCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

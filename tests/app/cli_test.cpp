@@ -223,6 +223,33 @@ TEST(Cli, DebugViewsRender) {
   }
 }
 
+// The benchmark's output format on a tiny run (figures are not asserted: benchmarks, not timed tests).
+TEST(Cli, BenchWritesResultsForEveryConfiguration) {
+  const auto dir = tempDir() / "bench";
+  std::filesystem::remove_all(dir);
+  auto r = run("bench --out " + dir.string() + " --sizes 64x36 --repetitions 1 --flicker-frames 2 --reference-scale 2");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(dir / "results.json");
+  const auto json = nlohmann::json::parse(in);
+  for (const char* key : {"cpu", "cores", "device", "driver"}) EXPECT_TRUE(json["machine"].contains(key)) << key;
+  const auto& configs = json["runs"][0]["configs"];
+  EXPECT_GE(configs.size(), 10u);
+  std::set<std::string> names;
+  for (const auto& c : configs) {
+    names.insert(c["config"].get<std::string>());
+    for (const char* key : {"frame_ms_median", "pass_ms_median", "shadels_per_pixel", "shade_memory_bytes", "flip_mean",
+                            "psnr", "flicker_excess", "composite_misses"})
+      EXPECT_TRUE(c.contains(key)) << key;
+    EXPECT_GE(c["flip_mean"].get<double>(), 0.0);
+    EXPECT_LE(c["flip_mean"].get<double>(), 1.0);
+    EXPECT_EQ(c["composite_misses"], 0) << c["config"];
+  }
+  for (const char* name : {"forward", "decoupled point", "decoupled bilinear", "decoupled trilinear", "decoupled bias -1.0",
+                           "decoupled bias +2.0"})
+    EXPECT_TRUE(names.count(name)) << name;
+  EXPECT_TRUE(std::filesystem::exists(dir / "results.csv"));
+}
+
 TEST(Cli, GraphDotIsAGraphvizDigraph) {
   auto r = run("graph --dot --size 64x64");
   ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -1,0 +1,265 @@
+// shadelgraph bench [scene] --out DIR: what accuracy costs in time. Every
+// configuration renders the same frames in one run, alternating, several
+// repetitions; medians are reported with shading cost, memory, and error
+// against a 16-sample forward reference (ꟻLIP, PSNR) and flicker along a
+// camera path with sub-pixel motion. Writes results.json and results.csv.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include <builtin_shaders.hpp>
+#include <decoupled/decoupled_shading.hpp>
+#include <shadelgraph/gpu/device.hpp>
+#include <shadelgraph/image/flicker.hpp>
+#include <shadelgraph/image/flip.hpp>
+#include <shadelgraph/image/metrics.hpp>
+#include <shadelgraph/image/png.hpp>
+#include <shadelgraph/render/renderer.hpp>
+
+#include "commands.hpp"
+#include "scene_source.hpp"
+
+namespace sg::app {
+namespace {
+
+struct Config {
+  std::string name;
+  bool decoupled = false;
+  int filter = 2;
+  std::optional<float> bias;  // decoupled: fixed bias; empty = adjuster
+};
+
+struct BenchArgs {
+  std::vector<std::string> scenes;
+  std::string out = "out/bench";
+  std::vector<std::string> sizes{"640x360"};
+  int repetitions = 5;
+  int flickerFrames = 12;
+  int referenceScale = 4;  // reference: this many samples per pixel side (4 -> 16 spp)
+};
+
+std::vector<Config> sweep() {
+  std::vector<Config> configs{{"forward", false}};
+  for (int filter : {0, 1, 2})
+    configs.push_back({std::string("decoupled ") + (filter == 0 ? "point" : filter == 1 ? "bilinear" : "trilinear"), true,
+                       filter, 0.0f});
+  for (float bias : {-1.0f, -0.5f, 0.5f, 1.0f, 1.5f, 2.0f}) {
+    char name[64];
+    std::snprintf(name, sizeof name, "decoupled bias %+.1f", double(bias));
+    configs.push_back({name, true, 2, bias});
+  }
+  return configs;
+}
+
+image::Rgba8Image toImage(const gpu::HostImage& h) { return {h.width, h.height, h.rgba8}; }
+
+// Box filter of `scale` x `scale` blocks in linear light (the reference's supersampling).
+image::Rgba8Image downsample(const gpu::HostImage& big, uint32_t scale) {
+  auto toLinear = [](uint8_t v) {
+    const double c = v / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+  auto toSrgb = [](double l) {
+    const double c = l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055;
+    return uint8_t(std::clamp(c * 255.0 + 0.5, 0.0, 255.0));
+  };
+  image::Rgba8Image out{big.width / scale, big.height / scale, {}};
+  out.pixels.resize(size_t(out.width) * out.height * 4);
+  for (uint32_t y = 0; y < out.height; ++y)
+    for (uint32_t x = 0; x < out.width; ++x)
+      for (int c = 0; c < 4; ++c) {
+        double sum = 0;
+        for (uint32_t j = 0; j < scale; ++j)
+          for (uint32_t i = 0; i < scale; ++i) sum += toLinear(big.pixel(x * scale + i, y * scale + j)[c]);
+        out.pixels[(size_t(y) * out.width + x) * 4 + c] = c == 3 ? 255 : toSrgb(sum / double(scale * scale));
+      }
+  return out;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+// The camera at step `i` of a sideways move by a quarter pixel per frame (at
+// the distance of the scene's centre): sub-pixel motion, where shading
+// aliasing shows as flicker.
+scene::Camera pathCamera(scene::Camera camera, const scene::Scene& s, uint32_t height, int i) {
+  const float distance = glm::distance(camera.position(), scene::worldBounds(s).center());
+  const float pixel = 2.0f * distance * std::tan(camera.yfov * 0.5f) / float(height);
+  camera.world[3] += camera.world[0] * (0.25f * pixel * float(i));
+  return camera;
+}
+
+struct Session {
+  scene::Scene scene;
+  std::unique_ptr<plugins::DecoupledShading> decoupled;
+  std::unique_ptr<render::Renderer> renderer;
+};
+
+nlohmann::json benchScene(gpu::Device& device, const std::string& scenePath, uint32_t width, uint32_t height,
+                          const BenchArgs& args, const std::filesystem::path& out) {
+  const auto loaded = loadSceneArgument(scenePath);
+  const std::string sceneName = scenePath.empty() ? "default" : std::filesystem::path(scenePath).stem().string();
+  const auto configs = sweep();
+  std::vector<Session> sessions(configs.size());
+  for (size_t c = 0; c < configs.size(); ++c) {
+    auto& s = sessions[c];
+    s.scene = loaded.scene;
+    const auto mode = configs[c].decoupled ? scene::ShadingMode::Decoupled : scene::ShadingMode::Forward;
+    // A fixed bias below zero asks for up to 4x more shadels per level: give
+    // it the storage, so the sweep measures shading, not overflow.
+    const double storage = 2.0 * std::pow(4.0, std::max(0.0, -double(configs[c].bias.value_or(0.0f)))) * 1.5;
+    s.decoupled = std::make_unique<plugins::DecoupledShading>(
+        plugins::chooseShading(s.scene, mode),
+        plugins::DecoupledSettings{.storageFactor = storage, .filter = configs[c].filter, .fixedBias = configs[c].bias});
+    s.renderer = std::make_unique<render::Renderer>(device, s.scene, s.decoupled->recipe());
+  }
+  const scene::Camera camera = sessions[0].renderer->camera({.width = width, .height = height});
+
+  // Reference: forward with referenceScale² samples per pixel, box-filtered.
+  std::fprintf(stderr, "[bench] %s %ux%u: reference (%d spp)\n", sceneName.c_str(), width, height,
+               args.referenceScale * args.referenceScale);
+  const uint32_t scale = uint32_t(args.referenceScale);
+  auto reference = [&](int step) {
+    return downsample(sessions[0].renderer->render({.width = width * scale, .height = height * scale,
+                                                    .cameraOverride = pathCamera(camera, loaded.scene, height * scale, step * int(scale))})
+                          .image,
+                      scale);
+  };
+  std::vector<image::Rgba8Image> referencePath;
+  for (int i = 0; i < args.flickerFrames; ++i) referencePath.push_back(reference(i));
+  image::writePng(out / (sceneName + "-reference.png"), width, height, referencePath[0].pixels.data());
+
+  // Timing: configurations alternate inside each repetition, after a warm-up frame each.
+  std::vector<std::vector<double>> frameMs(configs.size());
+  std::vector<std::map<std::string, std::vector<double>>> passMs(configs.size());
+  std::vector<render::FrameResult> lastFrame(configs.size());
+  for (int rep = -1; rep < args.repetitions; ++rep)
+    for (size_t c = 0; c < configs.size(); ++c) {
+      auto frame = sessions[c].renderer->render({.width = width, .height = height, .cameraOverride = camera});
+      if (rep < 0) continue;  // warm-up: pipelines, adjuster
+      frameMs[c].push_back(frame.timings.gpuMs);
+      for (const auto& p : frame.timings.passes) passMs[c][p.name].push_back(p.gpuMs);
+      lastFrame[c] = std::move(frame);
+    }
+
+  nlohmann::json results = nlohmann::json::array();
+  for (size_t c = 0; c < configs.size(); ++c) {
+    std::fprintf(stderr, "[bench] %s %ux%u: %s\n", sceneName.c_str(), width, height, configs[c].name.c_str());
+    const auto test = toImage(lastFrame[c].image);
+    const auto flip = image::flipLdr(referencePath[0], test);
+    const auto diff = image::compareRgba8(referencePath[0].pixels, test.pixels);
+    std::vector<image::Rgba8Image> path;
+    for (int i = 0; i < args.flickerFrames; ++i)
+      path.push_back(toImage(sessions[c].renderer
+                                 ->render({.width = width, .height = height,
+                                           .cameraOverride = pathCamera(camera, loaded.scene, height, i)})
+                                 .image));
+    const auto flicker = image::flicker(path, referencePath);
+    const auto stats = sessions[c].decoupled->stats();
+    nlohmann::json passes = nlohmann::json::object();
+    for (const auto& [name, samples] : passMs[c]) passes[name] = median(samples);
+    const std::string file = sceneName + "-" + std::to_string(width) + "-" + configs[c].name + ".png";
+    image::writePng(out / file, test.width, test.height, test.pixels.data());
+    image::writePng(out / ("flip-" + file), width, height, image::flipHeatmap(flip).pixels.data());
+    results.push_back({{"config", configs[c].name},
+                       {"decoupled", configs[c].decoupled},
+                       {"filter", configs[c].filter},
+                       {"bias", configs[c].bias ? nlohmann::json(*configs[c].bias) : nlohmann::json(nullptr)},
+                       {"frame_ms_median", median(frameMs[c])},
+                       {"frame_ms_samples", frameMs[c]},
+                       {"pass_ms_median", passes},
+                       {"shadels_per_pixel", stats.counters.coveredPixels
+                                                 ? 64.0 * stats.counters.chunksAllocated / stats.counters.coveredPixels
+                                                 : 0.0},
+                       {"shade_memory_bytes", configs[c].decoupled ? stats.storageBytes + stats.remapBytes + stats.idMapBytes : 0},
+                       {"overflow_chunks", stats.counters.overflowChunks},
+                       {"composite_misses", stats.counters.compositeMisses},
+                       {"flip_mean", flip.mean},
+                       {"psnr", diff.psnr},
+                       {"flicker", flicker.test},
+                       {"flicker_reference", flicker.reference},
+                       {"flicker_excess", flicker.excess},
+                       {"flicker_ratio", flicker.ratio},
+                       {"image", file}});
+  }
+  return {{"scene", sceneName}, {"width", width}, {"height", height}, {"repetitions", args.repetitions},
+          {"reference_spp", args.referenceScale * args.referenceScale}, {"flicker_frames", args.flickerFrames},
+          {"configs", results}};
+}
+
+void writeCsv(const std::filesystem::path& file, const nlohmann::json& runs) {
+  std::ofstream csv(file);
+  csv << "scene,width,height,config,decoupled,filter,bias,frame_ms_median,shadels_per_pixel,shade_memory_bytes,"
+         "flip_mean,psnr,flicker,flicker_reference,flicker_excess\n";
+  for (const auto& run : runs)
+    for (const auto& c : run["configs"])
+      csv << run["scene"].get<std::string>() << ',' << run["width"] << ',' << run["height"] << ','
+          << c["config"].get<std::string>() << ',' << c["decoupled"] << ',' << c["filter"] << ','
+          << (c["bias"].is_null() ? std::string("") : c["bias"].dump()) << ',' << c["frame_ms_median"] << ','
+          << c["shadels_per_pixel"] << ',' << c["shade_memory_bytes"] << ',' << c["flip_mean"] << ',' << c["psnr"]
+          << ',' << c["flicker"] << ',' << c["flicker_reference"] << ',' << c["flicker_excess"] << '\n';
+}
+
+std::string cpuName() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown";
+}
+
+void runBench(const BenchArgs& args) {
+  const std::filesystem::path out = args.out;
+  std::filesystem::create_directories(out);
+  gpu::Context context;
+  gpu::Device device(context);
+  device.shaders().add(gpu::builtinShaders());
+  nlohmann::json runs = nlohmann::json::array();
+  const std::vector<std::string> scenes = args.scenes.empty() ? std::vector<std::string>{""} : args.scenes;
+  for (const auto& scenePath : scenes)
+    for (const auto& size : args.sizes) {
+      uint32_t w = 0, h = 0;
+      parseSize(size, w, h);
+      runs.push_back(benchScene(device, scenePath, w, h, args, out));
+    }
+  const nlohmann::json results{{"machine", {{"cpu", cpuName()},
+                                            {"cores", std::thread::hardware_concurrency()},
+                                            {"device", context.deviceName()},
+                                            {"driver", context.driverDescription()}}},
+                               {"runs", runs}};
+  std::ofstream(out / "results.json") << results.dump(2) << "\n";
+  writeCsv(out / "results.csv", runs);
+  std::printf("%-10s %-9s %-22s %9s %8s %8s %7s %9s\n", "scene", "size", "config", "frame ms", "shd/px", "FLIP",
+              "PSNR", "flicker+");
+  for (const auto& run : runs)
+    for (const auto& c : run["configs"])
+      std::printf("%-10s %4dx%-4d %-22s %9.2f %8.2f %8.4f %7.2f %9.5f\n", run["scene"].get<std::string>().c_str(),
+                  run["width"].get<int>(), run["height"].get<int>(), c["config"].get<std::string>().c_str(),
+                  c["frame_ms_median"].get<double>(), c["shadels_per_pixel"].get<double>(), c["flip_mean"].get<double>(),
+                  c["psnr"].get<double>(), c["flicker_excess"].get<double>());
+  std::printf("wrote %s/results.json, results.csv and images\n", out.c_str());
+  setExitCode(context.validationLog().count() ? 1 : 0);
+}
+
+}  // namespace
+
+void addBenchCommand(CLI::App& app) {
+  static BenchArgs args;
+  auto* cmd = app.add_subcommand("bench", "Measure what accuracy costs in time: configurations side by side");
+  cmd->add_option("scenes", args.scenes, "scenes (default: the built-in scene)");
+  cmd->add_option("--out", args.out, "output directory")->capture_default_str();
+  cmd->add_option("--sizes", args.sizes, "output sizes, e.g. 640x360 1280x720")->capture_default_str();
+  cmd->add_option("--repetitions", args.repetitions, "timed frames per configuration")->capture_default_str();
+  cmd->add_option("--flicker-frames", args.flickerFrames, "frames along the sub-pixel camera path")->capture_default_str();
+  cmd->add_option("--reference-scale", args.referenceScale, "reference samples per pixel side")->capture_default_str();
+  cmd->callback([] { runBench(args); });
+}
+
+}  // namespace sg::app
