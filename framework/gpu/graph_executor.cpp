@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include <shadelgraph/gpu/barriers.hpp>
 #include <shadelgraph/gpu/error.hpp>
 #include <shadelgraph/gpu/graph_to_vulkan.hpp>
 #include <shadelgraph/gpu/pass_context.hpp>
@@ -214,12 +215,7 @@ FrameTimings GraphExecutor::execute(const graph::RenderGraph& graph, const graph
       if (exactPassTimes_) {
         // Drivers may still be executing the pass when its end timestamp is
         // written (lavapipe runs work asynchronously until a barrier): wait for it.
-        VkMemoryBarrier2 all{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-        all.srcStageMask = all.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        dep.memoryBarrierCount = 1;
-        dep.pMemoryBarriers = &all;
-        vkCmdPipelineBarrier2(cmd, &dep);
+        memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT}, {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT});
       }
       timer_.end(cmd, scope);
       std::vector<const graph::Barrier*> after;

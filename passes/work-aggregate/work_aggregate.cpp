@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include <shadelgraph/gpu/barriers.hpp>
 #include <shadelgraph/gpu/pass_context.hpp>
 
 namespace sg::passes {
@@ -27,14 +28,9 @@ void addWorkAggregate(graph::RenderGraph& graph, render::DecoupledFrame& frame) 
     bindDecoupled(ctx, offsets, frame, offsetBindings);
     vkCmdDispatch(ctx.cmd(), 1, 1, 1);
     // The fill step reads the offsets the first step wrote: a barrier inside the pass.
-    VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    barrier.srcStageMask = barrier.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-    barrier.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-    barrier.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dep.memoryBarrierCount = 1;
-    dep.pMemoryBarriers = &barrier;
-    vkCmdPipelineBarrier2(ctx.cmd(), &dep);
+    gpu::memoryBarrier(ctx.cmd(), {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
+                       {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
     bindDecoupled(ctx, fill, frame, fillBindings);
     if (frame.ownedEntryCount) vkCmdDispatch(ctx.cmd(), (frame.ownedEntryCount + 63) / 64, 1, 1);
   });

@@ -1,5 +1,6 @@
 #include "device_fixture.hpp"
 
+#include <shadelgraph/gpu/barriers.hpp>
 #include <shadelgraph/gpu/buffer.hpp>
 #include <shadelgraph/gpu/descriptors.hpp>
 #include <shadelgraph/gpu/pipeline.hpp>
@@ -31,15 +32,8 @@ void main() {
     uint32_t push[2] = {kCount, kScale};
     vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof push, push);
     vkCmdDispatch(cmd, (kCount + 63) / 64, 1, 1);
-    VkMemoryBarrier2 host{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    host.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-    host.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-    host.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-    host.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dep.memoryBarrierCount = 1;
-    dep.pMemoryBarriers = &host;
-    vkCmdPipelineBarrier2(cmd, &dep);
+    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
+                       {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT});
   });
   auto values = out.view<uint32_t>();
   for (uint32_t i = 0; i < kCount; ++i) ASSERT_EQ(values[i], i * kScale + 1) << "at element " << i;

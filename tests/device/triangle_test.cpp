@@ -1,5 +1,6 @@
 #include "device_fixture.hpp"
 
+#include <shadelgraph/gpu/barriers.hpp>
 #include <shadelgraph/gpu/image.hpp>
 #include <shadelgraph/gpu/pipeline.hpp>
 #include <shadelgraph/gpu/readback.hpp>
@@ -26,17 +27,8 @@ void main() { color = vec4(1.0, 0.5, 0.0, 1.0); }
                                                    .fragment = {.path = "test/tri.frag"},
                                                    .colorFormats = {VK_FORMAT_R8G8B8A8_UNORM}});
   context->submitAndWait([&](VkCommandBuffer cmd) {
-    VkImageMemoryBarrier2 toColor{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-    toColor.dstStageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
-    toColor.dstAccessMask = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
-    toColor.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    toColor.newLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    toColor.image = target.handle();
-    toColor.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dep.imageMemoryBarrierCount = 1;
-    dep.pImageMemoryBarriers = &toColor;
-    vkCmdPipelineBarrier2(cmd, &dep);
+    gpu::imageBarrier(cmd, target.handle(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, {},
+                      {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
     VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     color.imageView = target.view();
     color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
