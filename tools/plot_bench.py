@@ -44,9 +44,10 @@ def plot_run(run, out):
     passes = sorted({p for c in configs for p in c["pass_ms_median"]})
     fig, ax = plt.subplots(figsize=(9, 5))
     bottoms = [0.0] * len(configs)
-    for p in passes:
+    colors = plt.get_cmap("tab20").colors
+    for i, p in enumerate(passes):
         values = [c["pass_ms_median"].get(p, 0.0) for c in configs]
-        ax.bar(range(len(configs)), values, bottom=bottoms, label=p)
+        ax.bar(range(len(configs)), values, bottom=bottoms, label=p, color=colors[i % len(colors)])
         bottoms = [b + v for b, v in zip(bottoms, values)]
     ax.set_xticks(range(len(configs)))
     ax.set_xticklabels([c["config"] for c in configs], rotation=35, ha="right", fontsize=8)

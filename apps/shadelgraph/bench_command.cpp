@@ -135,7 +135,8 @@ nlohmann::json benchScene(gpu::Device& device, const std::string& scenePath, uin
   };
   std::vector<image::Rgba8Image> referencePath;
   for (int i = 0; i < args.flickerFrames; ++i) referencePath.push_back(reference(i));
-  image::writePng(out / (sceneName + "-reference.png"), width, height, referencePath[0].pixels.data());
+  image::writePng(out / (sceneName + "-" + std::to_string(width) + "-reference.png"), width, height,
+                  referencePath[0].pixels.data());
 
   // Timing: configurations alternate inside each repetition, after a warm-up frame each.
   std::vector<std::vector<double>> frameMs(configs.size());

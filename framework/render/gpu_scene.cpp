@@ -265,10 +265,6 @@ void GpuScene::createMaterials(gpu::Context& context, gpu::MemoryAllocator& memo
   }
 }
 
-bool GpuScene::hasAlphaMode(scene::AlphaMode mode) const {
-  return std::any_of(draws_.begin(), draws_.end(), [&](const DrawItem& d) { return d.alphaMode == mode; });
-}
-
 void GpuScene::bindGeometry(VkCommandBuffer cmd) const {
   VkBuffer vb = vertices_.handle();
   VkDeviceSize offset = 0;

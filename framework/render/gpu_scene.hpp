@@ -54,7 +54,6 @@ class GpuScene {
   const std::vector<DrawItem>& draws() const { return draws_; }
   VkDescriptorSetLayout materialSetLayout() const { return materialLayout_; }
   VkDescriptorSet materialSet(uint32_t material) const { return materialSets_[material]; }
-  bool hasAlphaMode(scene::AlphaMode mode) const;
   VkBuffer vertexBuffer() const { return vertices_.handle(); }
   VkBuffer indexBuffer() const { return indices_.handle(); }
   // Every draw's index, 0..n-1 (a SceneView's draw list for all objects).

@@ -15,7 +15,10 @@
 #include "composite/composite.hpp"
 #include "debug-views/debug_views.hpp"
 #include "exposure/exposure.hpp"
+#include "alpha-blend/alpha_blend.hpp"
+#include "alpha-mask/alpha_mask.hpp"
 #include "forward/forward.hpp"
+#include "forward/forward_material.hpp"
 #include "layer-shade/layer_shade.hpp"
 #include "shadel-allocate/shadel_allocate.hpp"
 #include "shadel-clear/shadel_clear.hpp"
@@ -175,6 +178,7 @@ graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const
     passes::addLayerShade(graph, frame);
   }
   targets = passes::addForwardOpaque(graph, forwardView, targets);
+  if (passes::hasAlphaMode(forwardView, scene::AlphaMode::Mask)) targets = passes::addAlphaMask(graph, forwardView, targets);
   if (objectCount) {
     targets.color = passes::addComposite(graph, frame, targets.color, targets.depth);
     auto& copy = graph.addPass("counters-readback", graph::QueueClass::Graphics, graph::PassKind::Transfer);
@@ -185,8 +189,8 @@ graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const
       vkCmdCopyBuffer(ctx.cmd(), ctx.buffer(counters).handle(), ctx.buffer(readback).handle(), 1, &region);
     });
   }
-  if (in.view.scene.hasAlphaMode(scene::AlphaMode::Blend))
-    targets.color = passes::addForwardBlend(graph, forwardView, in.cameraPosition, targets);
+  if (passes::hasAlphaMode(forwardView, scene::AlphaMode::Blend))
+    targets.color = passes::addAlphaBlend(graph, forwardView, in.cameraPosition, targets);
   if (objectCount && settings_.view == DebugView::Occupancy)
     targets.color = passes::addOccupancyView(graph, frame, sheetRegionOrigin_, sheetRegionSize_);
   if (objectCount && settings_.view == DebugView::Sheet) targets.color = passes::addSheetView(graph, frame);

@@ -3,8 +3,8 @@
 
 namespace sg::plugins {
 
-// Forward shading of every object: z-prepass, forward opaque (+ masked),
-// forward blend (only if the scene has blended materials), exposure (async
+// Forward shading of every object: z-prepass, forward-opaque, alpha-mask and
+// alpha-blend (each only if the scene has such materials), exposure (async
 // compute), tonemap.
 graph::ResourceHandle forwardRecipe(graph::RenderGraph& graph, const render::FrameInputs& inputs);
 

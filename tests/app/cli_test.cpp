@@ -95,8 +95,9 @@ TEST(Cli, GraphJsonListsPassesResourcesBarriersAndWaits) {
     EXPECT_TRUE(p["waits"].is_array());
   }
   EXPECT_TRUE(names.count("forward-opaque"));
-  // The default scene has no blended material: no blend pass in its graph.
-  EXPECT_FALSE(names.count("forward-blend"));
+  // The default scene has no masked or blended material: no pass for them.
+  EXPECT_FALSE(names.count("alpha-blend"));
+  EXPECT_FALSE(names.count("alpha-mask"));
   bool transientWithMemory = false;
   for (const auto& res : plan["resources"]) {
     EXPECT_TRUE(res.contains("kind"));
@@ -113,14 +114,18 @@ std::string asset(const std::string& model) {
   if (!std::filesystem::exists(SG_ASSETS_DIR))                                               \
   GTEST_SKIP() << "shared assets not found at " << SG_ASSETS_DIR << " (../shared/assets/gltf)"
 
-TEST(Cli, OnlyScenesWithBlendedMaterialsGetABlendPass) {
+TEST(Cli, OnlyScenesWithMaskedOrBlendedMaterialsGetThosePasses) {
   REQUIRE_ASSETS();
   auto r = run("graph --json --size 64x64 " + asset("AlphaBlendModeTest"));
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  bool blend = false;
+  bool blend = false, mask = false;
   const auto plan = nlohmann::json::parse(r.output);
-  for (const auto& p : plan["passes"]) blend |= p["name"] == "forward-blend";
+  for (const auto& p : plan["passes"]) {
+    blend |= p["name"] == "alpha-blend";
+    mask |= p["name"] == "alpha-mask";
+  }
   EXPECT_TRUE(blend);
+  EXPECT_TRUE(mask);
 }
 
 TEST(Cli, InspectReportsChartVerdicts) {
