@@ -41,6 +41,7 @@ struct BenchArgs {
   int repetitions = 5;
   int flickerFrames = 12;
   int referenceScale = 4;  // reference: this many samples per pixel side (4 -> 16 spp)
+  bool shimmer = false;    // also the shimmer case: the default scene's gold sphere close up
 };
 
 std::vector<Config> sweep() {
@@ -103,10 +104,20 @@ struct Session {
   std::unique_ptr<render::Renderer> renderer;
 };
 
+// The shimmer case: the default scene's rippled gold sphere filling most of
+// the view, where a normal pattern finer than a pixel aliases under motion.
+scene::Camera shimmerCamera() {
+  scene::Camera camera{.name = "shimmer", .yfov = 0.6f, .znear = 0.05f, .zfar = 50.0f};
+  camera.world = scene::lookAtWorld({0.6f, 1.6f, 2.4f}, {0.0f, 1.2f, -1.5f});  // the sphere sits at (0, 1.2, -1.5)
+  return camera;
+}
+
 nlohmann::json benchScene(gpu::Device& device, const std::string& scenePath, uint32_t width, uint32_t height,
-                          const BenchArgs& args, const std::filesystem::path& out) {
+                          const BenchArgs& args, const std::filesystem::path& out,
+                          std::optional<scene::Camera> cameraOverride = {}, std::string runName = {}) {
   const auto loaded = loadSceneArgument(scenePath);
-  const std::string sceneName = scenePath.empty() ? "default" : std::filesystem::path(scenePath).stem().string();
+  std::string sceneName = scenePath.empty() ? "default" : std::filesystem::path(scenePath).stem().string();
+  if (!runName.empty()) sceneName = runName;
   const auto configs = sweep();
   std::vector<Session> sessions(configs.size());
   for (size_t c = 0; c < configs.size(); ++c) {
@@ -121,7 +132,8 @@ nlohmann::json benchScene(gpu::Device& device, const std::string& scenePath, uin
         plugins::DecoupledSettings{.storageFactor = storage, .filter = configs[c].filter, .fixedBias = configs[c].bias});
     s.renderer = std::make_unique<render::Renderer>(device, s.scene, s.decoupled->recipe());
   }
-  const scene::Camera camera = sessions[0].renderer->camera({.width = width, .height = height});
+  const scene::Camera camera =
+      cameraOverride ? *cameraOverride : sessions[0].renderer->camera({.width = width, .height = height});
 
   // Reference: forward with referenceScale² samples per pixel, box-filtered.
   std::fprintf(stderr, "[bench] %s %ux%u: reference (%d spp)\n", sceneName.c_str(), width, height,
@@ -230,6 +242,11 @@ void runBench(const BenchArgs& args) {
       parseSize(size, w, h);
       runs.push_back(benchScene(device, scenePath, w, h, args, out));
     }
+  if (args.shimmer) {
+    uint32_t w = 0, h = 0;
+    parseSize(args.sizes.front(), w, h);
+    runs.push_back(benchScene(device, "", w, h, args, out, shimmerCamera(), "shimmer"));
+  }
   const nlohmann::json results{{"machine", {{"cpu", cpuName()},
                                             {"cores", std::thread::hardware_concurrency()},
                                             {"device", context.deviceName()},
@@ -245,6 +262,24 @@ void runBench(const BenchArgs& args) {
                   run["width"].get<int>(), run["height"].get<int>(), c["config"].get<std::string>().c_str(),
                   c["frame_ms_median"].get<double>(), c["shadels_per_pixel"].get<double>(), c["flip_mean"].get<double>(),
                   c["psnr"].get<double>(), c["flicker_excess"].get<double>());
+  // The shimmer case at equal frame time: forward against the decoupled
+  // configuration whose median frame time is nearest to it.
+  for (const auto& run : runs) {
+    if (run["scene"] != "shimmer") continue;
+    const auto& configs = run["configs"];
+    const auto& forward = configs[0];
+    const nlohmann::json* nearest = nullptr;
+    for (const auto& c : configs)
+      if (c["decoupled"].get<bool>() &&
+          (!nearest || std::abs(c["frame_ms_median"].get<double>() - forward["frame_ms_median"].get<double>()) <
+                           std::abs((*nearest)["frame_ms_median"].get<double>() - forward["frame_ms_median"].get<double>())))
+        nearest = &c;
+    if (nearest)
+      std::printf("shimmer at equal time: forward %.1f ms flicker %.5f (reference %.5f); %s %.1f ms flicker %.5f\n",
+                  forward["frame_ms_median"].get<double>(), forward["flicker"].get<double>(),
+                  forward["flicker_reference"].get<double>(), (*nearest)["config"].get<std::string>().c_str(),
+                  (*nearest)["frame_ms_median"].get<double>(), (*nearest)["flicker"].get<double>());
+  }
   std::printf("wrote %s/results.json, results.csv and images\n", out.c_str());
   setExitCode(context.validationLog().count() ? 1 : 0);
 }
@@ -260,6 +295,7 @@ void addBenchCommand(CLI::App& app) {
   cmd->add_option("--repetitions", args.repetitions, "timed frames per configuration")->capture_default_str();
   cmd->add_option("--flicker-frames", args.flickerFrames, "frames along the sub-pixel camera path")->capture_default_str();
   cmd->add_option("--reference-scale", args.referenceScale, "reference samples per pixel side")->capture_default_str();
+  cmd->add_flag("--shimmer", args.shimmer, "add the shimmer case (default scene's gold sphere, close up)");
   cmd->callback([] { runBench(args); });
 }
 
