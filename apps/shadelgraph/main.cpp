@@ -7,6 +7,14 @@
 
 #include "commands.hpp"
 
+namespace sg::app {
+namespace {
+int gExitCode = 0;
+}
+int exitCode() { return gExitCode; }
+void setExitCode(int code) { gExitCode = code; }
+}  // namespace sg::app
+
 int main(int argc, char** argv) {
   CLI::App app{"shadelgraph: a render graph with generalized decoupled shading"};
   app.set_version_flag("--version", SG_VERSION);

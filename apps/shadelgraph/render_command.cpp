@@ -185,10 +185,4 @@ void addRenderCommand(CLI::App& app) {
   cmd->callback([] { runRender(args); });
 }
 
-namespace {
-int gExitCode = 0;
-}
-int exitCode() { return gExitCode; }
-void setExitCode(int code) { gExitCode = code; }
-
 }  // namespace sg::app

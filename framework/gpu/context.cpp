@@ -271,16 +271,21 @@ std::string Context::driverDescription() const {
   return std::string(driver.driverName) + " " + driver.driverInfo;
 }
 
-void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
+VkCommandBuffer beginOneTimeCommands(VkDevice device, VkCommandPool pool) {
   VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  alloc.commandPool = immediatePool_;
+  alloc.commandPool = pool;
   alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
   alloc.commandBufferCount = 1;
   VkCommandBuffer cmd;
-  SG_VK(vkAllocateCommandBuffers(device_, &alloc, &cmd));
+  SG_VK(vkAllocateCommandBuffers(device, &alloc, &cmd));
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   SG_VK(vkBeginCommandBuffer(cmd, &begin));
+  return cmd;
+}
+
+void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
+  VkCommandBuffer cmd = beginOneTimeCommands(device_, immediatePool_);
   record(cmd);
   SG_VK(vkEndCommandBuffer(cmd));
   VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};

@@ -30,6 +30,9 @@ struct QueueInfo {
   uint32_t family = 0;
 };
 
+// Allocates a primary command buffer from `pool` and begins it for one submission.
+VkCommandBuffer beginOneTimeCommands(VkDevice device, VkCommandPool pool);
+
 class Context {
  public:
   explicit Context(const ContextOptions& options = ContextOptions::fromEnvironment());

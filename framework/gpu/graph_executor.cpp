@@ -190,15 +190,7 @@ FrameTimings GraphExecutor::execute(const graph::RenderGraph& graph, const graph
   for (uint32_t b = 0; b < plan.batches.size(); ++b) {
     const graph::Batch& batch = plan.batches[b];
     const uint32_t q = graph::queueIndex(batch.queue);
-    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    alloc.commandPool = commandPools_[q];
-    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    alloc.commandBufferCount = 1;
-    VkCommandBuffer cmd;
-    SG_VK(vkAllocateCommandBuffers(vk, &alloc, &cmd));
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    SG_VK(vkBeginCommandBuffer(cmd, &begin));
+    VkCommandBuffer cmd = beginOneTimeCommands(vk, commandPools_[q]);
     for (graph::PassId id : plan.passesOf(batch)) {
       const graph::PlannedPass& planned = plan.passes[id.index];
       std::vector<const graph::Barrier*> before;

@@ -112,7 +112,8 @@ void DecoupledShading::initialize(const render::FrameInputs& in) {
   const uint64_t entriesPerSide = uint64_t(1) << (settings_.sheetSizeLog2 - 6);
   remap_ = gpu::Buffer(device.context(), device.memory(),
                        {entriesPerSide * entriesPerSide * sizeof(shadel::RemapEntry), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                        gpu::MemoryLocation::Device, "remap", "remap"});
+                        gpu::MemoryLocation::Device, "remap", "remap",
+                        /*concurrent: graphics and async compute both use it*/ true});
   readback_ = gpu::Buffer(device.context(), device.memory(),
                           {sizeof(ShadeCounters), VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryLocation::Readback,
                            "shade counters readback", "readback"});
