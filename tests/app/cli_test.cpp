@@ -15,6 +15,8 @@
 
 #include <shadelgraph/image/png.hpp>
 
+#include "test_support.hpp"
+
 namespace {
 
 struct Run {
@@ -106,16 +108,10 @@ TEST(Cli, GraphJsonListsPassesResourcesBarriersAndWaits) {
   EXPECT_TRUE(transientWithMemory);
 }
 
-std::string asset(const std::string& model) {
-  return std::string(SG_ASSETS_DIR) + "/" + model + "/glTF/" + model + ".gltf";
-}
-
-#define REQUIRE_ASSETS()                                                                     \
-  if (!std::filesystem::exists(SG_ASSETS_DIR))                                               \
-  GTEST_SKIP() << "shared assets not found at " << SG_ASSETS_DIR << " (../shared/assets/gltf)"
+std::string asset(const std::string& model) { return sg::test::samplePath(model).string(); }
 
 TEST(Cli, OnlyScenesWithMaskedOrBlendedMaterialsGetThosePasses) {
-  REQUIRE_ASSETS();
+  SG_REQUIRE_ASSETS();
   auto r = run("graph --json --size 64x64 " + asset("AlphaBlendModeTest"));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   bool blend = false, mask = false;
@@ -129,7 +125,7 @@ TEST(Cli, OnlyScenesWithMaskedOrBlendedMaterialsGetThosePasses) {
 }
 
 TEST(Cli, InspectReportsChartVerdicts) {
-  REQUIRE_ASSETS();
+  SG_REQUIRE_ASSETS();
   auto suzanne = run("inspect " + asset("Suzanne"));
   ASSERT_EQ(suzanne.exitCode, 0) << suzanne.output;
   EXPECT_NE(suzanne.output.find("chart: unique"), std::string::npos) << suzanne.output;
@@ -153,11 +149,11 @@ TEST(Cli, MalformedGltfFailsWithTheFileAndTheProblem) {
 }
 
 TEST(Cli, MissingTextureIsAnErrorNotABlankMaterial) {
-  REQUIRE_ASSETS();
+  SG_REQUIRE_ASSETS();
   const auto dir = tempDir() / "missing-texture";
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  const auto source = std::filesystem::path(SG_ASSETS_DIR) / "BoxTextured/glTF";
+  const auto source = sg::test::assetsDir() / "BoxTextured/glTF";
   for (const char* f : {"BoxTextured.gltf", "BoxTextured0.bin"}) std::filesystem::copy(source / f, dir / f);
   auto r = run("render --size 32x32 " + (dir / "BoxTextured.gltf").string());
   EXPECT_EQ(r.exitCode, 1) << r.output;
@@ -202,7 +198,7 @@ TEST(Cli, OnlyTheShadingTheSceneUsesIsInTheGraph) {
 }
 
 TEST(Cli, DecoupledAndForwardObjectsInOneFrame) {
-  REQUIRE_ASSETS();
+  SG_REQUIRE_ASSETS();
   const auto stats = tempDir() / "mixed.json";
   auto r = run("render " + std::string(SG_SOURCE_DIR) + "/tests/scenes/mixed.json --frame 10 --size 160x90 -o " +
                (tempDir() / "mixed.png").string() + " --stats " + stats.string());

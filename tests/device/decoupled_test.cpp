@@ -18,6 +18,7 @@
 #include <shadelgraph/scene/gltf_loader.hpp>
 
 #include "device_fixture.hpp"
+#include "test_support.hpp"
 
 namespace sg::test {
 namespace {
@@ -54,7 +55,7 @@ class Session {
 
 std::optional<scene::Scene> loadScene(const std::string& name) {
   if (name == "DefaultScene") return scene::makeDefaultScene();
-  const auto file = std::filesystem::path(SG_ASSETS_DIR) / name / "glTF" / (name + ".gltf");
+  const auto file = samplePath(name);
   if (!std::filesystem::exists(file)) return std::nullopt;
   return scene::loadGltf(file);
 }
@@ -62,7 +63,7 @@ std::optional<scene::Scene> loadScene(const std::string& name) {
 #define LOAD_OR_SKIP(var, name)                                                           \
   auto var = loadScene(name);                                                             \
   if (!var) {                                                                             \
-    GTEST_SKIP() << "asset not found under " << SG_ASSETS_DIR << " (../shared/assets/gltf)"; \
+    GTEST_SKIP() << "asset not found under " << assetsDir() << " (../shared/assets/gltf)";   \
   }
 
 class DecoupledScenes : public ::testing::TestWithParam<const char*> {};

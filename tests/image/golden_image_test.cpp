@@ -19,6 +19,7 @@
 #include <shadelgraph/scene/gltf_loader.hpp>
 
 #include "../device/device_fixture.hpp"
+#include "test_support.hpp"
 
 namespace sg::test {
 namespace {
@@ -48,7 +49,7 @@ TEST_P(GoldenImage, MatchesGolden) {
   if (name == "DefaultScene") {
     s = scene::makeDefaultScene();
   } else {
-    const auto file = std::filesystem::path(SG_ASSETS_DIR) / name / "glTF" / (name + ".gltf");
+    const auto file = samplePath(name);
     if (!std::filesystem::exists(file)) GTEST_SKIP() << "asset not found: " << file << " (../shared/assets/gltf absent)";
     s = scene::loadGltf(file);
   }

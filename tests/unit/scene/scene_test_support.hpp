@@ -9,33 +9,18 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 namespace sg::scene::test {
 
 // The Khronos sample models (see shared/assets/README.md).
-std::filesystem::path assetsDir();
-bool haveAssets();
-// <assets>/<model>/glTF/<model>.gltf
-std::filesystem::path samplePath(std::string_view model);
-
-// Debian's assimp-testmodels.
-std::filesystem::path assimpDir();
-bool haveAssimpModels();
-
-// A fresh directory, removed with everything in it when this goes away.
-class TempDir {
- public:
-  TempDir();
-  ~TempDir();
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path write(const std::string& name, std::string_view text) const;
-  std::filesystem::path write(const std::string& name, const std::vector<uint8_t>& bytes) const;
-
- private:
-  std::filesystem::path path_;
-};
+// Sample models, assimp-testmodels and temporary directories: tests/support.
+using sg::test::assetsDir;
+using sg::test::assimpDir;
+using sg::test::haveAssets;
+using sg::test::haveAssimpModels;
+using sg::test::samplePath;
+using sg::test::TempDir;
 
 // Little-endian bytes of floats / 16-bit / 32-bit values, to build .bin files.
 std::vector<uint8_t> bytesOf(const std::vector<float>& values);
@@ -50,13 +35,6 @@ std::filesystem::path writeTriangleGltf(const TempDir& dir, const std::string& n
                                         const std::string& sceneNodes, const std::string& extra = "");
 
 }  // namespace sg::scene::test
-
-#define SG_REQUIRE_ASSETS()                                                                                     \
-  do {                                                                                                          \
-    if (!::sg::scene::test::haveAssets())                                                                       \
-      GTEST_SKIP() << "glTF sample assets not found at " << ::sg::scene::test::assetsDir()                      \
-                   << " (they live in shared/assets/gltf beside the project)";                                  \
-  } while (0)
 
 #define SG_REQUIRE_ASSIMP_MODELS()                                                                              \
   do {                                                                                                          \

@@ -192,7 +192,7 @@ struct SampleCase {
 class AutoChartSamples : public ::testing::TestWithParam<SampleCase> {};
 
 TEST_P(AutoChartSamples, ChartIsUniqueWithGuttersAndBakesAnIdMap) {
-  SG_SHADEL_REQUIRE_ASSETS();
+  SG_REQUIRE_ASSETS();
   scene::LoadOptions load;
   load.decodeImages = false;
   const scene::Scene scene = scene::loadGltf(test::samplePath(GetParam().model), load);

@@ -22,7 +22,7 @@ namespace {
 // texels, and orphans only where Hall's condition fails (checkIdMapLevel),
 // and it reports the counts.
 TEST(IdMapAssets, EveryTriangleOwnsATexelWhereTexelsSuffice) {
-  SG_SHADEL_REQUIRE_ASSETS();
+  SG_REQUIRE_ASSETS();
   size_t meshesBaked = 0;
   bool sawSuzanne = false;
   for (const std::filesystem::path& file : test::allSamples()) {
