@@ -1,7 +1,5 @@
 #include <shadelgraph/gpu/device.hpp>
 
-#include <utility>
-
 #include <shadelgraph/gpu/error.hpp>
 
 namespace sg::gpu {
@@ -12,20 +10,17 @@ Device::Device(Context& context, const DeviceOptions& options)
       compiler_(library_, options.cacheDirectory),
       pipelineCache_(context, options.cacheDirectory.empty() ? std::filesystem::path()
                                                              : options.cacheDirectory / "pipelines.bin") {
-  for (auto [filter, sampler] : {std::pair{VK_FILTER_NEAREST, &nearest_}, std::pair{VK_FILTER_LINEAR, &linear_}}) {
-    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    info.magFilter = info.minFilter = filter;
-    info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    info.maxLod = VK_LOD_CLAMP_NONE;
-    SG_VK(vkCreateSampler(context.device(), &info, nullptr, sampler));
-  }
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = info.minFilter = VK_FILTER_NEAREST;
+  info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.maxLod = VK_LOD_CLAMP_NONE;
+  SG_VK(vkCreateSampler(context.device(), &info, nullptr, &nearest_));
 }
 
 Device::~Device() {
   vkDeviceWaitIdle(context_.device());
   pipelines_.clear();
   vkDestroySampler(context_.device(), nearest_, nullptr);
-  vkDestroySampler(context_.device(), linear_, nullptr);
 }
 
 const Pipeline& Device::pipeline(const std::string& name, const std::function<ComputePipelineDesc()>& desc) {

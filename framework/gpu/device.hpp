@@ -34,9 +34,8 @@ class Device {
   ShaderLibrary& shaders() { return library_; }
   ShaderCompiler& compiler() { return compiler_; }
   PipelineCache& pipelineCache() { return pipelineCache_; }
-  // Clamp-to-edge samplers for full-screen and image-processing passes.
+  // A clamp-to-edge nearest sampler for full-screen and image-processing passes.
   VkSampler nearestSampler() const { return nearest_; }
-  VkSampler linearSampler() const { return linear_; }
 
   // The pipeline built from `desc` the first time `name` is asked for.
   const Pipeline& pipeline(const std::string& name, const std::function<ComputePipelineDesc()>& desc);
@@ -50,7 +49,6 @@ class Device {
   PipelineCache pipelineCache_;
   std::map<std::string, Pipeline> pipelines_;
   VkSampler nearest_ = VK_NULL_HANDLE;
-  VkSampler linear_ = VK_NULL_HANDLE;
 };
 
 }  // namespace sg::gpu

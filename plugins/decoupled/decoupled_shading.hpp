@@ -54,7 +54,6 @@ class DecoupledShading {
   // Reads the counters of the last executed frame (call after it completed).
   DecoupledStats stats() const;
   const std::vector<ShadingChoice>& choices() const { return choices_; }
-  float nextBias() const { return bias_; }
 
  private:
   void initialize(const render::FrameInputs& inputs);
