@@ -57,7 +57,7 @@ void DecoupledShading::initialize(const render::FrameInputs& in) {
   const auto& draws = in.view.scene.draws();
   space_ = std::make_unique<shadel::ShadelSpace>(shadel::ShadelSpaceConfig{settings_.sheetSizeLog2});
   shadel::IdMapCache cache;
-  std::map<int, std::pair<shadel::TriangleIdMap, uint32_t>> maps;  // by mesh: map and its offset
+  std::map<int, std::pair<shadel::DetailLevels, uint32_t>> maps;  // by mesh: its levels and ID-map offset
   std::vector<uint32_t> idTexels;
   std::vector<DecoupledObject> objects;
   for (uint32_t d = 0; d < draws.size(); ++d) {
@@ -75,11 +75,11 @@ void DecoupledShading::initialize(const render::FrameInputs& in) {
       auto map = cache.loadOrBake(mesh, chart, {.level0Size = level0});
       const auto offset = uint32_t(idTexels.size());
       idTexels.insert(idTexels.end(), map.texels.begin(), map.texels.end());
-      it = maps.emplace(meshIndex, std::pair{std::move(map), offset}).first;
+      it = maps.emplace(meshIndex, std::pair{map.levels, offset}).first;
     }
-    const auto& [map, offset] = it->second;
+    const auto& [levels, offset] = it->second;
     const auto object = uint32_t(objects.size());
-    const auto result = space_->allocate(object, map.levels);
+    const auto result = space_->allocate(object, levels);
     if (!result.ok()) {
       choice.decoupled = false;
       choice.reason = "no shadel space: " + result.message;
