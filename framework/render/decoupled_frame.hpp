@@ -24,7 +24,9 @@ inline constexpr uint32_t kBindFrame = 0, kBindParams = 1, kBindObjects = 2, kBi
                           kBindLayerImage = 13;
 
 struct DecoupledFrame {
-  SceneView view;  // view.draws: the decoupled objects' draws, in object order
+  SceneView view;                       // view.draws: the draws of the objects shaded decoupled this frame
+  std::span<const uint32_t> objectIds;  // their decoupled object index, one per view.draws entry
+  std::span<const uint32_t> objectDraws;  // every decoupled object's draw, by object index (materials)
   const gpu::Buffer& params;
   const gpu::Buffer& objects;
   const gpu::Buffer& shadelInstances;

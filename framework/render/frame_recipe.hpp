@@ -20,6 +20,8 @@ struct FrameInputs {
   gpu::Device& device;
   gpu::GraphExecutor& executor;  // to bind the recipe's own persistent and imported resources
   glm::vec3 cameraPosition{0.0f};
+  // Pixels an object of size 1 covers at distance 1 (perspective); 0 for orthographic.
+  float pixelsPerUnitAtUnitDistance = 0.0f;
   uint32_t width = 0, height = 0;
   graph::ResourceHandle output;  // imported 8-bit sRGB colour image
 };

@@ -54,8 +54,11 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
       "output", {.format = graph::Format::RGBA8Srgb, .size = graph::Size::absolute(settings.width, settings.height)},
       graph::ImportedState{graph::Layout::Undefined},
       graph::FinalState{graph::Layout::TransferSrc, graph::PipelineStage::Transfer, graph::AccessFlag::TransferRead});
-  const auto result = recipe_(frame->graph, {frame->view, scene_, device_, executor_, cam.position(), settings.width,
-                                             settings.height, frame->output});
+  const float focal = cam.projection == scene::Projection::Perspective
+                          ? std::abs(uniforms.projection[1][1]) * 0.5f * float(settings.height)
+                          : 0.0f;
+  const auto result = recipe_(frame->graph, {frame->view, scene_, device_, executor_, cam.position(), focal,
+                                             settings.width, settings.height, frame->output});
   frame->graph.markOutput(result);
   return frame;
 }

@@ -24,7 +24,7 @@ void addLayerShade(graph::RenderGraph& graph, render::DecoupledFrame& frame) {
     const VkBuffer args = ctx.buffer(frame.args).handle();
     const auto& draws = frame.view.scene.draws();
     for (uint32_t object = 0; object < frame.objectCount; ++object) {
-      VkDescriptorSet material = frame.view.scene.materialSet(draws[frame.view.draws[object]].material);
+      VkDescriptorSet material = frame.view.scene.materialSet(draws[frame.objectDraws[object]].material);
       vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout(), 1, 1, &material, 0, nullptr);
       for (uint32_t layer = 0; layer < frame.layerCount; ++layer) {
         const uint32_t push[2] = {object, layer};

@@ -28,8 +28,8 @@ void addShadelMark(graph::RenderGraph& graph, render::DecoupledFrame& frame, gra
     bindDecoupled(ctx, pipeline, frame, bindings);
     frame.view.scene.bindGeometry(ctx.cmd());
     const auto& draws = frame.view.scene.draws();
-    for (uint32_t object = 0; object < frame.view.draws.size(); ++object)
-      drawItem(ctx.cmd(), pipeline, draws[frame.view.draws[object]], object);
+    for (size_t i = 0; i < frame.view.draws.size(); ++i)
+      drawItem(ctx.cmd(), pipeline, draws[frame.view.draws[i]], frame.objectIds[i]);
     ctx.endRendering();
   });
 }

@@ -90,6 +90,9 @@ void DecoupledShading::initialize(const render::FrameInputs& in) {
     objects.push_back({draw.world, draw.firstIndex, draw.vertexOffset, draw.indexCount / 3, draw.material, offset,
                        uint32_t(choice.uvSet), choice.tileOffset});
     decoupledDraws_.push_back(d);
+    const scene::Bounds world = scene::transformBounds(mesh.bounds, draw.world);
+    objectSpheres_.emplace_back(world.center(), world.radius());
+    objectAutomatic_.push_back(choice.automatic);
   }
   const auto tables = shadel::buildGpuTables(*space_);
   // The occupancy view shows the square around every allocated level.
@@ -146,8 +149,27 @@ graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const
                                storage_.counterCount, {}};
   params_.write(&params, sizeof params);
 
-  render::SceneView forwardView{in.view.scene, in.view.frameUniforms, forwardDraws_};
-  render::DecoupledFrame frame{.view = {in.view.scene, in.view.frameUniforms, decoupledDraws_},
+  // Objects in mode auto that are tiny on screen this frame go forward; they
+  // keep their shadel space and simply mark nothing.
+  frameDraws_.clear();
+  frameObjects_.clear();
+  frameForwardDraws_ = forwardDraws_;
+  for (uint32_t object = 0; object < objectCount; ++object) {
+    const glm::vec4 sphere = objectSpheres_[object];
+    const float distance = glm::distance(glm::vec3(sphere), in.cameraPosition);
+    const bool tiny = objectAutomatic_[object] && in.pixelsPerUnitAtUnitDistance > 0.0f && distance > sphere.w &&
+                      sphere.w * in.pixelsPerUnitAtUnitDistance / distance < kTinyObjectPixels;
+    if (tiny) {
+      frameForwardDraws_.push_back(decoupledDraws_[object]);
+    } else {
+      frameDraws_.push_back(decoupledDraws_[object]);
+      frameObjects_.push_back(object);
+    }
+  }
+  render::SceneView forwardView{in.view.scene, in.view.frameUniforms, frameForwardDraws_};
+  render::DecoupledFrame frame{.view = {in.view.scene, in.view.frameUniforms, frameDraws_},
+                               .objectIds = frameObjects_,
+                               .objectDraws = decoupledDraws_,
                                .params = params_, .objects = objects_, .shadelInstances = shadelInstances_,
                                .levelRects = levelRects_, .ownedEntries = ownedEntries_, .idMaps = idMaps_,
                                .ownedEntryCount = ownedEntryCount_, .objectCount = objectCount,
@@ -204,7 +226,7 @@ DecoupledStats DecoupledShading::stats() const {
   DecoupledStats s;
   if (readback_) std::memcpy(&s.counters, readback_.mapped(), sizeof s.counters);
   s.bias = lastFrameBias_;
-  s.objects = uint32_t(decoupledDraws_.size());
+  s.objects = uint32_t(frameObjects_.size());
   s.capacityChunks = storage_.capacityChunks();
   s.storageBytes = uint64_t(storage_.widthTexels()) * storage_.heightTexels() * 8;
   s.remapBytes = remap_.size();

@@ -24,6 +24,10 @@ namespace sg::plugins {
 // What the frame shows: the shaded image, or a debug view of decoupled shading.
 enum class DebugView { Final, Level, Occupancy, Sheet };
 
+// An object in mode auto is shaded forward while its bounding sphere's
+// projected radius is below this many pixels: too small to pay for its chunks.
+inline constexpr float kTinyObjectPixels = 8.0f;
+
 struct DecoupledSettings {
   uint32_t sheetSizeLog2 = 16;  // 64K x 64K virtual shadels; up to 19 (512K)
   double storageFactor = shadel::kDefaultStorageFactor;  // shade storage = factor x output pixels
@@ -37,7 +41,7 @@ struct DecoupledSettings {
 struct DecoupledStats {
   ShadeCounters counters{};  // of the last executed frame
   float bias = 0.0f;         // the bias that frame was rendered with
-  uint32_t objects = 0;
+  uint32_t objects = 0;  // shaded decoupled in that frame
   uint32_t capacityChunks = 0;
   uint64_t storageBytes = 0;  // shade storage, per layer
   uint64_t remapBytes = 0;
@@ -65,7 +69,13 @@ class DecoupledShading {
   float lastFrameBias_ = 0.0f;
   uint64_t frames_ = 0;
   bool initialized_ = false;
+  // Static: every decoupled object's draw (by object index), its world
+  // bounding sphere and whether its mode is auto; the draws always forward.
   std::vector<uint32_t> decoupledDraws_, forwardDraws_;
+  std::vector<glm::vec4> objectSpheres_;
+  std::vector<bool> objectAutomatic_;
+  // This frame: the objects shaded decoupled (draws and ids), and the forward draws.
+  std::vector<uint32_t> frameDraws_, frameObjects_, frameForwardDraws_;
   std::unique_ptr<shadel::ShadelSpace> space_;
   uint32_t ownedEntryCount_ = 0;
   shadel::StorageLayout storage_;

@@ -16,7 +16,7 @@ std::vector<ShadingChoice> chooseShading(scene::Scene& scene, std::optional<scen
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
     const auto& instance = scene.instances[i];
     const auto mode = override.value_or(instance.shading);
-    ShadingChoice choice{.instance = i};
+    ShadingChoice choice{.instance = i, .automatic = mode == scene::ShadingMode::Auto};
     auto& mesh = scene.meshes[size_t(instance.mesh)];
     if (mode == scene::ShadingMode::Forward) {
       choice.reason = "forward by request";

@@ -17,6 +17,7 @@ namespace sg::plugins {
 struct ShadingChoice {
   uint32_t instance = 0;
   bool decoupled = false;
+  bool automatic = false;  // mode auto: forward in frames where the object is tiny on screen
   std::string reason;  // why forward, or how decoupled ("unique TEXCOORD_0", "automatic chart: 212 charts")
   int uvSet = -1;      // shading chart
   glm::vec2 tileOffset{0.0f};

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <random>
+#include <set>
 
 #include <builtin_shaders.hpp>
 #include <decoupled/decoupled_shading.hpp>
@@ -144,6 +145,25 @@ TEST_P(DecoupledScenes, NoCompositeMissesFromRandomCameras) {
 INSTANTIATE_TEST_SUITE_P(Scenes, DecoupledScenes,
                          ::testing::Values("DefaultScene", "Suzanne", "Duck", "DamagedHelmet"),
                          [](const auto& testInfo) { return std::string(testInfo.param); });
+
+// Mode auto: an object with a unique chart is decoupled unless it is tiny on
+// screen (projected radius under kTinyObjectPixels), then it is drawn forward.
+TEST(DecoupledAuto, TinyObjectsAreShadedForward) {
+  Session d(scene::makeDefaultScene(64), scene::ShadingMode::Auto, {.storageChunks = 4096});
+  d.render(96);  // the scene's own camera: everything is large
+  EXPECT_EQ(d.stats().objects, 11u);
+  scene::Camera far{.name = "far", .yfov = 0.9f, .znear = 10.0f, .zfar = 1000.0f};
+  far.world = scene::lookAtWorld({0.0f, 120.0f, 280.0f}, {0.0f, 0.0f, 0.0f});  // the ground: ~3.6 px radius
+  const auto image = d.render(96, far);
+  EXPECT_EQ(d.stats().objects, 0u) << "every object is a few pixels: all forward";
+  EXPECT_EQ(d.stats().counters.chunksMarked, 0u);
+  EXPECT_EQ(d.stats().counters.compositeMisses, 0u);
+  // The distant courtyard is still drawn (by the forward pass): not just sky.
+  std::set<uint32_t> colours;
+  for (size_t i = 0; i < image.rgba8.size(); i += 4)
+    colours.insert(uint32_t(image.rgba8[i]) << 16 | uint32_t(image.rgba8[i + 1]) << 8 | image.rgba8[i + 2]);
+  EXPECT_GT(colours.size(), 2u);
+}
 
 // The adjuster with storage shrunk until bias 0 overflows: the bias settles
 // within 10 frames and then stays put, the settled frames neither overflow nor
