@@ -27,25 +27,29 @@ ResourceHandle RenderGraph::createBuffer(std::string name, const BufferDesc& des
   return add(std::move(decl));
 }
 
-ResourceHandle RenderGraph::importImage(std::string name, const ImageDesc& desc, ImportedState initial,
-                                        FinalState final, ImportMode mode) {
-  ResourceDecl decl{.kind = ResourceKind::Imported, .type = ResourceType::Image};
+namespace {
+// An imported resource of either type: the same states and read-only flag.
+ResourceDecl importDecl(std::string name, ResourceType type, ImportedState initial, FinalState final, ImportMode mode) {
+  ResourceDecl decl{.kind = ResourceKind::Imported, .type = type};
   decl.name = std::move(name);
-  decl.image = desc;
   decl.initialState = initial;
   decl.finalState = final;
   decl.readOnly = mode == ImportMode::ReadOnly;
+  return decl;
+}
+}  // namespace
+
+ResourceHandle RenderGraph::importImage(std::string name, const ImageDesc& desc, ImportedState initial,
+                                        FinalState final, ImportMode mode) {
+  ResourceDecl decl = importDecl(std::move(name), ResourceType::Image, initial, final, mode);
+  decl.image = desc;
   return add(std::move(decl));
 }
 
 ResourceHandle RenderGraph::importBuffer(std::string name, const BufferDesc& desc, ImportedState initial,
                                          FinalState final, ImportMode mode) {
-  ResourceDecl decl{.kind = ResourceKind::Imported, .type = ResourceType::Buffer};
-  decl.name = std::move(name);
+  ResourceDecl decl = importDecl(std::move(name), ResourceType::Buffer, initial, final, mode);
   decl.buffer = desc;
-  decl.initialState = initial;
-  decl.finalState = final;
-  decl.readOnly = mode == ImportMode::ReadOnly;
   return add(std::move(decl));
 }
 
