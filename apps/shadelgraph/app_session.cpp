@@ -2,13 +2,35 @@
 
 #include <cstdio>
 
+#include <CLI/CLI.hpp>
+
+#include <builtin_materials.hpp>
 #include <builtin_shaders.hpp>
+#include <shadelgraph/plugin/plugin_loader.hpp>
 
 #include "scene_source.hpp"
 
 namespace sg::app {
 
-AppSession::AppSession(const std::string& scenePath, const std::string& mode, plugins::DecoupledSettings settings) {
+std::vector<std::string> PluginArgs::paths() const {
+  std::vector<std::string> all = directories;
+  all.insert(all.end(), libraries.begin(), libraries.end());
+  return all;
+}
+
+void addPluginOptions(CLI::App& command, PluginArgs& args) {
+  // Existence is checked by the loader, whose messages name the plugin.
+  command.add_option("--plugin", args.libraries, "load a plugin library (.so); repeatable");
+  command.add_option("--plugin-dir", args.directories, "load every plugin (*.so) of a directory; repeatable");
+}
+
+AppSession::AppSession(const std::string& scenePath, const std::string& mode, plugins::DecoupledSettings settings,
+                       std::vector<std::string> pluginPaths) {
+  // The built-ins, then the plugins (which may use built-in layers); a bad
+  // plugin fails before the scene loads and the device starts.
+  materials::registerBuiltinMaterials(registry);
+  const auto plugged = plugin::loadPlugins({pluginPaths.begin(), pluginPaths.end()}, registry);
+  for (const auto& p : plugged) std::fprintf(stderr, "plugin '%s': %s\n", p.name.c_str(), p.library.c_str());
   auto loaded = loadSceneArgument(scenePath);
   scene = std::move(loaded.scene);
   cameraPaths = std::move(loaded.cameraPaths);
@@ -19,7 +41,7 @@ AppSession::AppSession(const std::string& scenePath, const std::string& mode, pl
   context = std::make_unique<gpu::Context>();
   device = std::make_unique<gpu::Device>(*context);
   device->shaders().add(gpu::builtinShaders());
-  renderer = std::make_unique<render::Renderer>(*device, scene, decoupled->recipe());
+  renderer = std::make_unique<render::Renderer>(*device, scene, decoupled->recipe(), registry);
 }
 
 AppSession::~AppSession() {

@@ -1,28 +1,46 @@
 #pragma once
 // What the device commands share: a Vulkan context (validation from
-// SG_VALIDATION), the gpu device with the built-in shaders, the scene, and a
-// renderer running the forward recipe.
+// SG_VALIDATION), the gpu device with the built-in shaders, the scene, the
+// plugin registry, and a renderer running the forward recipe.
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <shadelgraph/gpu/context.hpp>
 #include <shadelgraph/gpu/device.hpp>
+#include <shadelgraph/plugin/registry.hpp>
 #include <shadelgraph/render/renderer.hpp>
 
 #include <decoupled/decoupled_shading.hpp>
 #include <shadelgraph/scene/camera_path.hpp>
 #include <shadelgraph/scene/scene.hpp>
 
+namespace CLI {
+class App;
+}
+
 namespace sg::app {
+
+// --plugin FILE (repeatable) and --plugin-dir DIR (repeatable) of the device commands.
+struct PluginArgs {
+  std::vector<std::string> libraries, directories;
+  // What AppSession loads: the directories' plugins, then the named libraries.
+  std::vector<std::string> paths() const;
+};
+void addPluginOptions(CLI::App& command, PluginArgs& args);
 
 struct AppSession {
   // mode: "" (each object's own), "forward", "decoupled" or "auto" for every object.
-  AppSession(const std::string& scenePath, const std::string& mode = "", plugins::DecoupledSettings settings = {});
+  // pluginPaths: plugin libraries or directories of them (--plugin, --plugin-dir),
+  // loaded after those of $SG_PLUGIN_PATH.
+  AppSession(const std::string& scenePath, const std::string& mode = "", plugins::DecoupledSettings settings = {},
+             std::vector<std::string> pluginPaths = {});
   ~AppSession();
   // Non-zero (and a message on stderr) when validation reported anything.
   int validationExitCode() const;
 
+  // Material layers, materials and passes: the built-ins and every plugin's.
+  plugin::Registry registry;
   scene::Scene scene;
   std::vector<scene::CameraPath> cameraPaths;
   std::unique_ptr<gpu::Context> context;

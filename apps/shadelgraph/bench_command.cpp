@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <builtin_materials.hpp>
 #include <builtin_shaders.hpp>
 #include <decoupled/decoupled_shading.hpp>
 #include <shadelgraph/gpu/device.hpp>
@@ -130,7 +131,8 @@ nlohmann::json benchScene(gpu::Device& device, const std::string& scenePath, uin
     s.decoupled = std::make_unique<plugins::DecoupledShading>(
         plugins::chooseShading(s.scene, mode),
         plugins::DecoupledSettings{.storageFactor = storage, .filter = configs[c].filter, .fixedBias = configs[c].bias});
-    s.renderer = std::make_unique<render::Renderer>(device, s.scene, s.decoupled->recipe());
+    s.renderer = std::make_unique<render::Renderer>(device, s.scene, s.decoupled->recipe(),
+                                                    materials::builtinMaterials());
   }
   const scene::Camera camera =
       cameraOverride ? *cameraOverride : sessions[0].renderer->camera({.width = width, .height = height});

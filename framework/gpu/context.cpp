@@ -46,6 +46,8 @@ std::vector<std::string> missingFeatures(const FeatureChain& f) {
   };
   need(f.core.features.shaderInt64, "VkPhysicalDeviceFeatures::shaderInt64");
   need(f.core.features.fragmentStoresAndAtomics, "VkPhysicalDeviceFeatures::fragmentStoresAndAtomics");
+  // gl_PrimitiveID in fragment shaders (the triangle-ID debug layer, forward).
+  need(f.core.features.geometryShader, "VkPhysicalDeviceFeatures::geometryShader");
   need(f.v12.timelineSemaphore, "VkPhysicalDeviceVulkan12Features::timelineSemaphore");
   need(f.v12.bufferDeviceAddress, "VkPhysicalDeviceVulkan12Features::bufferDeviceAddress");
   need(f.v12.shaderBufferInt64Atomics, "VkPhysicalDeviceVulkan12Features::shaderBufferInt64Atomics");
@@ -229,6 +231,7 @@ void Context::createDevice() {
   FeatureChain enable;
   enable.core.features.shaderInt64 = VK_TRUE;
   enable.core.features.fragmentStoresAndAtomics = VK_TRUE;
+  enable.core.features.geometryShader = VK_TRUE;
   enable.v12.timelineSemaphore = VK_TRUE;
   enable.v12.bufferDeviceAddress = VK_TRUE;
   enable.v12.shaderBufferInt64Atomics = VK_TRUE;

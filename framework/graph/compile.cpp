@@ -11,26 +11,41 @@
 namespace sg::graph {
 namespace {
 
-// Requirements of the used transients, from the options (or estimated).
-void gatherRequirements(const std::vector<PlannedResource>& resources, const CompileOptions& options,
-                        std::vector<MemoryRequirements>& requirements, bool& estimated) {
+// Requirements of the used transients, from the options (or estimated), into
+// their plan entries and `requirements` (by ResourceId), and their lifetimes
+// for placement: one sweep over the planned resources.
+void gatherTransients(std::vector<PlannedResource>& resources, const CompileOptions& options,
+                      std::vector<MemoryRequirements>& requirements, std::vector<TransientLifetime>& transients,
+                      bool& estimated) {
   requirements.assign(resources.size(), MemoryRequirements{});
+  transients.clear();
   estimated = false;
   for (uint32_t r = 0; r < resources.size(); ++r) {
-    if (!isTransient(resources[r].kind) || resources[r].culled) continue;
+    PlannedResource& resource = resources[r];
+    if (!isTransient(resource.kind) || resource.culled) continue;
     if (!options.memoryRequirements.empty()) {
       if (r >= options.memoryRequirements.size()) {
-        throw std::invalid_argument("CompileOptions::memoryRequirements has no entry for '" + resources[r].name +
-                                    "'");
+        throw std::invalid_argument("CompileOptions::memoryRequirements has no entry for '" + resource.name + "'");
       }
       requirements[r] = options.memoryRequirements[r];
     } else if (options.queryMemoryRequirements) {
-      requirements[r] = options.queryMemoryRequirements(resources[r].desc);
+      requirements[r] = options.queryMemoryRequirements(resource.desc);
     } else {
-      requirements[r] = estimateMemoryRequirements(resources[r].desc);
+      requirements[r] = estimateMemoryRequirements(resource.desc);
       estimated = true;
     }
+    resource.requirements = requirements[r];
+    transients.push_back({r, resource.firstUse, resource.lastUse, resource.desc.queues});
   }
+}
+
+// Runs `step` with `storage` lent to `output`: the step writes straight into
+// the plan's memory (no copy, and the same buffer every frame).
+template <class T, class Step>
+void lendTo(std::vector<T>& storage, std::vector<T>& output, Step&& step) {
+  output.swap(storage);
+  step();
+  output.swap(storage);
 }
 
 }  // namespace
@@ -55,23 +70,31 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
   plan.outputWidth = options.outputWidth;
   plan.outputHeight = options.outputHeight;
   orderPasses(deps_, culled_, plan.order);
-  planResources(graph, plan.order, options.outputWidth, options.outputHeight, plan.resources);
+  planResources(graph, plan.order, options.outputWidth, options.outputHeight, plan.resources, usage_);
 
-  gatherRequirements(plan.resources, options, requirements_, plan.memoryEstimated);
-  placeTransients(plan.resources, requirements_, options.enableAliasing, memory_);
+  gatherTransients(plan.resources, options, requirements_, transients_, plan.memoryEstimated);
+  lendTo(plan.aliases, memory_.aliases, [&] {
+    lendTo(plan.heaps, memory_.heaps, [&] {
+      placeTransients(transients_, static_cast<uint32_t>(plan.resources.size()), requirements_,
+                      options.enableAliasing, memory_);
+    });
+  });
   for (uint32_t r = 0; r < plan.resources.size(); ++r) {
     PlannedResource& resource = plan.resources[r];
-    resource.requirements = requirements_[r];
     resource.memory = memory_.placements[r];
     resource.aliasesWith = memory_.aliasesWith[r];
   }
-  plan.aliases.assign(memory_.aliases.begin(), memory_.aliases.end());
-  plan.heaps.assign(memory_.heaps.begin(), memory_.heaps.end());
   plan.heapBytes = memory_.heapBytes;
   plan.heapBytesWithoutAliasing = memory_.heapBytesWithoutAliasing;
 
-  planBarriers(graph, plan.order, plan.resources, plan.aliases, barriers_);
-  assignQueues(graph, plan.order, deps_, barriers_.handoffs, schedule_);
+  lendTo(plan.barriers, barriers_.barriers, [&] {
+    lendTo(plan.finalBarriers, barriers_.finals,
+           [&] { planBarriers(graph, plan.order, plan.resources, plan.aliases, barriers_); });
+  });
+  lendTo(plan.batches, schedule_.batches, [&] {
+    lendTo(plan.waits, schedule_.waits,
+           [&] { assignQueues(graph, plan.order, deps_, barriers_.handoffs, schedule_); });
+  });
 
   // Accesses: one copy when the declaration holds them in pass order already
   // (passes declared one after the other), else pass by pass.
@@ -110,10 +133,6 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
   for (uint32_t position = 0; position < plan.order.size(); ++position) {
     plan.passes[plan.order[position].index].orderIndex = position;
   }
-  plan.barriers.assign(barriers_.barriers.begin(), barriers_.barriers.end());
-  plan.batches.assign(schedule_.batches.begin(), schedule_.batches.end());
-  plan.waits.assign(schedule_.waits.begin(), schedule_.waits.end());
-  plan.finalBarriers.assign(barriers_.finals.begin(), barriers_.finals.end());
   for (FinalBarrier& f : plan.finalBarriers) {
     if (f.afterPass.valid()) f.batch = schedule_.passBatch[f.afterPass.index];
   }

@@ -6,6 +6,7 @@
 #include <shadelgraph/graph/dependencies.hpp>
 #include <shadelgraph/graph/place_transients.hpp>
 #include <shadelgraph/graph/plan_barriers.hpp>
+#include <shadelgraph/graph/plan_resources.hpp>
 #include <shadelgraph/graph/render_graph.hpp>
 #include <shadelgraph/graph/version_table.hpp>
 
@@ -31,7 +32,9 @@ class PlanCompiler {
   VersionTable versions_;
   DependencyGraph deps_;
   std::vector<bool> culled_;
+  std::vector<ResourceUsage> usage_;
   std::vector<MemoryRequirements> requirements_;
+  std::vector<TransientLifetime> transients_;
   MemoryPlan memory_;
   BarrierPlan barriers_;
   QueueSchedule schedule_;

@@ -5,9 +5,53 @@
 
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace sg::graph {
+
+namespace detail {
+
+// Free byte ranges of one aliasing heap, and who used each freed range last
+// (that transient is what the next one placed there aliases with).
+class FreeList {
+ public:
+  // Best fit: the smallest free range holding `size` bytes at `alignment`;
+  // otherwise at the end of the heap (which grows). Appends the transients
+  // that last used the range to `previous`.
+  uint64_t allocate(uint64_t size, uint64_t alignment, uint64_t& heapSize, std::vector<uint32_t>& previous);
+  void release(uint64_t offset, uint64_t size, uint32_t occupant);
+  void clear() {
+    blocks_.clear();
+    lastUsers_.clear();
+  }
+
+ private:
+  struct Block {
+    uint64_t begin;
+    uint64_t end;
+  };
+  struct LastUser {
+    uint64_t begin;
+    uint64_t end;
+    uint32_t occupant;
+  };
+
+  void takeOver(uint64_t begin, uint64_t end, std::vector<uint32_t>& previous);
+
+  std::vector<Block> blocks_;        // by offset, never adjacent
+  std::vector<LastUser> lastUsers_;  // freed ranges by offset, not coalesced
+};
+
+}  // namespace detail
+
+// A used transient as placement sees it (requirements are looked up by id).
+struct TransientLifetime {
+  uint32_t id = kInvalidIndex;  // ResourceId index
+  uint32_t firstUse = 0;        // positions in the order
+  uint32_t lastUse = 0;
+  QueueMask queues = QueueMask::None;
+};
 
 struct MemoryPlan {
   std::vector<MemoryPlacement> placements;  // per resource; unplaced unless a used transient
@@ -18,6 +62,18 @@ struct MemoryPlan {
   uint64_t heapBytesWithoutAliasing = 0;
 
   std::span<const ResourceId> aliasesOf(ResourceId r) const { return slice(aliases, aliasesWith[r.index]); }
+
+  // placeTransients()'s working memory, kept so that the next call reuses it.
+  struct Scratch {
+    std::vector<TransientLifetime> transients;
+    std::vector<uint32_t> byStart;  // into transients
+    std::vector<uint32_t> byEnd;
+    std::vector<uint32_t> bucketStarts;
+    std::vector<detail::FreeList> freeLists;  // per heap (aliasing heaps only use theirs)
+    std::vector<uint64_t> unaliasedSize;      // per heap: its size if nothing aliased
+    std::vector<std::pair<uint32_t, uint32_t>> aliasPairs;
+    std::vector<uint32_t> previous;
+  } scratch;
 };
 
 // Places every used transient in a heap, from real memory requirements
@@ -41,5 +97,10 @@ MemoryPlan placeTransients(std::span<const PlannedResource> resources,
 // The same into `plan`, reusing its memory.
 void placeTransients(std::span<const PlannedResource> resources, std::span<const MemoryRequirements> requirements,
                      bool enableAliasing, MemoryPlan& plan);
+// The same from the used transients alone (in any order; each id once), for
+// `resourceCount` resources: what PlanCompiler gathers in the sweep that also
+// collects requirements, so that placement does not walk the resources again.
+void placeTransients(std::span<const TransientLifetime> transients, uint32_t resourceCount,
+                     std::span<const MemoryRequirements> requirements, bool enableAliasing, MemoryPlan& plan);
 
 }  // namespace sg::graph

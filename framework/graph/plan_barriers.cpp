@@ -325,28 +325,39 @@ void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::
   const auto resourceCount = static_cast<uint32_t>(resources.size());
   const UseTable uses = collectUses(graph, order, resourceCount);
 
-  // Every stage and write of each resource: what a transient taking over its memory waits for.
-  std::vector<PipelineStage> usedStages(resourceCount, PipelineStage::None);
-  std::vector<AccessFlag> writes(resourceCount, AccessFlag::None);
+  // Every stage and write of each resource: what a transient taking over its
+  // memory waits for; and its last use, to tell earlier occupants from later
+  // ones (a compact copy: alias lists point anywhere in `resources`).
+  struct Footprint {
+    uint32_t lastUse = kInvalidIndex;
+    PipelineStage stages = PipelineStage::None;
+    AccessFlag writes = AccessFlag::None;
+  };
+  std::vector<Footprint> footprints(resourceCount);
   for (uint32_t r = 0; r < resourceCount; ++r) {
+    Footprint& f = footprints[r];
+    f.lastUse = resources[r].lastUse;
     for (const Use& u : uses.of(r)) {
-      usedStages[r] |= u.stages;
-      writes[r] |= writeBits(u.access);
+      f.stages |= u.stages;
+      f.writes |= writeBits(u.access);
     }
   }
 
   EmittedBarriers emitted;
-  emitted.entries.reserve(order.size() * 2);
+  // At most one barrier per use (a write's, a read's, or a run of shared
+  // reads' one transition), so this never regrows.
+  emitted.entries.reserve(uses.uses.size());
   for (uint32_t r = 0; r < resourceCount; ++r) {
     const PlannedResource& resource = resources[r];
     PipelineStage aliasedStages = PipelineStage::None;
     AccessFlag aliasedWrites = AccessFlag::None;
     bool aliased = false;
     for (const ResourceId other : aliases.subspan(resource.aliasesWith.first, resource.aliasesWith.count)) {
-      if (resources[other.index].lastUse >= resource.firstUse) continue;  // a later occupant
+      const Footprint& previous = footprints[other.index];
+      if (previous.lastUse >= resource.firstUse) continue;  // a later occupant
       aliased = true;
-      aliasedStages |= usedStages[other.index];
-      aliasedWrites |= writes[other.index];
+      aliasedStages |= previous.stages;
+      aliasedWrites |= previous.writes;
     }
     ResourceBarrierPlanner(ResourceId{r}, resource, uses.of(r), order, emitted)
         .run(aliasedStages, aliasedWrites, aliased);

@@ -1,6 +1,25 @@
 #include <shadelgraph/graph/plan_resources.hpp>
 
 namespace sg::graph {
+namespace {
+
+// One walk over the kept passes' accesses, in order: lifetimes, usages, queues.
+void gatherUsage(const RenderGraph& graph, std::span<const PassId> order, std::vector<ResourceUsage>& usage) {
+  usage.assign(graph.resourceCount(), ResourceUsage{});
+  for (uint32_t position = 0; position < order.size(); ++position) {
+    const QueueMask queue = toMask(graph.pass(order[position]).queue);
+    for (const ResourceAccess& a : graph.accessesOf(order[position])) {
+      ResourceUsage& u = usage[a.resource.index];
+      if (u.firstUse == kInvalidIndex) u.firstUse = position;
+      u.lastUse = position;
+      u.queues |= queue;
+      u.imageUsage |= imageUsageOf(a.access);
+      u.bufferUsage |= bufferUsageOf(a.access);
+    }
+  }
+}
+
+}  // namespace
 
 std::vector<PlannedResource> planResources(const RenderGraph& graph, std::span<const PassId> order,
                                            uint32_t outputWidth, uint32_t outputHeight) {
@@ -11,49 +30,44 @@ std::vector<PlannedResource> planResources(const RenderGraph& graph, std::span<c
 
 void planResources(const RenderGraph& graph, std::span<const PassId> order, uint32_t outputWidth,
                    uint32_t outputHeight, std::vector<PlannedResource>& resources) {
+  std::vector<ResourceUsage> usage;
+  planResources(graph, order, outputWidth, outputHeight, resources, usage);
+}
+
+void planResources(const RenderGraph& graph, std::span<const PassId> order, uint32_t outputWidth,
+                   uint32_t outputHeight, std::vector<PlannedResource>& resources, std::vector<ResourceUsage>& usage) {
+  gatherUsage(graph, order, usage);
+  // Then each plan entry is written once, in one sequential sweep.
   resources.resize(graph.resourceCount());
   for (uint32_t r = 0; r < graph.resourceCount(); ++r) {
     const ResourceDecl& decl = graph.resource(ResourceId{r});
+    const ResourceUsage& u = usage[r];
     PlannedResource& out = resources[r];
     std::string name = std::move(out.name);  // keep the string's buffer for the assignment below
     out = PlannedResource{};
     out.name = std::move(name);
     out.name = decl.name;
     out.kind = decl.kind;
+    out.culled = u.firstUse == kInvalidIndex;
+    out.readOnly = decl.readOnly;
+    out.historyOf = decl.historyOf;
+    out.firstUse = u.firstUse;
+    out.lastUse = u.lastUse;
     out.desc.type = decl.type;
     if (decl.type == ResourceType::Image) {
       out.desc.image = resolveImageDesc(decl.image, outputWidth, outputHeight);
+      out.desc.imageUsage = u.imageUsage;
     } else {
       out.desc.bufferSize = decl.buffer.size;
+      out.desc.bufferUsage = u.bufferUsage;
     }
-    out.initialState = decl.initialState;
-    out.finalState = decl.finalState;
-    out.readOnly = decl.readOnly;
-    out.historyOf = decl.historyOf;
-    out.culled = true;
-  }
-
-  for (uint32_t position = 0; position < order.size(); ++position) {
-    const PassDecl& pass = graph.pass(order[position]);
-    for (const ResourceAccess& a : graph.accessesOf(order[position])) {
-      PlannedResource& r = resources[a.resource.index];
-      if (r.culled) {
-        r.culled = false;
-        r.firstUse = position;
-      }
-      r.lastUse = position;
-      r.desc.queues |= toMask(pass.queue);
-      r.desc.imageUsage |= imageUsageOf(a.access);
-      r.desc.bufferUsage |= bufferUsageOf(a.access);
-    }
-  }
-  for (PlannedResource& r : resources) {
-    if (r.desc.type == ResourceType::Image) r.desc.bufferUsage = BufferUsage::None;
-    else r.desc.imageUsage = ImageUsage::None;
+    out.desc.queues = u.queues;
     // Resources shared between queues use concurrent sharing, so no queue-family
     // ownership transfer is ever needed (see docs: simpler, and lavapipe has a
     // single family anyway; forgotten ownership transfers are a classic bug).
-    r.desc.concurrent = queueCount(r.desc.queues) > 1;
+    out.desc.concurrent = queueCount(u.queues) > 1;
+    out.initialState = decl.initialState;
+    out.finalState = decl.finalState;
   }
 }
 

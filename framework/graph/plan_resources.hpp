@@ -8,6 +8,17 @@
 
 namespace sg::graph {
 
+// How the kept passes use one resource, gathered in one walk over their
+// accesses. Kept apart from the (large) PlannedResource so that the walk's
+// scattered updates touch a small, cache-resident array.
+struct ResourceUsage {
+  uint32_t firstUse = kInvalidIndex;  // positions in the order
+  uint32_t lastUse = kInvalidIndex;
+  ImageUsage imageUsage = ImageUsage::None;
+  BufferUsage bufferUsage = BufferUsage::None;
+  QueueMask queues = QueueMask::None;
+};
+
 // One plan entry per declared resource: resolved description, union of usages,
 // the queues that use it (concurrent when more than one), and its lifetime as
 // positions in `order`. Only the passes in `order` count. Memory is placed later.
@@ -16,5 +27,8 @@ std::vector<PlannedResource> planResources(const RenderGraph& graph, std::span<c
 // The same into `resources`, reusing its memory.
 void planResources(const RenderGraph& graph, std::span<const PassId> order, uint32_t outputWidth,
                    uint32_t outputHeight, std::vector<PlannedResource>& resources);
+// The same, also reusing `usage` (scratch, left holding each resource's usage).
+void planResources(const RenderGraph& graph, std::span<const PassId> order, uint32_t outputWidth,
+                   uint32_t outputHeight, std::vector<PlannedResource>& resources, std::vector<ResourceUsage>& usage);
 
 }  // namespace sg::graph

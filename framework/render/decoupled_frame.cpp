@@ -21,8 +21,8 @@ gpu::PipelineLayoutDesc decoupledLayout(std::span<const uint32_t> bindings, bool
 }
 
 void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const DecoupledFrame& f,
-                   std::span<const uint32_t> bindings) {
-  std::vector<gpu::DescriptorWrite> writes;
+                   std::span<const uint32_t> bindings, std::span<const gpu::DescriptorWrite> extra) {
+  std::vector<gpu::DescriptorWrite> writes(extra.begin(), extra.end());
   for (uint32_t b : bindings) {
     auto buffer = [&](VkBuffer vk) { writes.push_back({b, gpu::BufferBinding{vk}}); };
     switch (b) {

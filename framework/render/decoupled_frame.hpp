@@ -7,6 +7,7 @@
 #include <span>
 
 #include <shadelgraph/gpu/buffer.hpp>
+#include <shadelgraph/gpu/descriptors.hpp>
 #include <shadelgraph/gpu/pipeline.hpp>
 #include <shadelgraph/graph/handles.hpp>
 #include <shadelgraph/render/scene_view.hpp>
@@ -22,6 +23,9 @@ inline constexpr uint32_t kBindFrame = 0, kBindParams = 1, kBindObjects = 2, kBi
                           kBindLevelRects = 4, kBindRemap = 5, kBindOwnedEntries = 6, kBindCounters = 7,
                           kBindWork = 8, kBindArgs = 9, kBindIdMaps = 10, kBindVertices = 11, kBindIndices = 12,
                           kBindLayerImage = 13;
+// support-expand's transient per-owned-entry masks (passes/support-expand), bound
+// through bindDecoupled's `extra`; kept high, clear of the bindings that grow from 14.
+inline constexpr uint32_t kBindSupportMasks = 30;
 
 struct DecoupledFrame {
   SceneView view;                       // view.draws: the draws of the objects shaded decoupled this frame
@@ -35,7 +39,6 @@ struct DecoupledFrame {
   const gpu::Buffer& idMaps;
   uint32_t ownedEntryCount = 0;
   uint32_t objectCount = 0;
-  uint32_t layerCount = 1;
   int filter = 2;  // composite: 0 point, 1 bilinear, 2 trilinear
   bool levelView = false;  // composite shows the detail level instead of the shading
   graph::ResourceHandle remap, counters, work, args, layerImage;
@@ -46,8 +49,9 @@ struct DecoupledFrame {
 gpu::PipelineLayoutDesc decoupledLayout(std::span<const uint32_t> bindings, bool layerImageStorage = false,
                                         uint32_t pushConstantBytes = 0,
                                         std::initializer_list<VkDescriptorSetLayout> extraSets = {});
-// Binds `pipeline` with the descriptors of `bindings` from the frame.
+// Binds `pipeline` with the descriptors of `bindings` from the frame, and the
+// pass's own `extra` ones.
 void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const DecoupledFrame& frame,
-                   std::span<const uint32_t> bindings);
+                   std::span<const uint32_t> bindings, std::span<const gpu::DescriptorWrite> extra = {});
 
 }  // namespace sg::render

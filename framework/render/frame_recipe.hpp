@@ -22,6 +22,7 @@ struct FrameInputs {
   glm::vec3 cameraPosition{0.0f};
   // Pixels an object of size 1 covers at distance 1 (perspective); 0 for orthographic.
   float pixelsPerUnitAtUnitDistance = 0.0f;
+  glm::mat4 viewProjection{1.0f};  // world to clip (Vulkan depth 0..1), for culling
   uint32_t width = 0, height = 0;
   graph::ResourceHandle output;  // imported 8-bit sRGB colour image
 };

@@ -7,6 +7,7 @@
 #include <shadelgraph/gpu/barriers.hpp>
 #include <shadelgraph/gpu/context.hpp>
 #include <shadelgraph/gpu/error.hpp>
+#include <shadelgraph/plugin/material_stack.hpp>
 
 namespace sg::render {
 namespace {
@@ -151,7 +152,7 @@ void GpuScene::uploadGeometry(gpu::Context& context, gpu::MemoryAllocator& memor
     for (const Range& r : meshRanges[size_t(inst.mesh)]) {
       const auto& m = scene.materials[size_t(r.material)];
       draws_.push_back({r.firstIndex, r.indexCount, r.vertexOffset, uint32_t(r.material), i, inst.world, m.alphaMode,
-                        m.doubleSided});
+                        m.doubleSided, inst.material.empty() ? plugin::kDefaultMaterial : inst.material});
     }
   }
   if (vertices.empty()) throw gpu::GpuError("the scene has no triangles to draw");

@@ -35,6 +35,7 @@ struct DrawItem {
   glm::mat4 world{1.0f};
   scene::AlphaMode alphaMode = scene::AlphaMode::Opaque;
   bool doubleSided = false;
+  std::string materialStack;  // the instance's layer stack ("gltf-pbr" unless the scene says otherwise)
 };
 
 // Push constants of object.glsl.

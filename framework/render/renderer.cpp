@@ -12,15 +12,25 @@ struct Renderer::Frame {
   graph::ResourceHandle output;
 };
 
-Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, FrameRecipe recipe)
+Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, FrameRecipe recipe,
+                   const plugin::Registry& materials)
     : device_(device),
       scene_(scene),
       recipe_(std::move(recipe)),
+      materials_(materials),
       gpuScene_(device.context(), device.memory(), scene),
       frameUniforms_(device.context(), device.memory(),
                      {sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryLocation::Upload,
                       "frame uniforms", "frame"}),
-      executor_(device) {}
+      executor_(device) {
+  materials_.check();
+  for (const auto& draw : gpuScene_.draws())
+    if (!materials_.hasMaterial(draw.materialStack))
+      throw plugin::PluginError("object '" + scene.instances[draw.instance].name + "' uses material '" +
+                                draw.materialStack + "', which no plugin registered");
+  // Plugins' GLSL (their layers' sources) by virtual path.
+  for (const auto& directory : materials_.shaderDirectories()) device_.shaders().addDirectory(directory);
+}
 
 Renderer::~Renderer() = default;
 
@@ -49,7 +59,7 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
                                    .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                    .name = "output", .category = "output"});
   }
-  auto frame = std::make_unique<Frame>(Frame{{gpuScene_, frameUniforms_, gpuScene_.allDraws()}, {}, {}});
+  auto frame = std::make_unique<Frame>(Frame{{gpuScene_, frameUniforms_, gpuScene_.allDraws(), materials_}, {}, {}});
   frame->output = frame->graph.importImage(
       "output", {.format = graph::Format::RGBA8Srgb, .size = graph::Size::absolute(settings.width, settings.height)},
       graph::ImportedState{graph::Layout::Undefined},
@@ -58,7 +68,7 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
                           ? std::abs(uniforms.projection[1][1]) * 0.5f * float(settings.height)
                           : 0.0f;
   const auto result = recipe_(frame->graph, {frame->view, scene_, device_, executor_, cam.position(), focal,
-                                             settings.width, settings.height, frame->output});
+                                             uniforms.viewProjection, settings.width, settings.height, frame->output});
   frame->graph.markOutput(result);
   return frame;
 }

@@ -29,7 +29,8 @@ struct FrameResult {
 
 class Renderer {
  public:
-  Renderer(gpu::Device& device, const scene::Scene& scene, FrameRecipe recipe);
+  // `materials`: the registered layers and materials the scene's objects name.
+  Renderer(gpu::Device& device, const scene::Scene& scene, FrameRecipe recipe, const plugin::Registry& materials);
   ~Renderer();
 
   // Declares and compiles the frame `render` would run (with real memory requirements).
@@ -45,6 +46,7 @@ class Renderer {
   gpu::Device& device_;
   const scene::Scene& scene_;
   FrameRecipe recipe_;
+  const plugin::Registry& materials_;
   GpuScene gpuScene_;
   gpu::Buffer frameUniforms_;
   std::optional<gpu::Image> output_;

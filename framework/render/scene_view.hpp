@@ -1,9 +1,11 @@
 #pragma once
-// What scene passes draw: the uploaded scene and this frame's uniform buffer
-// (camera, lights; written by the host before the frame is submitted).
+// What scene passes draw: the uploaded scene, this frame's uniform buffer
+// (camera, lights; written by the host before the frame is submitted) and the
+// materials (layer stacks) the draws name.
 #include <span>
 
 #include <shadelgraph/gpu/buffer.hpp>
+#include <shadelgraph/plugin/registry.hpp>
 #include <shadelgraph/render/gpu_scene.hpp>
 
 namespace sg::render {
@@ -12,6 +14,7 @@ struct SceneView {
   const GpuScene& scene;
   const gpu::Buffer& frameUniforms;
   std::span<const uint32_t> draws;  // the draws (indices into scene.draws()) the pass takes
+  const plugin::Registry& materials;
 };
 
 // Push constants and cull mode for one draw, then the indexed draw.

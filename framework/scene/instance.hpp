@@ -21,6 +21,7 @@ struct Instance {
   glm::mat4 world{1.0f};  // mesh to world, node hierarchy flattened
   std::string name;       // node name (or "node N" when unnamed)
   ShadingMode shading = ShadingMode::Auto;
+  std::string material;   // its material (layer stack) by registered name; empty: the default, "gltf-pbr"
 };
 
 }  // namespace sg::scene

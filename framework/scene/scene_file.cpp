@@ -176,7 +176,8 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
   for (size_t i = 0; i < objects->size(); ++i) {
     const std::string path = "objects[" + std::to_string(i) + "]";
     const Json& object = (*objects)[i];
-    allowOnly(object, path, {"gltf", "name", "translation", "rotation", "rotationDegrees", "scale", "shading"});
+    allowOnly(object, path, {"gltf", "name", "translation", "rotation", "rotationDegrees", "scale", "shading",
+                               "material"});
     const std::string gltf = text(object, "gltf", path, "");
     if (gltf.empty()) throw FormatError(path + ".gltf", "required property is missing");
     const std::filesystem::path gltfPath = (file.parent_path() / gltf).lexically_normal();
@@ -185,6 +186,8 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
       shading = parseShadingMode(text(object, "shading", path, ""));
       if (!shading) throw FormatError(path + ".shading", "expected \"auto\", \"decoupled\" or \"forward\"");
     }
+    // Checked against the registered materials when the renderer starts (plugins may add them).
+    const std::string material = text(object, "material", path, "");
     const glm::mat4 transform = objectTransform(object, path);
     const std::string name = text(object, "name", path, gltfPath.stem().string());
 
@@ -210,6 +213,7 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
       instance.world = transform * instance.world;
       instance.name = name + "/" + instance.name;
       if (shading) instance.shading = *shading;
+      if (!material.empty()) instance.material = material;
       result.scene.instances.push_back(std::move(instance));
     }
     Scene placed;  // lights and cameras, moved by appendScene's transform rules

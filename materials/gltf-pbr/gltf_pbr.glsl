@@ -30,22 +30,11 @@ vec3 environmentRadiance(float y) {
   return y > 0.0 ? mix(horizon, sky, sqrt(y)) : mix(horizon, ground, sqrt(-y));
 }
 
-// rgb = outgoing radiance towards the camera, a = alpha.
-vec4 shadeGltfPbr(Surface s) {
-  vec4 baseColor = materialBaseColor(s);
-  float metallic = material.params.x, roughness = material.params.y;
-  if (materialHas(SG_TEX_METALLIC_ROUGHNESS)) {
-    vec4 mr = materialSample(metallicRoughnessTexture, SG_TEX_METALLIC_ROUGHNESS, s);
-    roughness *= mr.g;
-    metallic *= mr.b;
-  }
-  float occlusion = 1.0;
-  if (materialHas(SG_TEX_OCCLUSION))
-    occlusion = 1.0 + material.params.z * (materialSample(occlusionTexture, SG_TEX_OCCLUSION, s).r - 1.0);
-  vec3 emissive = material.emissiveFactor.rgb;
-  if (materialHas(SG_TEX_EMISSIVE)) emissive *= materialSample(emissiveTexture, SG_TEX_EMISSIVE, s).rgb;
-
-  vec3 N = shadingNormal(s);
+// The glTF metallic-roughness model at a surface point for given inputs:
+// what shadeGltfPbr and layers with their own inputs (marble, bumps) share.
+// N: the shading normal. rgb = outgoing radiance towards the camera.
+vec3 shadeMetallicRoughness(Surface s, vec3 baseColor, float metallic, float roughness, float occlusion,
+                            vec3 emissive, vec3 N) {
   vec3 V = normalize(frame.cameraPosition.xyz - s.position);
   vec3 color = vec3(0.0);
   for (uint i = 0u; i < frame.counts.x; ++i) {
@@ -68,7 +57,7 @@ vec4 shadeGltfPbr(Surface s) {
         attenuation *= t * t;
       }
     }
-    color += brdfGltf(baseColor.rgb, metallic, roughness, N, V, L, light.color.rgb * attenuation);
+    color += brdfGltf(baseColor, metallic, roughness, N, V, L, light.color.rgb * attenuation);
   }
   // Environment: a sky-over-ground gradient (frame.ambient is the sky), diffuse
   // from the normal, specular from the reflection blurred towards the average
@@ -81,9 +70,26 @@ vec4 shadeGltfPbr(Surface s) {
   vec4 r = roughness * c0 + c1;
   float a004 = min(r.x * r.x, exp2(-9.28 * NdotV)) * r.x + r.y;
   vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
-  vec3 f0 = mix(vec3(0.04), baseColor.rgb, metallic);
-  color += occlusion * (diffuseEnv * baseColor.rgb * (1.0 - metallic) + specularEnv * (f0 * ab.x + ab.y));
-  color += emissive;
+  vec3 f0 = mix(vec3(0.04), baseColor, metallic);
+  color += occlusion * (diffuseEnv * baseColor * (1.0 - metallic) + specularEnv * (f0 * ab.x + ab.y));
+  return color + emissive;
+}
+
+// The glTF material layer: rgb = outgoing radiance towards the camera, a = alpha.
+vec4 shadeGltfPbr(Surface s) {
+  vec4 baseColor = materialBaseColor(s);
+  float metallic = material.params.x, roughness = material.params.y;
+  if (materialHas(SG_TEX_METALLIC_ROUGHNESS)) {
+    vec4 mr = materialSample(metallicRoughnessTexture, SG_TEX_METALLIC_ROUGHNESS, s);
+    roughness *= mr.g;
+    metallic *= mr.b;
+  }
+  float occlusion = 1.0;
+  if (materialHas(SG_TEX_OCCLUSION))
+    occlusion = 1.0 + material.params.z * (materialSample(occlusionTexture, SG_TEX_OCCLUSION, s).r - 1.0);
+  vec3 emissive = material.emissiveFactor.rgb;
+  if (materialHas(SG_TEX_EMISSIVE)) emissive *= materialSample(emissiveTexture, SG_TEX_EMISSIVE, s).rgb;
+  vec3 color = shadeMetallicRoughness(s, baseColor.rgb, metallic, roughness, occlusion, emissive, shadingNormal(s));
   return vec4(color, baseColor.a);
 }
 

@@ -15,6 +15,7 @@ struct Surface {
   vec4 color;     // COLOR_0
   vec2 uv0Dx, uv0Dy;  // derivatives of uv0 per sample step in x and y
   vec2 uv1Dx, uv1Dy;
+  vec3 positionDx, positionDy;  // world position change per sample step
 };
 
 #endif

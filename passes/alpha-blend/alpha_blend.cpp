@@ -13,7 +13,6 @@ graph::ResourceHandle addAlphaBlend(graph::RenderGraph& graph, const render::Sce
   pass.read(targets.depth, graph::Access::DepthRead);
   targets.color = pass.write(targets.color, graph::Access::ColorAttachment);
   pass.execute([view, targets, cameraPosition](PassContext& ctx) {
-    const auto& pipeline = forwardPipeline(ctx, view, true);
     // Back to front by the distance of each object's origin: the usual
     // compromise for per-object sorting (intersecting objects stay wrong).
     const auto& draws = view.scene.draws();
@@ -23,9 +22,7 @@ graph::ResourceHandle addAlphaBlend(graph::RenderGraph& graph, const render::Sce
     auto distance = [&](uint32_t d) { return glm::distance(glm::vec3(draws[d].world[3]), cameraPosition); };
     std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return distance(a) > distance(b); });
     ctx.beginRendering({ColorTarget{targets.color}}, DepthTarget{targets.depth, {}, true}, true);
-    ctx.bind(pipeline, {{0, gpu::BufferBinding{view.frameUniforms.handle()}}});
-    view.scene.bindGeometry(ctx.cmd());
-    for (uint32_t d : order) drawWithMaterial(ctx, pipeline, view, d);
+    drawForward(ctx, view, order, true);
     ctx.endRendering();
   });
   return targets.color;

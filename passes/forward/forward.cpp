@@ -9,13 +9,9 @@ ForwardTargets addForwardOpaque(graph::RenderGraph& graph, const render::SceneVi
   targets.color = pass.write(targets.color, graph::Access::ColorAttachment);
   pass.read(targets.depth, graph::Access::DepthRead);
   pass.execute([view, targets](PassContext& ctx) {
-    const auto& pipeline = forwardPipeline(ctx, view, false);
     ctx.beginRendering({ColorTarget{targets.color, VkClearColorValue{{0.42f, 0.55f, 0.75f, 1.0f}}}},
                        DepthTarget{targets.depth, {}, true}, true);
-    ctx.bind(pipeline, {{0, gpu::BufferBinding{view.frameUniforms.handle()}}});
-    view.scene.bindGeometry(ctx.cmd());
-    for (uint32_t d : view.draws)
-      if (view.scene.draws()[d].alphaMode == scene::AlphaMode::Opaque) drawWithMaterial(ctx, pipeline, view, d);
+    drawForward(ctx, view, drawsWithAlphaMode(view, scene::AlphaMode::Opaque), false);
     ctx.endRendering();
   });
   return targets;

@@ -2,30 +2,63 @@
 
 #include <algorithm>
 
-namespace sg::passes {
+#include <shadelgraph/render/material_variants.hpp>
 
-const gpu::Pipeline& forwardPipeline(PassContext& ctx, const render::SceneView& view, bool blend) {
-  return ctx.device().pipeline(blend ? "forward/blend" : "forward", [&] {
-    return gpu::GraphicsPipelineDesc{
-        .vertex = {.path = "passes/forward/forward.vert"},
-        .fragment = {.path = "passes/forward/forward.frag"},
-        .layout = {.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}},
-                   .extraSets = {view.scene.materialSetLayout()},
-                   .pushConstantBytes = sizeof(render::ObjectConstants)},
-        .vertexInput = render::sceneVertexInput(),
-        .colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT},
-        .depthFormat = VK_FORMAT_D32_SFLOAT,
-        .depthTest = true,
-        .depthWrite = !blend,
-        .alphaBlend = blend};
+namespace sg::passes {
+namespace {
+
+const gpu::Pipeline& forwardPipeline(PassContext& ctx, const render::SceneView& view,
+                                     const plugin::MaterialStack& material, bool blend) {
+  return ctx.device().pipeline((blend ? "forward/blend/" : "forward/") + material.name, [&] {
+    try {
+      return gpu::GraphicsPipelineDesc{
+          .vertex = {.path = "passes/forward/forward.vert"},
+          .fragment = render::forwardMaterialVariant(view.materials, material),
+          .layout = {.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}},
+                     .extraSets = {view.scene.materialSetLayout()},
+                     .pushConstantBytes = sizeof(render::ObjectConstants)},
+          .vertexInput = render::sceneVertexInput(),
+          .colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT},
+          .depthFormat = VK_FORMAT_D32_SFLOAT,
+          .depthTest = true,
+          .depthWrite = !blend,
+          .alphaBlend = blend};
+    } catch (const gpu::ShaderCompileError& e) {
+      throw render::layerCompileError(e, "material '" + material.name + "', forward variant,", material.plugin);
+    }
   });
 }
 
-void drawWithMaterial(PassContext& ctx, const gpu::Pipeline& pipeline, const render::SceneView& view, uint32_t draw) {
-  const auto& item = view.scene.draws()[draw];
-  VkDescriptorSet set = view.scene.materialSet(item.material);
-  vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), 1, 1, &set, 0, nullptr);
-  render::drawItem(ctx.cmd(), pipeline, item, draw);
+}  // namespace
+
+const plugin::MaterialStack& forwardMaterial(const render::SceneView& view, uint32_t draw) {
+  return view.materials.materialFor(view.scene.draws()[draw].materialStack, plugin::ShadingPath::Forward);
+}
+
+std::vector<uint32_t> drawsWithAlphaMode(const render::SceneView& view, scene::AlphaMode mode) {
+  std::vector<uint32_t> draws;
+  for (uint32_t d : view.draws)
+    if (view.scene.draws()[d].alphaMode == mode) draws.push_back(d);
+  std::stable_sort(draws.begin(), draws.end(), [&](uint32_t a, uint32_t b) {
+    return forwardMaterial(view, a).name < forwardMaterial(view, b).name;
+  });
+  return draws;
+}
+
+void drawForward(PassContext& ctx, const render::SceneView& view, std::span<const uint32_t> draws, bool blend) {
+  view.scene.bindGeometry(ctx.cmd());
+  const gpu::Pipeline* bound = nullptr;
+  for (uint32_t d : draws) {
+    const auto& pipeline = forwardPipeline(ctx, view, forwardMaterial(view, d), blend);
+    if (&pipeline != bound) {
+      ctx.bind(pipeline, {{0, gpu::BufferBinding{view.frameUniforms.handle()}}});
+      bound = &pipeline;
+    }
+    const auto& item = view.scene.draws()[d];
+    VkDescriptorSet set = view.scene.materialSet(item.material);
+    vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), 1, 1, &set, 0, nullptr);
+    render::drawItem(ctx.cmd(), pipeline, item, d);
+  }
 }
 
 bool hasAlphaMode(const render::SceneView& view, scene::AlphaMode mode) {

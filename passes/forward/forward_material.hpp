@@ -1,15 +1,23 @@
 #pragma once
-// Drawing objects with the forward (fragment) variant of their material:
-// shared by forward-opaque, alpha-mask and alpha-blend.
+// Drawing objects with the forward (fragment) variant of their material,
+// generated from its layers (render/material_variants.hpp): shared by
+// forward-opaque, alpha-mask and alpha-blend.
+#include <span>
+#include <vector>
+
 #include <shadelgraph/gpu/pass_context.hpp>
 #include <shadelgraph/render/scene_view.hpp>
 
 namespace sg::passes {
 
-// Opaque and masked draws write depth; blended ones test it and blend "over".
-const gpu::Pipeline& forwardPipeline(PassContext& ctx, const render::SceneView& view, bool blend);
-// Binds the draw's material set and draws it.
-void drawWithMaterial(PassContext& ctx, const gpu::Pipeline& pipeline, const render::SceneView& view, uint32_t draw);
+// The material a draw runs forward: its own, or that one's forward fallback.
+const plugin::MaterialStack& forwardMaterial(const render::SceneView& view, uint32_t draw);
+// The view's draws with this alpha mode, grouped by forward material (fewer pipeline switches).
+std::vector<uint32_t> drawsWithAlphaMode(const render::SceneView& view, scene::AlphaMode mode);
+// Draws `draws` in order, each with its material's pipeline (bound when it
+// changes) and descriptor set. Opaque and masked draws write depth; blended
+// ones test it and blend "over".
+void drawForward(PassContext& ctx, const render::SceneView& view, std::span<const uint32_t> draws, bool blend);
 // Does the view hold a draw with this alpha mode?
 bool hasAlphaMode(const render::SceneView& view, scene::AlphaMode mode);
 

@@ -1,35 +1,87 @@
 #include "layer_shade.hpp"
 
-#include <array>
+#include <map>
 
 #include <shadelgraph/gpu/pass_context.hpp>
+#include <shadelgraph/render/material_variants.hpp>
 
 namespace sg::passes {
+namespace {
 
-void addLayerShade(graph::RenderGraph& graph, render::DecoupledFrame& frame) {
-  auto& pass = graph.addPass("layer-shade", graph::QueueClass::AsyncCompute);
+using namespace render;
+
+constexpr uint32_t kBaseBindings[] = {kBindFrame,    kBindParams,   kBindObjects,  kBindShadelInstances,
+                                      kBindLevelRects, kBindRemap,  kBindCounters, kBindWork,
+                                      kBindIdMaps,   kBindVertices, kBindIndices};
+
+const gpu::Pipeline& layerPipeline(PassContext& ctx, const DecoupledFrame& frame, const plugin::MaterialLayer& layer) {
+  return ctx.device().pipeline("layer-shade/" + layer.name, [&] {
+    gpu::PipelineLayoutDesc layout = decoupledLayout(kBaseBindings, false, 12, {frame.view.scene.materialSetLayout()});
+    layout.bindings.push_back({kBindLayerOutput, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
+    for (uint32_t i = 0; i < layer.reads.size(); ++i)
+      layout.bindings.push_back({kBindLayerInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    if (layer.persistent) {
+      layout.bindings.push_back({kBindLayerHistory, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+      layout.bindings.push_back({kBindPreviousRemap, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    }
+    try {
+      return gpu::ComputePipelineDesc{.shader = decoupledLayerVariant(layer), .layout = layout};
+    } catch (const gpu::ShaderCompileError& e) {
+      throw layerCompileError(e, "material layer '" + layer.name + "'", layer.plugin);
+    }
+  });
+}
+
+}  // namespace
+
+void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string name,
+                   std::vector<LayerShadeStep>& steps, const LayerHistory& history) {
+  auto& pass = graph.addPass(std::move(name), graph::QueueClass::AsyncCompute);
   pass.read(frame.work, graph::Access::StorageRead);
   pass.read(frame.args, graph::Access::IndirectArgs);
-  frame.layerImage = pass.write(frame.layerImage, graph::Access::StorageWrite);
-  pass.execute([frame](PassContext& ctx) {
-    using namespace render;
-    const std::array bindings{kBindFrame, kBindParams, kBindObjects, kBindShadelInstances, kBindLevelRects,
-                               kBindWork, kBindIdMaps, kBindVertices, kBindIndices, kBindLayerImage};
-    const auto& pipeline = ctx.device().pipeline("layer-shade/gltf-pbr", [&] {
-      return gpu::ComputePipelineDesc{
-          .shader = {.path = "passes/layer-shade/layer_shade.comp"},
-          .layout = decoupledLayout(bindings, true, 8, {frame.view.scene.materialSetLayout()})};
-    });
-    bindDecoupled(ctx, pipeline, frame, bindings);
+  pass.read(frame.remap, graph::Access::StorageRead);
+  bool persistent = false;
+  std::map<graph::ResourceHandle, graph::ResourceHandle> written;  // each output once, however many steps write it
+  for (auto& step : steps) {
+    for (const auto input : step.inputs) pass.read(input, graph::Access::Sampled);
+    if (step.layer->persistent) {
+      pass.read(step.history, graph::Access::Sampled);
+      persistent = true;
+    }
+    auto [it, added] = written.try_emplace(step.output);
+    if (added) it->second = pass.write(step.output, graph::Access::StorageWrite);
+  }
+  if (persistent) {
+    pass.read(history.previousRemap, graph::Access::StorageRead);
+    frame.counters = pass.write(frame.counters, graph::Access::StorageWrite);  // layer_reuse
+  }
+  for (auto& step : steps) step.output = written.at(step.output);
+
+  pass.execute([frame, steps, history](PassContext& ctx) {
     const VkBuffer args = ctx.buffer(frame.args).handle();
     const auto& draws = frame.view.scene.draws();
-    for (uint32_t object = 0; object < frame.objectCount; ++object) {
-      VkDescriptorSet material = frame.view.scene.materialSet(draws[frame.objectDraws[object]].material);
-      vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout(), 1, 1, &material, 0, nullptr);
-      for (uint32_t layer = 0; layer < frame.layerCount; ++layer) {
-        const uint32_t push[2] = {object, layer};
+    const auto sampled = [&](uint32_t binding, graph::ResourceHandle image) {
+      return gpu::DescriptorWrite{binding, gpu::ImageBinding{ctx.image(image).view(),
+                                                             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                                             ctx.device().nearestSampler()}};
+    };
+    for (const auto& step : steps) {
+      const auto& pipeline = layerPipeline(ctx, frame, *step.layer);
+      std::vector<gpu::DescriptorWrite> writes{
+          {kBindLayerOutput, gpu::ImageBinding{ctx.image(step.output).view(), VK_IMAGE_LAYOUT_GENERAL, VK_NULL_HANDLE}}};
+      for (uint32_t i = 0; i < step.inputs.size(); ++i) writes.push_back(sampled(kBindLayerInputs + i, step.inputs[i]));
+      if (step.layer->persistent) {
+        writes.push_back(sampled(kBindLayerHistory, step.history));
+        writes.push_back({kBindPreviousRemap, gpu::BufferBinding{ctx.buffer(history.previousRemap).handle()}});
+      }
+      bindDecoupled(ctx, pipeline, frame, kBaseBindings, writes);
+      for (const uint32_t object : step.objects) {
+        VkDescriptorSet material = frame.view.scene.materialSet(draws[frame.objectDraws[object]].material);
+        vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout(), 1, 1, &material, 0,
+                                nullptr);
+        const uint32_t push[3] = {object, step.persistentSlot, history.valid ? 1u : 0u};
         vkCmdPushConstants(ctx.cmd(), pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof push, push);
-        vkCmdDispatchIndirect(ctx.cmd(), args, VkDeviceSize(12) * (object * frame.layerCount + layer));
+        vkCmdDispatchIndirect(ctx.cmd(), args, VkDeviceSize(12) * object);
       }
     }
   });

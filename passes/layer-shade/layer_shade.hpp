@@ -1,11 +1,34 @@
 #pragma once
+#include <string>
+#include <vector>
+
 #include <shadelgraph/graph/render_graph.hpp>
+#include <shadelgraph/plugin/material_layer.hpp>
 #include <shadelgraph/render/decoupled_frame.hpp>
 
 namespace sg::passes {
 
-// Shades the visible chunks: one indirect dispatch per object per layer, an
-// 8x8 workgroup per chunk (async compute).
-void addLayerShade(graph::RenderGraph& graph, render::DecoupledFrame& frame);
+// One layer run on some objects, with the graph resources it touches.
+struct LayerShadeStep {
+  const plugin::MaterialLayer* layer = nullptr;
+  std::vector<uint32_t> objects;               // decoupled object indices: one indirect dispatch each
+  graph::ResourceHandle output;                // its own layer image, or the shaded colour
+  std::vector<graph::ResourceHandle> inputs;   // the images of layer->reads, in order
+  graph::ResourceHandle history;               // persistent: last frame's image of this layer
+  uint32_t persistentSlot = 0;                 // persistent: its layer_reuse counters
+};
+
+// Last frame, for persistent layers: its remap table, and whether it (and the
+// layers' history images) describe the current storage layout.
+struct LayerHistory {
+  graph::ResourceHandle previousRemap;  // invalid: no persistent layer this frame
+  bool valid = false;
+};
+
+// One layer-shade pass (async compute): for each step, the layer's decoupled
+// variant (generated from its source) dispatched once per object over its
+// work list, an 8x8 workgroup per chunk. Steps' outputs get their new versions.
+void addLayerShade(graph::RenderGraph& graph, render::DecoupledFrame& frame, std::string name,
+                   std::vector<LayerShadeStep>& steps, const LayerHistory& history);
 
 }  // namespace sg::passes

@@ -21,11 +21,16 @@ void main() {
   }
   if (i < SG_STORAGE_COUNTERS) counters.allocated[i] = 0u;
   if (i < SG_MAX_LEVELS) counters.levelChunks[i] = 0u;
+  if (i < SG_MAX_PERSISTENT_LAYERS) {
+    counters.layerReused[i] = 0u;
+    counters.layerComputed[i] = 0u;
+  }
   if (i == 0u) {
     counters.chunksMarked = 0u;
     counters.chunksAllocated = 0u;
     counters.overflowChunks = 0u;
     counters.compositeMisses = 0u;
     counters.coveredPixels = 0u;
+    counters.supportChunks = 0u;
   }
 }

@@ -1,7 +1,8 @@
 #version 460
 // Per object: where its work list starts (a prefix sum of the chunk counts)
-// and one VkDispatchIndirectCommand per material layer. Objects with nothing
-// visible get {0, 1, 1}. One invocation: object counts are small.
+// and its VkDispatchIndirectCommand, which every layer of its material
+// dispatches (they shade the same chunks). Objects with nothing visible get
+// {0, 1, 1}. One invocation: object counts are small.
 #include <plugins/decoupled/shaders/decoupled.glsl>
 #include <plugins/decoupled/shaders/work.glsl>
 
@@ -13,12 +14,9 @@ void main() {
   for (uint o = 0u; o < params.objectCount; ++o) {
     uint chunks = work[sgObjectChunksSlot(o)];
     work[sgObjectOffsetSlot(o)] = offset;
-    for (uint layer = 0u; layer < params.layerCount; ++layer) {
-      uint a = 3u * (o * params.layerCount + layer);
-      args[a] = chunks;
-      args[a + 1u] = 1u;
-      args[a + 2u] = 1u;
-    }
+    args[3u * o] = chunks;
+    args[3u * o + 1u] = 1u;
+    args[3u * o + 2u] = 1u;
     offset += chunks;
   }
 }

@@ -23,8 +23,10 @@
 #include "shadel-allocate/shadel_allocate.hpp"
 #include "shadel-clear/shadel_clear.hpp"
 #include "shadel-mark/shadel_mark.hpp"
+#include "support-expand/support_expand.hpp"
 #include "tonemap/tonemap.hpp"
 #include "work-aggregate/work_aggregate.hpp"
+#include "frustum.hpp"
 #include "z-prepass/z_prepass.hpp"
 
 namespace sg::plugins {
@@ -60,8 +62,14 @@ void DecoupledShading::initialize(const render::FrameInputs& in) {
   std::map<int, std::pair<shadel::DetailLevels, uint32_t>> maps;  // by mesh: its levels and ID-map offset
   std::vector<uint32_t> idTexels;
   std::vector<DecoupledObject> objects;
+  const plugin::Registry& materials = in.view.materials;
   for (uint32_t d = 0; d < draws.size(); ++d) {
     ShadingChoice& choice = choices_[draws[d].instance];
+    const plugin::MaterialStack& material = materials.material(draws[d].materialStack);
+    if (choice.decoupled && !materials.runsIn(material, plugin::ShadingPath::Decoupled)) {
+      choice.decoupled = false;
+      choice.reason = "material '" + material.name + "' has forward-only layers";
+    }
     if (!choice.decoupled) {
       forwardDraws_.push_back(d);
       continue;
@@ -88,7 +96,9 @@ void DecoupledShading::initialize(const render::FrameInputs& in) {
     }
     const auto& draw = draws[d];
     objects.push_back({draw.world, draw.firstIndex, draw.vertexOffset, draw.indexCount / 3, draw.material, offset,
-                       uint32_t(choice.uvSet), choice.tileOffset});
+                       uint32_t(choice.uvSet), choice.tileOffset,
+                       supportRadius(materials, material) > 0 ? 1u : 0u, {}});
+    objectMaterials_.push_back(material.name);
     decoupledDraws_.push_back(d);
     const scene::Bounds world = scene::transformBounds(mesh.bounds, draw.world);
     objectSpheres_.emplace_back(world.center(), world.radius());
@@ -113,10 +123,7 @@ void DecoupledShading::initialize(const render::FrameInputs& in) {
   ownedEntries_ = upload(device, tables.ownedEntries, "owned remap entries");
   idMaps_ = upload(device, idTexels, "triangle-ID maps");
   const uint64_t entriesPerSide = uint64_t(1) << (settings_.sheetSizeLog2 - 6);
-  remap_ = gpu::Buffer(device.context(), device.memory(),
-                       {entriesPerSide * entriesPerSide * sizeof(shadel::RemapEntry), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                        gpu::MemoryLocation::Device, "remap", "remap",
-                        /*concurrent: graphics and async compute both use it*/ true});
+  remapBytes_ = entriesPerSide * entriesPerSide * sizeof(shadel::RemapEntry);
   readback_ = gpu::Buffer(device.context(), device.memory(),
                           {sizeof(ShadeCounters), VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryLocation::Readback,
                            "shade counters readback", "readback"});
@@ -138,24 +145,18 @@ graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const
   lastFrameBias_ = bias_;
   ++frames_;
 
-  // An entry takes up to 64 chunks from one partition at once: keep partitions
-  // at least 4 entries large, so a small storage does not fail every big entry.
-  const uint32_t chunks = settings_.storageChunks ? settings_.storageChunks
-                                                  : shadel::chunksForOutput(in.width, in.height, settings_.storageFactor);
-  storage_ = shadel::storageLayoutFor(chunks, std::clamp<uint32_t>(chunks / 256, 1, kStorageCounters));
   const auto objectCount = uint32_t(decoupledDraws_.size());
-  const DecoupledParams params{bias_, settings_.sheetSizeLog2 - 6, storage_.widthChunks, storage_.chunksPerCounter,
-                               ownedEntryCount_, objectCount, 1u, storage_.capacityChunks(),
-                               storage_.counterCount, {}};
-  params_.write(&params, sizeof params);
 
   // Objects in mode auto that are tiny on screen this frame go forward; they
-  // keep their shadel space and simply mark nothing.
+  // keep their shadel space and simply mark nothing. Objects outside the view
+  // are not shaded at all.
   frameDraws_.clear();
   frameObjects_.clear();
+  frameMaterials_.clear();
   frameForwardDraws_ = forwardDraws_;
   for (uint32_t object = 0; object < objectCount; ++object) {
     const glm::vec4 sphere = objectSpheres_[object];
+    if (!sphereInFrustum(in.viewProjection, sphere)) continue;
     const float distance = glm::distance(glm::vec3(sphere), in.cameraPosition);
     const bool tiny = objectAutomatic_[object] && in.pixelsPerUnitAtUnitDistance > 0.0f && distance > sphere.w &&
                       sphere.w * in.pixelsPerUnitAtUnitDistance / distance < kTinyObjectPixels;
@@ -164,20 +165,36 @@ graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const
     } else {
       frameDraws_.push_back(decoupledDraws_[object]);
       frameObjects_.push_back(object);
+      frameMaterials_.push_back(objectMaterials_[object]);
     }
   }
-  render::SceneView forwardView{in.view.scene, in.view.frameUniforms, frameForwardDraws_};
-  render::DecoupledFrame frame{.view = {in.view.scene, in.view.frameUniforms, frameDraws_},
+  layerPlan_ = planLayers(in.view.materials, frameObjects_, frameMaterials_);
+
+  // An entry takes up to 64 chunks from one partition at once: keep partitions
+  // at least 4 entries large, so a small storage does not fail every big entry.
+  // The chunk ring support-expand adds around visible regions comes on top
+  // (measured: +70% on the courtyard at 192², less at larger outputs).
+  const double supportScale = layerPlan_.needsSupport ? kSupportStorageScale : 1.0;
+  const uint32_t chunks = settings_.storageChunks
+                              ? settings_.storageChunks
+                              : shadel::chunksForOutput(in.width, in.height, settings_.storageFactor * supportScale);
+  storage_ = shadel::storageLayoutFor(chunks, std::clamp<uint32_t>(chunks / 256, 1, kStorageCounters));
+  const DecoupledParams params{bias_, settings_.sheetSizeLog2 - 6, storage_.widthChunks, storage_.chunksPerCounter,
+                               ownedEntryCount_, objectCount, storage_.capacityChunks(),
+                               storage_.counterCount, {}};
+  params_.write(&params, sizeof params);
+  render::SceneView forwardView{in.view.scene, in.view.frameUniforms, frameForwardDraws_, in.view.materials};
+  render::DecoupledFrame frame{.view = {in.view.scene, in.view.frameUniforms, frameDraws_, in.view.materials},
                                .objectIds = frameObjects_,
                                .objectDraws = decoupledDraws_,
                                .params = params_, .objects = objects_, .shadelInstances = shadelInstances_,
                                .levelRects = levelRects_, .ownedEntries = ownedEntries_, .idMaps = idMaps_,
                                .ownedEntryCount = ownedEntryCount_, .objectCount = objectCount,
-                               .layerCount = 1, .filter = settings_.filter,
+                               .filter = settings_.filter,
                                .levelView = settings_.view == DebugView::Level};
-  const graph::ResourceState anyUse{graph::Layout::Undefined, graph::PipelineStage::AllCommands,
-                                    graph::AccessFlag::ShaderStorageRead | graph::AccessFlag::ShaderStorageWrite};
-  frame.remap = graph.importPersistentBuffer("remap", {.size = remap_.size()}, anyUse);
+  const auto history = history_.declare(graph, in.device, in.executor, in.view.materials, layerPlan_.persistent,
+                                        storage_.widthTexels(), storage_.heightTexels(), remapBytes_, frames_);
+  frame.remap = history.remap;
   frame.counters = graph.createBuffer("shade counters", {.size = sizeof(ShadeCounters)});
   frame.work = graph.createBuffer("work", {.size = workBufferBytes(objectCount, storage_.capacityChunks())});
   frame.args = graph.createBuffer("dispatch args", {.size = std::max<uint64_t>(12ull * objectCount, 12)});
@@ -186,24 +203,27 @@ graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const
                         .size = graph::Size::absolute(storage_.widthTexels(), storage_.heightTexels())});
   auto readback = graph.importBuffer("shade counters readback", {.size = sizeof(ShadeCounters)}, {},
                                      {graph::Layout::Undefined, graph::PipelineStage::AllCommands, graph::AccessFlag::None});
-  in.executor.bindBuffer(frame.remap, remap_);
   in.executor.bindBuffer(readback, readback_);
 
   passes::ForwardTargets targets;
   targets.depth = graph.createImage("depth", {.format = graph::Format::D32F});
   targets.color = graph.createImage("hdr", {.format = graph::Format::RGBA16F});
   targets.depth = passes::addZPrepass(graph, in.view, targets.depth);
-  if (objectCount) {
-    passes::addShadelClear(graph, frame);
+  // With objects allocated but none shaded this frame, the counters are
+  // still cleared and read back (the adjuster and stats see a zero frame).
+  const bool shading = !frameObjects_.empty();
+  if (objectCount) passes::addShadelClear(graph, frame);
+  if (shading) {
     passes::addShadelMark(graph, frame, targets.depth);
+    if (layerPlan_.needsSupport) passes::addSupportExpand(graph, frame);
     passes::addShadelAllocate(graph, frame);
     passes::addWorkAggregate(graph, frame);
-    passes::addLayerShade(graph, frame);
+    addLayerPasses(graph, frame, in.view.materials, history);
   }
   targets = passes::addForwardOpaque(graph, forwardView, targets);
   if (passes::hasAlphaMode(forwardView, scene::AlphaMode::Mask)) targets = passes::addAlphaMask(graph, forwardView, targets);
+  if (shading) targets.color = passes::addComposite(graph, frame, targets.color, targets.depth);
   if (objectCount) {
-    targets.color = passes::addComposite(graph, frame, targets.color, targets.depth);
     auto& copy = graph.addPass("counters-readback", graph::QueueClass::Graphics, graph::PassKind::Transfer);
     copy.read(frame.counters, graph::Access::TransferSrc);
     readback = copy.write(readback, graph::Access::TransferDst);
@@ -214,12 +234,44 @@ graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const
   }
   if (passes::hasAlphaMode(forwardView, scene::AlphaMode::Blend))
     targets.color = passes::addAlphaBlend(graph, forwardView, in.cameraPosition, targets);
-  if (objectCount && settings_.view == DebugView::Occupancy)
+  if (shading && settings_.view == DebugView::Occupancy)
     targets.color = passes::addOccupancyView(graph, frame, sheetRegionOrigin_, sheetRegionSize_);
-  if (objectCount && settings_.view == DebugView::Sheet) targets.color = passes::addSheetView(graph, frame);
+  if (shading && settings_.view == DebugView::Sheet) targets.color = passes::addSheetView(graph, frame);
   const bool passthrough = settings_.view != DebugView::Final;  // debug colours as they are
   const auto exposure = passes::addExposure(graph, targets.color);
   return passes::addTonemap(graph, targets.color, exposure, in.output, passthrough);
+}
+
+void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, render::DecoupledFrame& frame,
+                                      const plugin::Registry& materials, const LayerHistory::Declared& history) {
+  // The current version of each intermediate layer's own image.
+  std::map<std::string, graph::ResourceHandle> images;
+  for (const auto& name : layerPlan_.images) {
+    const auto& layer = materials.layer(name);
+    images[name] = layer.persistent
+                       ? history.layers.at(name).current
+                       : graph.createImage("layer " + name,
+                                           {.format = layer.format, .size = graph::Size::absolute(
+                                                                        storage_.widthTexels(), storage_.heightTexels())});
+  }
+  for (size_t depth = 0; depth < layerPlan_.depths.size(); ++depth) {
+    std::vector<passes::LayerShadeStep> steps;
+    for (const auto& planned : layerPlan_.depths[depth]) {
+      const auto& layer = materials.layer(planned.layer);
+      passes::LayerShadeStep step{&layer, planned.objects, planned.final ? frame.layerImage : images.at(layer.name)};
+      for (const auto& read : layer.reads) step.inputs.push_back(images.at(read.layer));
+      if (layer.persistent) {
+        step.history = history.layers.at(layer.name).history;
+        const auto& persistent = layerPlan_.persistent;
+        step.persistentSlot = uint32_t(std::find(persistent.begin(), persistent.end(), layer.name) - persistent.begin());
+      }
+      steps.push_back(std::move(step));
+    }
+    const std::string name = depth == 0 ? "layer-shade" : "layer-shade #" + std::to_string(depth + 1);
+    passes::addLayerShade(graph, frame, name, steps, {history.previousRemap, history.valid});
+    for (size_t i = 0; i < steps.size(); ++i)
+      (layerPlan_.depths[depth][i].final ? frame.layerImage : images[steps[i].layer->name]) = steps[i].output;
+  }
 }
 
 DecoupledStats DecoupledShading::stats() const {
@@ -229,7 +281,13 @@ DecoupledStats DecoupledShading::stats() const {
   s.objects = uint32_t(frameObjects_.size());
   s.capacityChunks = storage_.capacityChunks();
   s.storageBytes = uint64_t(storage_.widthTexels()) * storage_.heightTexels() * 8;
-  s.remapBytes = remap_.size();
+  s.remapBytes = remapBytes_;
+  s.historyBytes = history_.bytes();
+  s.layerDispatches = layerPlan_.dispatches;
+  for (const auto& steps : layerPlan_.depths)
+    for (const auto& step : steps) s.layers.push_back(step.layer);
+  for (uint32_t slot = 0; slot < layerPlan_.persistent.size(); ++slot)
+    s.layerReuse.push_back({layerPlan_.persistent[slot], s.counters.layerReused[slot], s.counters.layerComputed[slot]});
   s.idMapBytes = idMapBytes_;
   return s;
 }

@@ -11,11 +11,14 @@
 #include <vector>
 
 #include <shadelgraph/gpu/buffer.hpp>
+#include <shadelgraph/render/decoupled_frame.hpp>
 #include <shadelgraph/render/frame_recipe.hpp>
 #include <shadelgraph/shadel/shadel_space.hpp>
 #include <shadelgraph/shadel/shadel_storage.hpp>
 
 #include "decoupled_tables.hpp"
+#include "layer_history.hpp"
+#include "layer_plan.hpp"
 #include "shade_space_adjuster.hpp"
 #include "shading_choice.hpp"
 
@@ -28,6 +31,10 @@ enum class DebugView { Final, Level, Occupancy, Sheet };
 // projected radius is below this many pixels: too small to pay for its chunks.
 inline constexpr float kTinyObjectPixels = 8.0f;
 
+// Shade storage is this much larger in frames where a visible material reads
+// a neighbourhood (support-expand marks a ring of chunks around what is seen).
+inline constexpr double kSupportStorageScale = 2.0;
+
 struct DecoupledSettings {
   uint32_t sheetSizeLog2 = 16;  // 64K x 64K virtual shadels; up to 19 (512K)
   double storageFactor = shadel::kDefaultStorageFactor;  // shade storage = factor x output pixels
@@ -38,6 +45,12 @@ struct DecoupledSettings {
   ShadeSpaceAdjusterOptions adjuster;
 };
 
+// A persistent layer's shadels of the last frame: served from the frame before, or computed.
+struct LayerReuse {
+  std::string layer;
+  uint64_t reused = 0, computed = 0;
+};
+
 struct DecoupledStats {
   ShadeCounters counters{};  // of the last executed frame
   float bias = 0.0f;         // the bias that frame was rendered with
@@ -46,6 +59,10 @@ struct DecoupledStats {
   uint64_t storageBytes = 0;  // shade storage, per layer
   uint64_t remapBytes = 0;
   uint64_t idMapBytes = 0;
+  uint64_t historyBytes = 0;  // persistent layers' images and last frame's remap
+  uint32_t layerDispatches = 0;  // indirect layer-shade dispatches of the frame
+  std::vector<std::string> layers;  // layers the frame ran decoupled, in pass order
+  std::vector<LayerReuse> layerReuse;  // per persistent layer
 };
 
 class DecoupledShading {
@@ -61,6 +78,9 @@ class DecoupledShading {
 
  private:
   void initialize(const render::FrameInputs& inputs);
+  // One layer-shade pass per depth of the frame's layer plan.
+  void addLayerPasses(graph::RenderGraph& graph, render::DecoupledFrame& frame, const plugin::Registry& materials,
+                      const LayerHistory::Declared& history);
 
   std::vector<ShadingChoice> choices_;
   DecoupledSettings settings_;
@@ -74,14 +94,19 @@ class DecoupledShading {
   std::vector<uint32_t> decoupledDraws_, forwardDraws_;
   std::vector<glm::vec4> objectSpheres_;
   std::vector<bool> objectAutomatic_;
-  // This frame: the objects shaded decoupled (draws and ids), and the forward draws.
+  std::vector<std::string> objectMaterials_;  // by object: its material (runs decoupled)
+  // This frame: the objects shaded decoupled (draws, ids, materials), and the forward draws.
   std::vector<uint32_t> frameDraws_, frameObjects_, frameForwardDraws_;
+  std::vector<std::string> frameMaterials_;
+  LayerPlan layerPlan_;
+  LayerHistory history_;
   std::unique_ptr<shadel::ShadelSpace> space_;
   uint32_t ownedEntryCount_ = 0;
   shadel::StorageLayout storage_;
   uint64_t idMapBytes_ = 0;
   glm::uvec2 sheetRegionOrigin_{0}, sheetRegionSize_{1};  // allocated part of the sheet, in chunks
-  gpu::Buffer params_, objects_, shadelInstances_, levelRects_, ownedEntries_, idMaps_, remap_, readback_;
+  uint64_t remapBytes_ = 0;
+  gpu::Buffer params_, objects_, shadelInstances_, levelRects_, ownedEntries_, idMaps_, readback_;
 };
 
 }  // namespace sg::plugins

@@ -20,8 +20,12 @@ struct DecoupledObject {
   uint32_t idMapOffset;
   uint32_t shadingUvSet;
   glm::vec2 tileOffset;
+  uint32_t supportChunks;  // support-expand grows its marked chunks by this many (0: no neighbourhood layer)
+  uint32_t pad[3];
 };
-static_assert(sizeof(DecoupledObject) == 96);
+static_assert(sizeof(DecoupledObject) == 112);
+
+inline constexpr uint32_t kMaxPersistentLayers = 8;  // SG_MAX_PERSISTENT_LAYERS
 
 // SgShadeCounters (std430).
 struct ShadeCounters {
@@ -32,6 +36,9 @@ struct ShadeCounters {
   uint32_t compositeMisses;
   uint32_t coveredPixels;
   uint32_t levelChunks[kMaxLevels];
+  uint32_t supportChunks;  // chunks support-expand added around the marked ones
+  uint32_t layerReused[kMaxPersistentLayers];    // per persistent layer: shadels served from last frame
+  uint32_t layerComputed[kMaxPersistentLayers];  // and shadels computed
 };
 
 // DecoupledParams (std140).
@@ -42,10 +49,9 @@ struct DecoupledParams {
   uint32_t chunksPerCounter;
   uint32_t ownedEntryCount;
   uint32_t objectCount;
-  uint32_t layerCount;
   uint32_t workCapacity;
   uint32_t storageCounters;
-  uint32_t pad[3];
+  uint32_t pad[4];
 };
 static_assert(sizeof(DecoupledParams) == 48);
 

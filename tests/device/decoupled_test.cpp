@@ -9,50 +9,16 @@
 #include <random>
 #include <set>
 
-#include <builtin_shaders.hpp>
-#include <decoupled/decoupled_shading.hpp>
-#include <shadelgraph/gpu/device.hpp>
 #include <shadelgraph/image/metrics.hpp>
 #include <shadelgraph/image/png.hpp>
-#include <shadelgraph/render/renderer.hpp>
 #include <shadelgraph/scene/default_scene.hpp>
 #include <shadelgraph/scene/gltf_loader.hpp>
 
-#include "device_fixture.hpp"
+#include "decoupled_session.hpp"
 #include "test_support.hpp"
 
 namespace sg::test {
 namespace {
-
-// A scene rendered through the decoupled recipe with every object in `mode`.
-class Session {
- public:
-  Session(scene::Scene s, scene::ShadingMode mode, plugins::DecoupledSettings settings = {})
-      : scene_(std::move(s)), context_(validatedOptions()) {
-    shading_ = std::make_unique<plugins::DecoupledShading>(plugins::chooseShading(scene_, mode), settings);
-    device_ = std::make_unique<gpu::Device>(context_);
-    device_->shaders().add(gpu::builtinShaders());
-    renderer_ = std::make_unique<render::Renderer>(*device_, scene_, shading_->recipe());
-  }
-  ~Session() {
-    renderer_.reset();
-    shading_.reset();  // its buffers come from the device's allocator
-    device_.reset();
-    for (const auto& m : context_.validationLog().messages()) ADD_FAILURE() << "validation: " << m.text;
-  }
-  gpu::HostImage render(uint32_t size, std::optional<scene::Camera> camera = {}) {
-    return renderer_->render({.width = size, .height = size, .cameraOverride = camera}).image;
-  }
-  plugins::DecoupledStats stats() const { return shading_->stats(); }
-  const scene::Scene& scene() const { return scene_; }
-
- private:
-  scene::Scene scene_;
-  gpu::Context context_;
-  std::unique_ptr<plugins::DecoupledShading> shading_;
-  std::unique_ptr<gpu::Device> device_;
-  std::unique_ptr<render::Renderer> renderer_;
-};
 
 std::optional<scene::Scene> loadScene(const std::string& name) {
   if (name == "DefaultScene") return scene::makeDefaultScene();

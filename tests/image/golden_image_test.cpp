@@ -11,6 +11,7 @@
 #include <filesystem>
 
 #include <builtin_shaders.hpp>
+#include <builtin_materials.hpp>
 #include <forward/forward_recipe.hpp>
 #include <shadelgraph/gpu/device.hpp>
 #include <shadelgraph/image/png.hpp>
@@ -36,7 +37,7 @@ gpu::HostImage renderScene(const scene::Scene& s) {
   {
     gpu::Device device(context);
     device.shaders().add(gpu::builtinShaders());
-    render::Renderer renderer(device, s, plugins::forwardRecipe);
+    render::Renderer renderer(device, s, plugins::forwardRecipe, materials::builtinMaterials());
     image = renderer.render({.width = 256, .height = 256}).image;
   }
   for (const auto& m : context.validationLog().messages()) ADD_FAILURE() << "validation: " << m.text;

@@ -12,6 +12,7 @@
 
 const uint SG_STORAGE_COUNTERS = 16u;
 const uint SG_MAX_LEVELS = 16u;
+const uint SG_MAX_PERSISTENT_LAYERS = 8u;
 
 // sg::plugins::DecoupledObject: one decoupled instance (all its primitives share one material).
 struct SgDecoupledObject {
@@ -23,6 +24,7 @@ struct SgDecoupledObject {
   uint idMapOffset;    // first texel of level 0 in the ID-map buffer
   uint shadingUvSet;   // 0 or 1
   vec2 tileOffset;     // shading UV = uv - tileOffset
+  uint supportChunks;  // support-expand grows its marked chunks by this many (0: no neighbourhood layer)
 };
 
 // sg::plugins::ShadeCounters.
@@ -34,6 +36,9 @@ struct SgShadeCounters {
   uint compositeMisses;
   uint coveredPixels;                   // fragments composite wrote
   uint levelChunks[SG_MAX_LEVELS];      // marked chunks per detail level
+  uint supportChunks;                   // chunks support-expand added around the marked ones
+  uint layerReused[SG_MAX_PERSISTENT_LAYERS];    // per persistent layer: shadels served from last frame
+  uint layerComputed[SG_MAX_PERSISTENT_LAYERS];  // and shadels computed
 };
 
 layout(set = 0, binding = 1, std140) uniform DecoupledParams {
@@ -43,7 +48,6 @@ layout(set = 0, binding = 1, std140) uniform DecoupledParams {
   uint chunksPerCounter;      // storage partition size
   uint ownedEntryCount;
   uint objectCount;
-  uint layerCount;
   uint workCapacity;          // work items the work buffer holds
   uint storageCounters;       // partitions in use (<= SG_STORAGE_COUNTERS)
 } params;

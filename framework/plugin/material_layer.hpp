@@ -1,0 +1,53 @@
+#pragma once
+// A material layer: one GLSL function over a Surface (materials/common/surface.glsl)
+// returning a vec4, plus what the framework needs to run it in either shading
+// path. The framework generates the decoupled compute variant (one shadel per
+// invocation) and the forward fragment variant (one pixel) from it.
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <shadelgraph/graph/resource_desc.hpp>
+
+namespace sg::plugin {
+
+// Which shading paths a layer can run in. A layer reading a neighbourhood
+// (radius > 0) only exists in shadel space: it is DecoupledOnly, and a
+// material using it names a forward fallback.
+enum class LayerPaths : uint8_t { Both, DecoupledOnly, ForwardOnly };
+
+// The layer reads `layer`'s value (sgLayer(name) / sgLayerAt(name, offset))
+// up to `radius` shadels away at the same detail level.
+struct LayerRead {
+  std::string layer;
+  uint32_t radius = 0;
+};
+
+// Neighbourhoods wider than one chunk would need more than the chunks next
+// to the visible ones (support-expand grows by one chunk).
+inline constexpr uint32_t kMaxLayerRadius = 8;
+
+struct MaterialLayer {
+  std::string name;      // unique, e.g. "height"; also the GLSL accessor name (letters, digits, '_', '-')
+  std::string source;    // GLSL virtual path, e.g. "materials/height-normal/height.glsl"
+  std::string function;  // vec4 function(Surface s) in that file
+  // The layer image an intermediate layer writes; a material's last layer
+  // writes the shaded colour (RGBA16F: radiance, alpha) that composite filters.
+  graph::Format format = graph::Format::RGBA16F;
+  std::vector<LayerRead> reads;  // earlier layers of the stack
+  // Keeps last frame's values: sgPrevious(out vec4) returns them where the
+  // shadel existed last frame (decoupled; the forward variant always computes).
+  bool persistent = false;
+  LayerPaths paths = LayerPaths::Both;
+  std::vector<std::pair<std::string, std::string>> parameters;  // #define name value, before the source
+  std::string plugin;  // who registered it (set by the registry; named in errors)
+
+  uint32_t radius() const {
+    uint32_t r = 0;
+    for (const auto& read : reads) r = read.radius > r ? read.radius : r;
+    return r;
+  }
+};
+
+}  // namespace sg::plugin

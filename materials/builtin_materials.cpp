@@ -1,0 +1,66 @@
+#include "builtin_materials.hpp"
+
+namespace sg::materials {
+
+using plugin::LayerPaths;
+using plugin::MaterialLayer;
+using plugin::MaterialStack;
+
+void registerBuiltinMaterials(plugin::Registry& registry) {
+  registry.beginPlugin("built-in");
+  // glTF metallic-roughness: the default material of every object.
+  registry.addLayer({.name = "gltf-pbr", .source = "materials/gltf-pbr/gltf_pbr.glsl", .function = "shadeGltfPbr"});
+  registry.addMaterial({.name = "gltf-pbr", .layers = {"gltf-pbr"}});
+
+  // Height -> normal: a neighbourhood read in shadel space, screen derivatives forward.
+  const std::vector<std::pair<std::string, std::string>> bumps{{"BUMP_FREQUENCY", "16.0"}, {"BUMP_HEIGHT", "0.04"}};
+  registry.addLayer({.name = "height", .source = "materials/height-normal/height.glsl", .function = "bumpHeight",
+                     .format = graph::Format::R16F, .parameters = bumps});
+  registry.addLayer({.name = "normal-from-height", .source = "materials/height-normal/normal_from_height.glsl",
+                     .function = "normalFromHeight", .reads = {{"height", 1}}, .paths = LayerPaths::DecoupledOnly});
+  registry.addLayer({.name = "normal-from-height-screen",
+                     .source = "materials/height-normal/normal_from_height_screen.glsl",
+                     .function = "normalFromHeightScreen", .reads = {{"height", 0}},
+                     .paths = LayerPaths::ForwardOnly});
+  registry.addMaterial({.name = "bumps", .layers = {"height", "normal-from-height"}, .forwardFallback = "bumps-forward"});
+  registry.addMaterial({.name = "bumps-forward", .layers = {"height", "normal-from-height-screen"}});
+
+  // A multi-pass blur of the shaded layer (the paper's skin example).
+  const auto blur = [&](std::string name, std::string input, std::string axis) {
+    registry.addLayer({.name = std::move(name), .source = "materials/blur/blur.glsl", .function = "blurLayer",
+                       .reads = {{input, 2}}, .paths = LayerPaths::DecoupledOnly,
+                       .parameters = {{"BLUR_INPUT", plugin::glslName(input)}, {"BLUR_AXIS", std::move(axis)},
+                                      {"BLUR_RADIUS", "2"}, {"BLUR_SIGMA", "1.2"}}});
+  };
+  blur("blur-u", "gltf-pbr", "ivec2(1, 0)");
+  blur("blur-v", "blur-u", "ivec2(0, 1)");
+  registry.addMaterial({.name = "skin", .layers = {"gltf-pbr", "blur-u", "blur-v"}, .forwardFallback = "gltf-pbr"});
+
+  // A persistent layer: expensive, view-independent, reused from last frame.
+  registry.addLayer({.name = "marble", .source = "materials/marble/marble.glsl", .function = "marbleColor",
+                     .persistent = true, .parameters = {{"MARBLE_OCTAVES", "10"}}});
+  registry.addLayer({.name = "marble-shade", .source = "materials/marble/marble_shade.glsl",
+                     .function = "shadeMarble", .reads = {{"marble", 0}}});
+  registry.addMaterial({.name = "marble", .layers = {"marble", "marble-shade"}});
+
+  // Debug layers, each a material of its own.
+  for (const auto& [name, source, function] :
+       {std::tuple{"uv-checker", "materials/debug/uv_checker.glsl", "uvChecker"},
+        std::tuple{"detail-level", "materials/debug/detail_level.glsl", "detailLevelColor"},
+        std::tuple{"triangle-id", "materials/debug/triangle_id.glsl", "triangleIdColor"}}) {
+    registry.addLayer({.name = name, .source = source, .function = function});
+    registry.addMaterial({.name = std::string("debug-") + name, .layers = {name}});
+  }
+}
+
+const plugin::Registry& builtinMaterials() {
+  static const plugin::Registry registry = [] {
+    plugin::Registry r;
+    registerBuiltinMaterials(r);
+    r.check();
+    return r;
+  }();
+  return registry;
+}
+
+}  // namespace sg::materials

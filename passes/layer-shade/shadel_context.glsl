@@ -1,0 +1,140 @@
+// What the decoupled (compute) variant of every material layer starts from:
+// the shadel this invocation shades (from the object's work list, one 8x8
+// chunk per workgroup), its surface point, and reads of earlier layers and of
+// last frame at shadels of the same level. The framework's generated variant
+// includes this, declares the layer images, then the author's source.
+//
+// For each shadel: its UV at its level -> the triangle from the ID map ->
+// barycentrics clamped to [-eps, 1+eps] (a shadel just outside its triangle
+// extrapolates it, as the ID map's conservative texels intend) -> vertex
+// attributes and their derivatives per shadel step, interpolated as a
+// fragment shader would.
+#ifndef SG_SHADEL_CONTEXT_GLSL
+#define SG_SHADEL_CONTEXT_GLSL
+
+#extension GL_EXT_scalar_block_layout : require
+#include <framework/render/shaders/frame.glsl>
+#include <plugins/decoupled/shaders/decoupled.glsl>
+#include <plugins/decoupled/shaders/work.glsl>
+#include <materials/gltf-pbr/material.glsl>
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+struct SgVertex {  // render::GpuVertex
+  vec3 position;
+  vec3 normal;
+  vec4 tangent;
+  vec2 uv0;
+  vec2 uv1;
+  vec4 color;
+};
+layout(set = 0, binding = 10, std430) readonly buffer IdMaps { uint idMaps[]; };
+layout(set = 0, binding = 11, scalar) readonly buffer Vertices { SgVertex vertices[]; };
+layout(set = 0, binding = 12, std430) readonly buffer Indices { uint indices[]; };
+// historyValid: last frame's remap and layer image describe this storage layout.
+layout(push_constant) uniform Push { uint objectIndex; uint persistentSlot; uint historyValid; } sgPush;
+
+const uint SG_NO_TRIANGLE = 0xFFFFFFFFu;
+const float kBarycentricEpsilon = 0.05;
+
+// The shadel being shaded.
+struct SgShadelContext {
+  ivec2 target;        // its texel in the layer images
+  uvec2 shadel;        // virtual sheet coordinates
+  uvec2 local;         // inside its level rectangle
+  SgLevelRect rect;
+  uint level;
+  uint triangle;       // SG_NO_TRIANGLE: nothing to shade (outside the chart or past the level's edge)
+  uint levelOffset;    // of its level in the object's ID map
+};
+SgShadelContext sgShadel;
+
+// The detail level of the shadel (0 = finest).
+float sgDetailLevel() { return float(sgShadel.level); }
+uint sgTriangleId() { return sgShadel.triangle; }
+
+uint sgTriangleAt(uvec2 local) {
+  SgDecoupledObject o = objects[sgPush.objectIndex];
+  return idMaps[o.idMapOffset + sgShadel.levelOffset + local.y * sgShadel.rect.size + local.x];
+}
+
+vec3 sgBarycentrics(vec2 p, vec2 a, vec2 b, vec2 c) {
+  vec2 v0 = b - a, v1 = c - a, v2 = p - a;
+  float d = v0.x * v1.y - v1.x * v0.y;
+  float v = (v2.x * v1.y - v1.x * v2.y) / d;
+  float w = (v0.x * v2.y - v2.x * v0.y) / d;
+  return vec3(1.0 - v - w, v, w);
+}
+
+vec2 sgShadingUv(SgVertex v, SgDecoupledObject o) { return (o.shadingUvSet == 1u ? v.uv1 : v.uv0) - o.tileOffset; }
+
+// Finds this invocation's shadel (sgShadel) and, if it lies on the object,
+// its surface point. False: write nothing meaningful (the layer gets vec4(0)).
+bool sgBeginShadel(out Surface s) {
+  SgDecoupledObject o = objects[sgPush.objectIndex];
+  uint item = sgWorkItemSlot(work[sgObjectOffsetSlot(sgPush.objectIndex)] + gl_WorkGroupID.x);
+  uint entryIndex = work[item], chunkIndex = work[item + 1u], level = work[item + 2u], physical = work[item + 3u];
+  uint texelIndex = gl_LocalInvocationID.y * SG_CHUNK_SIZE + gl_LocalInvocationID.x;
+  sgShadel.target = ivec2(sgStorageTexel(physical, texelIndex, params.storageWidthChunks));
+  sgShadel.shadel = sgVirtualShadel(SgShadelAddress(entryIndex, chunkIndex, texelIndex), params.entriesPerSideLog2);
+  sgShadel.rect = sgLevelRect(sgPush.objectIndex, level);
+  sgShadel.level = level;
+  sgShadel.local = sgShadel.shadel - sgShadel.rect.origin;
+  sgShadel.triangle = SG_NO_TRIANGLE;
+  s = Surface(vec3(0.0), vec3(0.0, 0.0, 1.0), vec4(1.0, 0.0, 0.0, 1.0), vec2(0.0), vec2(0.0), vec4(0.0), vec2(0.0),
+              vec2(0.0), vec2(0.0), vec2(0.0), vec3(0.0), vec3(0.0));
+  // Chunks of levels smaller than a chunk, and texels past the level's edge.
+  if (sgShadel.local.x >= sgShadel.rect.size || sgShadel.local.y >= sgShadel.rect.size) return false;
+  uint size0 = shadelInstances[sgPush.objectIndex].level0Size;
+  sgShadel.levelOffset = 0u;
+  for (uint l = 0u; l < level; ++l) sgShadel.levelOffset += (size0 >> l) * (size0 >> l);
+  sgShadel.triangle = sgTriangleAt(sgShadel.local);
+  if (sgShadel.triangle == SG_NO_TRIANGLE) return false;
+
+  uint i0 = indices[o.firstIndex + 3u * sgShadel.triangle] + uint(o.vertexOffset);
+  uint i1 = indices[o.firstIndex + 3u * sgShadel.triangle + 1u] + uint(o.vertexOffset);
+  uint i2 = indices[o.firstIndex + 3u * sgShadel.triangle + 2u] + uint(o.vertexOffset);
+  SgVertex v0 = vertices[i0], v1 = vertices[i1], v2 = vertices[i2];
+  vec2 s0 = sgShadingUv(v0, o), s1 = sgShadingUv(v1, o), s2 = sgShadingUv(v2, o);
+
+  float step = 1.0 / float(sgShadel.rect.size);
+  vec2 uv = (vec2(sgShadel.local) + 0.5) * step;
+  vec3 b = clamp(sgBarycentrics(uv, s0, s1, s2), -kBarycentricEpsilon, 1.0 + kBarycentricEpsilon);
+  b /= b.x + b.y + b.z;
+  // Barycentrics are affine in UV: their change per shadel step is exact and
+  // the same everywhere in the triangle.
+  vec3 bDx = sgBarycentrics(uv + vec2(step, 0.0), s0, s1, s2) - sgBarycentrics(uv, s0, s1, s2);
+  vec3 bDy = sgBarycentrics(uv + vec2(0.0, step), s0, s1, s2) - sgBarycentrics(uv, s0, s1, s2);
+
+  mat3 normalMatrix = transpose(inverse(mat3(o.world)));
+  s.position = (o.world * vec4(v0.position * b.x + v1.position * b.y + v2.position * b.z, 1.0)).xyz;
+  s.normal = normalize(normalMatrix * (v0.normal * b.x + v1.normal * b.y + v2.normal * b.z));
+  vec4 t = v0.tangent * b.x + v1.tangent * b.y + v2.tangent * b.z;
+  s.tangent = vec4(mat3(o.world) * t.xyz, v0.tangent.w);
+  s.uv0 = v0.uv0 * b.x + v1.uv0 * b.y + v2.uv0 * b.z;
+  s.uv1 = v0.uv1 * b.x + v1.uv1 * b.y + v2.uv1 * b.z;
+  s.color = v0.color * b.x + v1.color * b.y + v2.color * b.z;
+  s.uv0Dx = v0.uv0 * bDx.x + v1.uv0 * bDx.y + v2.uv0 * bDx.z;
+  s.uv0Dy = v0.uv0 * bDy.x + v1.uv0 * bDy.y + v2.uv0 * bDy.z;
+  s.uv1Dx = v0.uv1 * bDx.x + v1.uv1 * bDx.y + v2.uv1 * bDx.z;
+  s.uv1Dy = v0.uv1 * bDy.x + v1.uv1 * bDy.y + v2.uv1 * bDy.z;
+  s.positionDx = mat3(o.world) * (v0.position * bDx.x + v1.position * bDx.y + v2.position * bDx.z);
+  s.positionDy = mat3(o.world) * (v0.position * bDy.x + v1.position * bDy.y + v2.position * bDy.z);
+  // Double-sided surfaces seen from behind: shade the side facing the camera.
+  if (material.flags.y != 0u && dot(s.normal, frame.cameraPosition.xyz - s.position) < 0.0) s.normal = -s.normal;
+  return true;
+}
+
+// An earlier layer's value `offset` shadels away at the same level. Past the
+// level's edge, off the chart, or in a chunk nobody shaded (only past the
+// support a layer declared), it reads the shadel itself.
+vec4 sgFetchLayer(sampler2D image, ivec2 offset) {
+  ivec2 local = clamp(ivec2(sgShadel.local) + offset, ivec2(0), ivec2(sgShadel.rect.size) - 1);
+  if (offset != ivec2(0) && sgTriangleAt(uvec2(local)) == SG_NO_TRIANGLE) local = ivec2(sgShadel.local);
+  SgShadelAddress a = sgShadelAddress(sgShadel.rect.origin + uvec2(local), params.entriesPerSideLog2);
+  uint physical = sgPhysicalChunk(remap[a.entryIndex], a.chunkIndex);
+  if (physical == SG_INVALID_CHUNK) return texelFetch(image, sgShadel.target, 0);
+  return texelFetch(image, ivec2(sgStorageTexel(physical, a.texelIndex, params.storageWidthChunks)), 0);
+}
+
+#endif

@@ -1,0 +1,80 @@
+#include "support_expand.hpp"
+
+#include <algorithm>
+#include <array>
+
+#include <shadelgraph/gpu/pass_context.hpp>
+
+namespace sg::passes {
+namespace {
+
+constexpr const char* kShader = "passes/support-expand/support_expand.comp";
+
+// The shader's gather half, or with `apply` its apply half.
+const gpu::Pipeline& supportPipeline(PassContext& ctx, bool apply, std::span<const uint32_t> bindings) {
+  return ctx.device().pipeline(apply ? "support-expand-apply" : "support-expand-gather", [&] {
+    gpu::ComputePipelineDesc desc{.shader = {.path = kShader}, .layout = render::decoupledLayout(bindings)};
+    if (apply) desc.shader.defines.push_back({"SG_SUPPORT_APPLY", "1"});
+    return desc;
+  });
+}
+
+// `groups` workgroups as a 2D grid (x within the 65535 every device allows);
+// the shader reads them back as one index and drops those past the end.
+void dispatchGroups(VkCommandBuffer cmd, uint32_t groups) {
+  const uint32_t x = std::min(groups, 65535u);
+  vkCmdDispatch(cmd, x, (groups + x - 1) / x, 1);
+}
+
+// Compute to compute, over the whole buffer.
+VkBufferMemoryBarrier2 bufferBarrier(VkBuffer buffer, VkAccessFlags2 src, VkAccessFlags2 dst) {
+  VkBufferMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+  barrier.srcStageMask = barrier.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+  barrier.srcAccessMask = src;
+  barrier.dstAccessMask = dst;
+  barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.buffer = buffer;
+  barrier.size = VK_WHOLE_SIZE;
+  return barrier;
+}
+
+}  // namespace
+
+void addSupportExpand(graph::RenderGraph& graph, render::DecoupledFrame& frame) {
+  // One 64-bit mask per owned entry, written by the gather dispatch, read by the apply one.
+  auto masks = graph.createBuffer("support masks", {.size = 8ull * std::max(frame.ownedEntryCount, 1u)});
+  auto& pass = graph.addPass("support-expand", graph::QueueClass::Graphics, graph::PassKind::Compute);
+  frame.remap = pass.write(frame.remap, graph::Access::StorageReadWrite);
+  frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);
+  masks = pass.write(masks, graph::Access::StorageReadWrite);
+  pass.execute([frame, masks](PassContext& ctx) {
+    using namespace render;
+    if (frame.ownedEntryCount == 0) return;
+    const std::array bindings{kBindParams, kBindObjects,      kBindShadelInstances, kBindLevelRects,
+                              kBindRemap,  kBindOwnedEntries, kBindCounters,        kBindSupportMasks};
+    const VkBuffer maskBuffer = ctx.buffer(masks).handle();
+    const std::array extra{gpu::DescriptorWrite{kBindSupportMasks, gpu::BufferBinding{maskBuffer}}};
+
+    bindDecoupled(ctx, supportPipeline(ctx, false, bindings), frame, bindings, extra);
+    dispatchGroups(ctx.cmd(), frame.ownedEntryCount);  // a workgroup per owned entry
+
+    // Apply may start only when all of gather is done: apply reads the masks
+    // gather wrote (a memory dependency), and writes occupancy gather read in
+    // neighbouring entries (write-after-read: an execution dependency; without
+    // it a chunk could grow from a chunk added in this very pass, a
+    // nondeterministic cascade). The graph synchronizes only between passes.
+    const std::array barriers{bufferBarrier(maskBuffer, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT),
+                              bufferBarrier(ctx.buffer(frame.remap).handle(), VK_ACCESS_2_NONE,
+                                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT)};
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.bufferMemoryBarrierCount = uint32_t(barriers.size());
+    dependency.pBufferMemoryBarriers = barriers.data();
+    vkCmdPipelineBarrier2(ctx.cmd(), &dependency);
+
+    bindDecoupled(ctx, supportPipeline(ctx, true, bindings), frame, bindings, extra);
+    dispatchGroups(ctx.cmd(), (frame.ownedEntryCount + 63) / 64);  // a thread per owned entry
+  });
+}
+
+}  // namespace sg::passes

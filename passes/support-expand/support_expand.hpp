@@ -1,0 +1,13 @@
+#pragma once
+#include <shadelgraph/graph/render_graph.hpp>
+#include <shadelgraph/render/decoupled_frame.hpp>
+
+namespace sg::passes {
+
+// Marks the chunks around the marked ones for objects whose layers read
+// neighbours (DecoupledObject::supportChunks > 0), inside each level rectangle,
+// and counts them in ShadeCounters::supportChunks. Between shadel-mark and
+// shadel-allocate (compute, on the graphics queue). Twin of shadel::expandSupport.
+void addSupportExpand(graph::RenderGraph& graph, render::DecoupledFrame& frame);
+
+}  // namespace sg::passes

@@ -1,0 +1,10 @@
+#pragma once
+// Is a bounding sphere (xyz centre, w radius) at least partly inside the view
+// frustum of a world-to-clip matrix (Vulkan clip space, depth 0..w)?
+#include <glm/glm.hpp>
+
+namespace sg::plugins {
+
+bool sphereInFrustum(const glm::mat4& viewProjection, const glm::vec4& sphere);
+
+}  // namespace sg::plugins

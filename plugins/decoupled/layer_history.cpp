@@ -1,0 +1,83 @@
+#include "layer_history.hpp"
+
+#include <shadelgraph/gpu/barriers.hpp>
+#include <shadelgraph/gpu/graph_to_vulkan.hpp>
+
+namespace sg::plugins {
+namespace {
+
+// Where persistent resources rest between frames: any shader use.
+const graph::ResourceState kResting{graph::Layout::General, graph::PipelineStage::AllCommands,
+                                    graph::AccessFlag::ShaderStorageRead | graph::AccessFlag::ShaderStorageWrite |
+                                        graph::AccessFlag::ShaderSampledRead};
+
+}  // namespace
+
+gpu::Buffer& LayerHistory::remap(gpu::Device& device, uint32_t index, uint64_t bytes) {
+  if (!remaps_[index])
+    remaps_[index] = gpu::Buffer(device.context(), device.memory(),
+                                 {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryLocation::Device,
+                                  index ? "remap (last frame)" : "remap", index ? "history" : "remap",
+                                  /*concurrent: graphics and async compute both use it*/ true});
+  return remaps_[index];
+}
+
+LayerHistory::Declared LayerHistory::declare(graph::RenderGraph& graph, gpu::Device& device,
+                                             gpu::GraphExecutor& executor, const plugin::Registry& registry,
+                                             const std::vector<std::string>& layers, uint32_t width,
+                                             uint32_t height, uint64_t remapBytes, uint64_t frame) {
+  Declared out;
+  // Without persistent layers one remap serves every frame; with them the two
+  // swap, so last frame's stays readable.
+  const uint32_t current = layers.empty() ? 0u : uint32_t(frame % 2);
+  out.remap = graph.importPersistentBuffer("remap", {.size = remapBytes}, kResting);
+  executor.bindBuffer(out.remap, remap(device, current, remapBytes));
+  if (layers.empty()) {
+    lastKey_.clear();
+    return out;
+  }
+  out.previousRemap = graph.history(out.remap);
+  executor.bindBuffer(out.previousRemap, remap(device, 1 - current, remapBytes));
+
+  std::string key = std::to_string(width) + "x" + std::to_string(height);
+  for (const auto& name : layers) {
+    const auto& layer = registry.layer(name);
+    key += " " + name;
+    auto& pair = images_[name];
+    formatBytes_[name] = graph::bytesPerTexel(layer.format);
+    if (!pair[0] || pair[0].desc().width != width || pair[0].desc().height != height) {
+      for (uint32_t i = 0; i < 2; ++i)
+        pair[i] = gpu::Image(device.context(), device.memory(),
+                             {.width = width, .height = height, .format = gpu::toVk(layer.format),
+                              .usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                              .name = "layer " + name + (i ? " (B)" : " (A)"), .category = "history"});
+      // The graph expects them resting in General.
+      device.context().submitAndWait([&](VkCommandBuffer cmd) {
+        for (auto& image : pair)
+          gpu::imageBarrier(cmd, image.handle(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, {},
+                            {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT});
+      });
+    }
+    const graph::ImageDesc desc{.format = layer.format, .size = graph::Size::absolute(width, height)};
+    PersistentLayerHandles handles;
+    handles.current = graph.importPersistentImage("layer " + name, desc, kResting);
+    handles.history = graph.history(handles.current);
+    executor.bindImage(handles.current, pair[current]);
+    executor.bindImage(handles.history, pair[1 - current]);
+    out.layers[name] = handles;
+  }
+  // Last frame must have stored these layers at this size, with this remap pair.
+  out.valid = key == lastKey_;
+  lastKey_ = key;
+  return out;
+}
+
+uint64_t LayerHistory::bytes() const {
+  uint64_t total = remaps_[1] ? remaps_[1].size() : 0;
+  for (const auto& [name, pair] : images_)
+    for (const auto& image : pair)
+      if (image) total += uint64_t(image.desc().width) * image.desc().height * formatBytes_.at(name);
+  return total;
+}
+
+}  // namespace sg::plugins

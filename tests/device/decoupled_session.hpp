@@ -1,0 +1,54 @@
+#pragma once
+// A scene rendered through the decoupled recipe with every object in a given
+// shading mode, validation on (any message fails the test): what the
+// decoupled and material-layer device tests share.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <optional>
+
+#include <builtin_materials.hpp>
+#include <builtin_shaders.hpp>
+#include <decoupled/decoupled_shading.hpp>
+#include <shadelgraph/gpu/device.hpp>
+#include <shadelgraph/render/renderer.hpp>
+
+#include "device_fixture.hpp"
+
+namespace sg::test {
+
+// A scene rendered through the decoupled recipe with every object in `mode`.
+class Session {
+ public:
+  Session(scene::Scene s, scene::ShadingMode mode, plugins::DecoupledSettings settings = {},
+          const plugin::Registry& materials = materials::builtinMaterials())
+      : scene_(std::move(s)), context_(validatedOptions()) {
+    shading_ = std::make_unique<plugins::DecoupledShading>(plugins::chooseShading(scene_, mode), settings);
+    device_ = std::make_unique<gpu::Device>(context_);
+    device_->shaders().add(gpu::builtinShaders());
+    renderer_ = std::make_unique<render::Renderer>(*device_, scene_, shading_->recipe(), materials);
+  }
+  ~Session() {
+    renderer_.reset();
+    shading_.reset();  // its buffers come from the device's allocator
+    device_.reset();
+    for (const auto& m : context_.validationLog().messages()) ADD_FAILURE() << "validation: " << m.text;
+  }
+  gpu::HostImage render(uint32_t size, std::optional<scene::Camera> camera = {}) {
+    return renderer_->render({.width = size, .height = size, .cameraOverride = camera}).image;
+  }
+  graph::CompiledPlan plan(uint32_t size, std::optional<scene::Camera> camera = {}) {
+    return renderer_->plan({.width = size, .height = size, .cameraOverride = camera});
+  }
+  plugins::DecoupledStats stats() const { return shading_->stats(); }
+  const scene::Scene& scene() const { return scene_; }
+
+ private:
+  scene::Scene scene_;
+  gpu::Context context_;
+  std::unique_ptr<plugins::DecoupledShading> shading_;
+  std::unique_ptr<gpu::Device> device_;
+  std::unique_ptr<render::Renderer> renderer_;
+};
+
+}  // namespace sg::test

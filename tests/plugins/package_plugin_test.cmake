@@ -1,0 +1,91 @@
+# cmake -DSG_BUILD_DIR=... -DSG_SOURCE_DIR=... -DWORK_DIR=... -DGENERATOR=... -P package_plugin_test.cmake
+#
+# What a third party does with shadelgraph: install it, build a plugin against
+# the installed package only (find_package(shadelgraph)), and run the
+# installed executable with the plugin.
+cmake_minimum_required(VERSION 3.25)
+foreach(var SG_BUILD_DIR SG_SOURCE_DIR WORK_DIR GENERATOR)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "package_plugin_test.cmake: -D${var}=... is required")
+  endif()
+endforeach()
+
+# Step 4 (render with the plugin's material) waits for `render --material` and
+# the layer code generator: set this to ON when they exist.
+set(render_with_plugin OFF)
+
+set(prefix ${WORK_DIR}/prefix)
+set(build ${WORK_DIR}/build)
+set(plugin ${build}/libsg_example_stripes.so)
+set(image ${WORK_DIR}/stripes.png)
+file(REMOVE_RECURSE ${WORK_DIR})
+file(MAKE_DIRECTORY ${WORK_DIR})
+
+# run(<what> COMMAND ...): runs it, fails the test with its output unless it exits 0.
+function(run what)
+  execute_process(${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT code EQUAL 0)
+    message(FATAL_ERROR "${what} failed (${code}):\n${out}\n${err}")
+  endif()
+  set(run_stdout "${out}" PARENT_SCOPE)
+  set(run_stderr "${err}" PARENT_SCOPE)
+endfunction()
+
+# 1. Install this build.
+run("cmake --install" COMMAND ${CMAKE_COMMAND} --install ${SG_BUILD_DIR} --prefix ${prefix})
+foreach(file bin/shadelgraph include/shadelgraph/plugin/plugin_api.hpp lib/cmake/shadelgraph/shadelgraphConfig.cmake)
+  if(NOT EXISTS ${prefix}/${file})
+    message(FATAL_ERROR "the installed package has no ${file}")
+  endif()
+endforeach()
+
+# 2. Build the example plugin out of tree, against the installed package only.
+run("configuring plugins/example-stripes" COMMAND ${CMAKE_COMMAND}
+  -S ${SG_SOURCE_DIR}/plugins/example-stripes -B ${build} -G "${GENERATOR}"
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_PREFIX_PATH=${prefix})
+run("building plugins/example-stripes" COMMAND ${CMAKE_COMMAND} --build ${build})
+foreach(file ${plugin} ${build}/shaders/example-stripes/stripes.glsl)
+  if(NOT EXISTS ${file})
+    message(FATAL_ERROR "the plugin build did not produce ${file}")
+  endif()
+endforeach()
+# It links the installed framework libraries, and carries no copy of them.
+run("readelf" COMMAND readelf -d ${plugin})
+if(NOT run_stdout MATCHES "libshadelgraph_plugin\\.so")
+  message(FATAL_ERROR "${plugin} does not link libshadelgraph_plugin.so:\n${run_stdout}")
+endif()
+run("nm" COMMAND nm -C --defined-only ${plugin})
+if(run_stdout MATCHES "Registry::addLayer")
+  message(FATAL_ERROR "${plugin} defines its own Registry::addLayer: it carries a copy of the framework")
+endif()
+
+# 3. The installed executable loads it: `graph` runs the whole session setup
+# (plugins, scene, device) without rendering. Loading it again from its
+# directory must fail (its layer is already registered), proving it loaded.
+set(sg ${prefix}/bin/shadelgraph)
+run("shadelgraph graph --plugin" COMMAND ${sg} graph --size 64x64 --plugin ${plugin})
+if(NOT run_stderr MATCHES "plugin 'example-stripes'")
+  message(FATAL_ERROR "shadelgraph graph --plugin did not report loading example-stripes:\n${run_stderr}")
+endif()
+run("shadelgraph graph --plugin-dir" COMMAND ${sg} graph --size 64x64 --plugin-dir ${build})
+execute_process(COMMAND ${sg} graph --size 64x64 --plugin-dir ${build} --plugin ${plugin}
+  RESULT_VARIABLE code ERROR_VARIABLE err OUTPUT_QUIET)
+if(code EQUAL 0 OR NOT err MATCHES "material layer 'stripes'.*already registered")
+  message(FATAL_ERROR "loading example-stripes twice should fail on its duplicate layer (${code}):\n${err}")
+endif()
+
+# A frame renders with the plugin loaded (the built-in materials still work).
+run("shadelgraph render --plugin" COMMAND ${sg} render --size 64x64 --plugin ${plugin} -o ${WORK_DIR}/plain.png)
+if(NOT EXISTS ${WORK_DIR}/plain.png)
+  message(FATAL_ERROR "shadelgraph render --plugin did not write ${WORK_DIR}/plain.png")
+endif()
+
+# 4. Render the default scene with every object in the plugin's material.
+if(render_with_plugin)
+  run("shadelgraph render --plugin --material" COMMAND ${sg} render --plugin ${plugin} --material example-stripes
+    -o ${image} --size 256x256)
+  if(NOT EXISTS ${image})
+    message(FATAL_ERROR "shadelgraph render did not write ${image}")
+  endif()
+endif()
+message(STATUS "installed package, out-of-tree plugin build and plugin load: OK")
