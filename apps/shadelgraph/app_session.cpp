@@ -12,28 +12,36 @@
 
 namespace sg::app {
 
-std::vector<std::string> PluginArgs::paths() const {
+std::vector<std::string> MaterialArgs::paths() const {
   std::vector<std::string> all = directories;
   all.insert(all.end(), libraries.begin(), libraries.end());
   return all;
 }
 
-void addPluginOptions(CLI::App& command, PluginArgs& args) {
+void addMaterialOptions(CLI::App& command, MaterialArgs& args) {
   // Existence is checked by the loader, whose messages name the plugin.
   command.add_option("--plugin", args.libraries, "load a plugin library (.so); repeatable");
   command.add_option("--plugin-dir", args.directories, "load every plugin (*.so) of a directory; repeatable");
+  command.add_option("--material", args.material,
+                     "material (layer stack) of every object, e.g. bumps, skin, marble, debug-uv-checker, or a "
+                     "plugin's (default: the scene's, else gltf-pbr)");
 }
 
 AppSession::AppSession(const std::string& scenePath, const std::string& mode, plugins::DecoupledSettings settings,
-                       std::vector<std::string> pluginPaths) {
+                       const MaterialArgs& materials) {
   // The built-ins, then the plugins (which may use built-in layers); a bad
   // plugin fails before the scene loads and the device starts.
   materials::registerBuiltinMaterials(registry);
-  const auto plugged = plugin::loadPlugins({pluginPaths.begin(), pluginPaths.end()}, registry);
+  const auto paths = materials.paths();
+  const auto plugged = plugin::loadPlugins({paths.begin(), paths.end()}, registry);
   for (const auto& p : plugged) std::fprintf(stderr, "plugin '%s': %s\n", p.name.c_str(), p.library.c_str());
   auto loaded = loadSceneArgument(scenePath);
   scene = std::move(loaded.scene);
   cameraPaths = std::move(loaded.cameraPaths);
+  if (!materials.material.empty()) {
+    registry.material(materials.material);  // an unknown name fails here, listing the known ones
+    for (auto& instance : scene.instances) instance.material = materials.material;
+  }
   std::optional<scene::ShadingMode> override;
   if (!mode.empty()) override = scene::parseShadingMode(mode);
   // Before the upload: objects shaded decoupled without a chart get an automatic one.

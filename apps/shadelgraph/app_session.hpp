@@ -21,20 +21,21 @@ class App;
 
 namespace sg::app {
 
-// --plugin FILE (repeatable) and --plugin-dir DIR (repeatable) of the device commands.
-struct PluginArgs {
+// --plugin FILE, --plugin-dir DIR (both repeatable) and --material NAME of the device commands.
+struct MaterialArgs {
   std::vector<std::string> libraries, directories;
+  std::string material;  // every object's material; empty: the scene's
   // What AppSession loads: the directories' plugins, then the named libraries.
   std::vector<std::string> paths() const;
 };
-void addPluginOptions(CLI::App& command, PluginArgs& args);
+void addMaterialOptions(CLI::App& command, MaterialArgs& args);
 
 struct AppSession {
   // mode: "" (each object's own), "forward", "decoupled" or "auto" for every object.
-  // pluginPaths: plugin libraries or directories of them (--plugin, --plugin-dir),
-  // loaded after those of $SG_PLUGIN_PATH.
+  // materials: plugin libraries or directories of them (--plugin, --plugin-dir),
+  // loaded after those of $SG_PLUGIN_PATH, and a material for every object.
   AppSession(const std::string& scenePath, const std::string& mode = "", plugins::DecoupledSettings settings = {},
-             std::vector<std::string> pluginPaths = {});
+             const MaterialArgs& materials = {});
   ~AppSession();
   // Non-zero (and a message on stderr) when validation reported anything.
   int validationExitCode() const;

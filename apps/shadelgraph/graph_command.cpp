@@ -17,7 +17,7 @@ void addGraphCommand(CLI::App& app) {
     std::string size = "1280x720";
     std::string mode;
     bool dot = false, json = false, noAliasing = false;
-    PluginArgs plugins;
+    MaterialArgs materials;
   };
   static Args args;
   auto* cmd = app.add_subcommand("graph", "Print the compiled render graph of the frame 'render' would run");
@@ -28,12 +28,12 @@ void addGraphCommand(CLI::App& app) {
   auto* dot = cmd->add_flag("--dot", args.dot, "Graphviz DOT");
   cmd->add_flag("--json", args.json, "JSON")->excludes(dot);
   cmd->add_flag("--no-aliasing", args.noAliasing, "give every transient its own memory");
-  addPluginOptions(*cmd, args.plugins);
+  addMaterialOptions(*cmd, args.materials);
   cmd->callback([] {
     render::RenderSettings settings;
     parseSize(args.size, settings.width, settings.height);
     settings.aliasing = !args.noAliasing;
-    AppSession session(args.scene, args.mode, {}, args.plugins.paths());
+    AppSession session(args.scene, args.mode, {}, args.materials);
     const auto plan = session.renderer->plan(settings);
     const std::string text = args.dot ? graph::toDot(plan) : args.json ? graph::toJson(plan) : graph::toText(plan);
     std::fwrite(text.data(), 1, text.size(), stdout);

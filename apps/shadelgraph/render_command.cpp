@@ -34,7 +34,7 @@ struct RenderArgs {
   std::string trace;
   int frames = 2;
   bool noAliasing = false;
-  PluginArgs plugins;
+  MaterialArgs materials;
 };
 
 void printTable(const gpu::FrameTimings& t, uint64_t transientBytes, const gpu::MemoryTotals& memory) {
@@ -123,7 +123,7 @@ void runRender(const RenderArgs& args) {
                                                         {"sheet", plugins::DebugView::Sheet}};
   decoupled.view = views.at(args.view);
   if (args.bias >= 0.0f) decoupled.fixedBias = args.bias;
-  AppSession session(args.scene, args.mode, decoupled, args.plugins.paths());
+  AppSession session(args.scene, args.mode, decoupled, args.materials);
   for (const auto& choice : session.decoupled->choices())
     if (!choice.decoupled && args.mode == "decoupled")
       std::printf("forward: %s (%s)\n", session.scene.instances[choice.instance].name.c_str(), choice.reason.c_str());
@@ -183,7 +183,7 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--trace", args.trace, "write per-pass timings as a Chrome trace (Perfetto)");
   cmd->add_option("--frames", args.frames, "frames to render; the last is reported")->capture_default_str();
   cmd->add_flag("--no-aliasing", args.noAliasing, "give every transient its own memory");
-  addPluginOptions(*cmd, args.plugins);
+  addMaterialOptions(*cmd, args.materials);
   cmd->callback([] { runRender(args); });
 }
 

@@ -11,17 +11,21 @@
 namespace sg::graph {
 namespace {
 
-// Requirements of the used transients, from the options (or estimated), into
-// their plan entries and `requirements` (by ResourceId), and their lifetimes
-// for placement: one sweep over the planned resources.
-void gatherTransients(std::vector<PlannedResource>& resources, const CompileOptions& options,
+// The plan entry of every resource and, in the same sweep, the requirements of
+// the used transients (from the options, or estimated) and their lifetimes
+// for placement. `requirements` is indexed by ResourceId.
+void planAllResources(const RenderGraph& graph, const std::vector<PassId>& order, const CompileOptions& options,
+                      std::vector<ResourceUsage>& usage, std::vector<PlannedResource>& resources,
                       std::vector<MemoryRequirements>& requirements, std::vector<TransientLifetime>& transients,
                       bool& estimated) {
-  requirements.assign(resources.size(), MemoryRequirements{});
+  gatherUsage(graph, order, usage);
+  resources.resize(graph.resourceCount());
+  requirements.assign(graph.resourceCount(), MemoryRequirements{});
   transients.clear();
   estimated = false;
-  for (uint32_t r = 0; r < resources.size(); ++r) {
+  for (uint32_t r = 0; r < graph.resourceCount(); ++r) {
     PlannedResource& resource = resources[r];
+    planResource(graph.resource(ResourceId{r}), usage[r], options.outputWidth, options.outputHeight, resource);
     if (!isTransient(resource.kind) || resource.culled) continue;
     if (!options.memoryRequirements.empty()) {
       if (r >= options.memoryRequirements.size()) {
@@ -70,9 +74,8 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
   plan.outputWidth = options.outputWidth;
   plan.outputHeight = options.outputHeight;
   orderPasses(deps_, culled_, plan.order);
-  planResources(graph, plan.order, options.outputWidth, options.outputHeight, plan.resources, usage_);
-
-  gatherTransients(plan.resources, options, requirements_, transients_, plan.memoryEstimated);
+  planAllResources(graph, plan.order, options, usage_, plan.resources, requirements_, transients_,
+                   plan.memoryEstimated);
   lendTo(plan.aliases, memory_.aliases, [&] {
     lendTo(plan.heaps, memory_.heaps, [&] {
       placeTransients(transients_, static_cast<uint32_t>(plan.resources.size()), requirements_,
@@ -109,6 +112,8 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
   plan.accesses.clear();
   if (inPassOrder) plan.accesses.assign(declared.accesses.begin(), declared.accesses.end());
 
+  positions_.assign(graph.passCount(), kInvalidIndex);
+  for (uint32_t position = 0; position < plan.order.size(); ++position) positions_[plan.order[position].index] = position;
   plan.passes.resize(graph.passCount());
   for (uint32_t p = 0; p < graph.passCount(); ++p) {
     const PassDecl& pass = graph.pass(PassId{p});
@@ -128,10 +133,7 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
     out.barriersBefore = barriers_.before[p];
     out.barriersAfter = barriers_.after[p];
     out.batch = schedule_.passBatch[p];
-    out.orderIndex = kInvalidIndex;
-  }
-  for (uint32_t position = 0; position < plan.order.size(); ++position) {
-    plan.passes[plan.order[position].index].orderIndex = position;
+    out.orderIndex = positions_[p];
   }
   for (FinalBarrier& f : plan.finalBarriers) {
     if (f.afterPass.valid()) f.batch = schedule_.passBatch[f.afterPass.index];

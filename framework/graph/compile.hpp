@@ -35,6 +35,7 @@ class PlanCompiler {
   std::vector<ResourceUsage> usage_;
   std::vector<MemoryRequirements> requirements_;
   std::vector<TransientLifetime> transients_;
+  std::vector<uint32_t> positions_;  // per pass: its position in the order
   MemoryPlan memory_;
   BarrierPlan barriers_;
   QueueSchedule schedule_;

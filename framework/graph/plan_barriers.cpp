@@ -18,7 +18,8 @@ struct Use {
 
 // Uses grouped by resource, each group in execution order.
 struct UseTable {
-  std::vector<uint32_t> first;  // per resource, plus one
+  std::vector<uint32_t> first;    // per resource, plus one
+  std::vector<uint32_t> lastUse;  // per resource: position in the order of its last use
   std::vector<Use> uses;
 
   std::span<const Use> of(uint32_t r) const { return {uses.data() + first[r], uses.data() + first[r + 1]}; }
@@ -29,11 +30,11 @@ UseTable collectUses(const RenderGraph& graph, std::span<const PassId> order, ui
   // then place them, merging a pass's accesses to the same resource.
   UseTable table;
   table.first.assign(resourceCount + 1, 0);
-  std::vector<uint32_t> lastPass(resourceCount, kInvalidIndex);
-  for (const PassId p : order) {
-    for (const ResourceAccess& a : graph.accessesOf(p)) {
-      if (lastPass[a.resource.index] == p.index) continue;
-      lastPass[a.resource.index] = p.index;
+  table.lastUse.assign(resourceCount, kInvalidIndex);
+  for (uint32_t position = 0; position < order.size(); ++position) {
+    for (const ResourceAccess& a : graph.accessesOf(order[position])) {
+      if (table.lastUse[a.resource.index] == position) continue;
+      table.lastUse[a.resource.index] = position;
       ++table.first[a.resource.index + 1];
     }
   }
@@ -325,21 +326,16 @@ void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::
   const auto resourceCount = static_cast<uint32_t>(resources.size());
   const UseTable uses = collectUses(graph, order, resourceCount);
 
-  // Every stage and write of each resource: what a transient taking over its
-  // memory waits for; and its last use, to tell earlier occupants from later
-  // ones (a compact copy: alias lists point anywhere in `resources`).
+  // Every stage and write of each resource: what a transient taking over its memory waits for.
   struct Footprint {
-    uint32_t lastUse = kInvalidIndex;
     PipelineStage stages = PipelineStage::None;
     AccessFlag writes = AccessFlag::None;
   };
   std::vector<Footprint> footprints(resourceCount);
   for (uint32_t r = 0; r < resourceCount; ++r) {
-    Footprint& f = footprints[r];
-    f.lastUse = resources[r].lastUse;
     for (const Use& u : uses.of(r)) {
-      f.stages |= u.stages;
-      f.writes |= writeBits(u.access);
+      footprints[r].stages |= u.stages;
+      footprints[r].writes |= writeBits(u.access);
     }
   }
 
@@ -353,8 +349,9 @@ void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::
     AccessFlag aliasedWrites = AccessFlag::None;
     bool aliased = false;
     for (const ResourceId other : aliases.subspan(resource.aliasesWith.first, resource.aliasesWith.count)) {
+      // (Last uses from the use table: a small array, where alias lists point anywhere.)
+      if (uses.lastUse[other.index] >= resource.firstUse) continue;  // a later occupant
       const Footprint& previous = footprints[other.index];
-      if (previous.lastUse >= resource.firstUse) continue;  // a later occupant
       aliased = true;
       aliasedStages |= previous.stages;
       aliasedWrites |= previous.writes;

@@ -1,7 +1,6 @@
 #include <shadelgraph/graph/plan_resources.hpp>
 
 namespace sg::graph {
-namespace {
 
 // One walk over the kept passes' accesses, in order: lifetimes, usages, queues.
 void gatherUsage(const RenderGraph& graph, std::span<const PassId> order, std::vector<ResourceUsage>& usage) {
@@ -19,7 +18,34 @@ void gatherUsage(const RenderGraph& graph, std::span<const PassId> order, std::v
   }
 }
 
-}  // namespace
+void planResource(const ResourceDecl& decl, const ResourceUsage& usage, uint32_t outputWidth, uint32_t outputHeight,
+                  PlannedResource& out) {
+  std::string name = std::move(out.name);  // keep the string's buffer for the assignment below
+  out = PlannedResource{};
+  out.name = std::move(name);
+  out.name = decl.name;
+  out.kind = decl.kind;
+  out.culled = usage.firstUse == kInvalidIndex;
+  out.readOnly = decl.readOnly;
+  out.historyOf = decl.historyOf;
+  out.firstUse = usage.firstUse;
+  out.lastUse = usage.lastUse;
+  out.desc.type = decl.type;
+  if (decl.type == ResourceType::Image) {
+    out.desc.image = resolveImageDesc(decl.image, outputWidth, outputHeight);
+    out.desc.imageUsage = usage.imageUsage;
+  } else {
+    out.desc.bufferSize = decl.buffer.size;
+    out.desc.bufferUsage = usage.bufferUsage;
+  }
+  out.desc.queues = usage.queues;
+  // Resources shared between queues use concurrent sharing, so no queue-family
+  // ownership transfer is ever needed (see docs: simpler, and lavapipe has a
+  // single family anyway; forgotten ownership transfers are a classic bug).
+  out.desc.concurrent = queueCount(usage.queues) > 1;
+  out.initialState = decl.initialState;
+  out.finalState = decl.finalState;
+}
 
 std::vector<PlannedResource> planResources(const RenderGraph& graph, std::span<const PassId> order,
                                            uint32_t outputWidth, uint32_t outputHeight) {
@@ -30,44 +56,13 @@ std::vector<PlannedResource> planResources(const RenderGraph& graph, std::span<c
 
 void planResources(const RenderGraph& graph, std::span<const PassId> order, uint32_t outputWidth,
                    uint32_t outputHeight, std::vector<PlannedResource>& resources) {
+  // The scattered per-access updates go to the small usage array; then each
+  // plan entry is written once, in one sequential sweep.
   std::vector<ResourceUsage> usage;
-  planResources(graph, order, outputWidth, outputHeight, resources, usage);
-}
-
-void planResources(const RenderGraph& graph, std::span<const PassId> order, uint32_t outputWidth,
-                   uint32_t outputHeight, std::vector<PlannedResource>& resources, std::vector<ResourceUsage>& usage) {
   gatherUsage(graph, order, usage);
-  // Then each plan entry is written once, in one sequential sweep.
   resources.resize(graph.resourceCount());
   for (uint32_t r = 0; r < graph.resourceCount(); ++r) {
-    const ResourceDecl& decl = graph.resource(ResourceId{r});
-    const ResourceUsage& u = usage[r];
-    PlannedResource& out = resources[r];
-    std::string name = std::move(out.name);  // keep the string's buffer for the assignment below
-    out = PlannedResource{};
-    out.name = std::move(name);
-    out.name = decl.name;
-    out.kind = decl.kind;
-    out.culled = u.firstUse == kInvalidIndex;
-    out.readOnly = decl.readOnly;
-    out.historyOf = decl.historyOf;
-    out.firstUse = u.firstUse;
-    out.lastUse = u.lastUse;
-    out.desc.type = decl.type;
-    if (decl.type == ResourceType::Image) {
-      out.desc.image = resolveImageDesc(decl.image, outputWidth, outputHeight);
-      out.desc.imageUsage = u.imageUsage;
-    } else {
-      out.desc.bufferSize = decl.buffer.size;
-      out.desc.bufferUsage = u.bufferUsage;
-    }
-    out.desc.queues = u.queues;
-    // Resources shared between queues use concurrent sharing, so no queue-family
-    // ownership transfer is ever needed (see docs: simpler, and lavapipe has a
-    // single family anyway; forgotten ownership transfers are a classic bug).
-    out.desc.concurrent = queueCount(u.queues) > 1;
-    out.initialState = decl.initialState;
-    out.finalState = decl.finalState;
+    planResource(graph.resource(ResourceId{r}), usage[r], outputWidth, outputHeight, resources[r]);
   }
 }
 

@@ -27,8 +27,11 @@ std::vector<PlannedResource> planResources(const RenderGraph& graph, std::span<c
 // The same into `resources`, reusing its memory.
 void planResources(const RenderGraph& graph, std::span<const PassId> order, uint32_t outputWidth,
                    uint32_t outputHeight, std::vector<PlannedResource>& resources);
-// The same, also reusing `usage` (scratch, left holding each resource's usage).
-void planResources(const RenderGraph& graph, std::span<const PassId> order, uint32_t outputWidth,
-                   uint32_t outputHeight, std::vector<PlannedResource>& resources, std::vector<ResourceUsage>& usage);
+// The two halves of planResources(), for callers that do more per resource in
+// the same sweep (PlanCompiler gathers memory requirements there): the usage
+// of every resource by the passes in `order`, then one resource's plan entry.
+void gatherUsage(const RenderGraph& graph, std::span<const PassId> order, std::vector<ResourceUsage>& usage);
+void planResource(const ResourceDecl& decl, const ResourceUsage& usage, uint32_t outputWidth, uint32_t outputHeight,
+                  PlannedResource& out);
 
 }  // namespace sg::graph

@@ -10,14 +10,9 @@ foreach(var SG_BUILD_DIR SG_SOURCE_DIR WORK_DIR GENERATOR)
   endif()
 endforeach()
 
-# Step 4 (render with the plugin's material) waits for `render --material` and
-# the layer code generator: set this to ON when they exist.
-set(render_with_plugin OFF)
-
 set(prefix ${WORK_DIR}/prefix)
 set(build ${WORK_DIR}/build)
 set(plugin ${build}/libsg_example_stripes.so)
-set(image ${WORK_DIR}/stripes.png)
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
 
@@ -75,17 +70,25 @@ if(code EQUAL 0 OR NOT err MATCHES "material layer 'stripes'.*already registered
 endif()
 
 # A frame renders with the plugin loaded (the built-in materials still work).
-run("shadelgraph render --plugin" COMMAND ${sg} render --size 64x64 --plugin ${plugin} -o ${WORK_DIR}/plain.png)
+run("shadelgraph render --plugin" COMMAND ${sg} render --size 128x128 --plugin ${plugin} -o ${WORK_DIR}/plain.png)
 if(NOT EXISTS ${WORK_DIR}/plain.png)
   message(FATAL_ERROR "shadelgraph render --plugin did not write ${WORK_DIR}/plain.png")
 endif()
 
-# 4. Render the default scene with every object in the plugin's material.
-if(render_with_plugin)
-  run("shadelgraph render --plugin --material" COMMAND ${sg} render --plugin ${plugin} --material example-stripes
-    -o ${image} --size 256x256)
+# 4. Render the default scene with every object in the plugin's material, in
+# both shading paths (the framework generates both variants from its GLSL);
+# each differs from the plain render.
+file(SHA256 ${WORK_DIR}/plain.png plain_hash)
+foreach(mode decoupled forward)
+  set(image ${WORK_DIR}/stripes-${mode}.png)
+  run("shadelgraph render --plugin --material (${mode})" COMMAND ${sg} render --plugin ${plugin}
+    --material example-stripes --mode ${mode} -o ${image} --size 128x128)
   if(NOT EXISTS ${image})
     message(FATAL_ERROR "shadelgraph render did not write ${image}")
   endif()
-endif()
+  file(SHA256 ${image} hash)
+  if(hash STREQUAL plain_hash)
+    message(FATAL_ERROR "${image} is the plain render: the plugin's material was not used")
+  endif()
+endforeach()
 message(STATUS "installed package, out-of-tree plugin build and plugin load: OK")
