@@ -63,6 +63,12 @@ void writeStats(const std::string& path, const AppSession& session, const render
     passMs[p.name] = p.gpuMs;
     passCpuMs[p.name] = p.cpuMs;
   }
+  // Per persistent layer: the fraction of its shadels served from last frame.
+  nlohmann::json layerReuse = nlohmann::json::object();
+  for (const auto& reuse : d.layerReuse) {
+    const uint64_t total = reuse.reused + reuse.computed;
+    layerReuse[reuse.layer] = total ? double(reuse.reused) / double(total) : 0.0;
+  }
   nlohmann::json memoryJson = nlohmann::json::object();
   for (const auto& [category, bytes] : memory.bytesByCategory) memoryJson[category] = bytes;
   nlohmann::json stats{{"frame_ms", frame.timings.frameMs},
@@ -86,6 +92,11 @@ void writeStats(const std::string& path, const AppSession& session, const render
                        {"shade_storage_bytes", d.storageBytes},
                        {"remap_bytes", d.remapBytes},
                        {"id_map_bytes", d.idMapBytes},
+                       {"history_bytes", d.historyBytes},
+                       {"support_chunks", d.counters.supportChunks},
+                       {"layer_dispatches", d.layerDispatches},
+                       {"layers", d.layers},
+                       {"layer_reuse", layerReuse},
                        {"device", session.context->deviceName()}};
   if (std::filesystem::path(path).has_parent_path()) std::filesystem::create_directories(std::filesystem::path(path).parent_path());
   std::ofstream out(path);

@@ -13,6 +13,13 @@ void ShaderLibrary::add(std::string path, std::string source) { files_[std::move
 
 void ShaderLibrary::addDirectory(std::filesystem::path directory) { directories_.push_back(std::move(directory)); }
 
+std::optional<std::filesystem::path> ShaderLibrary::fileOf(const std::string& path) const {
+  if (files_.count(path)) return std::nullopt;
+  for (const auto& dir : directories_)
+    if (std::filesystem::is_regular_file(dir / path)) return dir / path;
+  return std::nullopt;
+}
+
 std::optional<std::string> ShaderLibrary::find(const std::string& path) const {
   if (auto it = files_.find(path); it != files_.end()) return it->second;
   for (const auto& dir : directories_) {

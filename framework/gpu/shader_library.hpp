@@ -24,6 +24,8 @@ class ShaderLibrary {
   void addDirectory(std::filesystem::path directory);
   // The source at a virtual path: in-memory first, then the directories.
   std::optional<std::string> find(const std::string& path) const;
+  // Where on disk `find` reads the path from; nullopt for in-memory sources.
+  std::optional<std::filesystem::path> fileOf(const std::string& path) const;
 
  private:
   std::map<std::string, std::string> files_;

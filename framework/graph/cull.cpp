@@ -28,7 +28,7 @@ void cullPasses(const RenderGraph& graph, const VersionTable& versions, bool ext
     for (const ResourceAccess& a : graph.accessesOf(PassId{p})) {
       if (root) break;
       if (!a.write || !externalWritesAreSideEffects || !graph.isValid(a.resource)) continue;
-      const ResourceKind kind = graph.resource(a.resource).kind;
+      const ResourceKind kind = graph.declaration().traits[a.resource.index].kind;
       root = kind == ResourceKind::Imported || kind == ResourceKind::Persistent;
     }
     if (root) keep(PassId{p});

@@ -49,6 +49,16 @@ struct ResourceDecl {
   std::string name;
 };
 
+// What the compile steps look up about a resource on every access: a copy of
+// a few ResourceDecl fields in a compact array (the decls are large), so that
+// those scattered lookups stay in cache. RenderGraph keeps it in step.
+struct ResourceTraits {
+  ResourceKind kind = ResourceKind::TransientImage;
+  ResourceType type = ResourceType::Image;
+  bool readOnly = false;
+  Format format = Format::Undefined;  // type == Image
+};
+
 // What the compile steps read of every pass (its name and callback are kept
 // apart, in GraphDeclaration, so that walking passes stays cache-friendly).
 struct PassDecl {
@@ -64,6 +74,7 @@ struct PassDecl {
 // its accesses moved to the end (the old copies stay behind, unreferenced).
 struct GraphDeclaration {
   std::vector<ResourceDecl> resources;  // by ResourceId
+  std::vector<ResourceTraits> traits;   // by ResourceId (see ResourceTraits)
   std::vector<PassDecl> passes;         // by PassId
   std::vector<std::string> passNames;   // by PassId
   std::vector<ExecuteFn> callbacks;     // by PassId

@@ -8,6 +8,7 @@ RenderGraph::RenderGraph() : declaration_(std::make_unique<GraphDeclaration>()) 
 
 ResourceHandle RenderGraph::add(ResourceDecl decl) {
   std::vector<ResourceDecl>& resources = declaration_->resources;
+  declaration_->traits.push_back({decl.kind, decl.type, decl.readOnly, decl.image.format});
   resources.push_back(std::move(decl));
   declaration_->versionCounts.push_back(1);
   return {ResourceId{static_cast<uint32_t>(resources.size() - 1)}, 0};
@@ -108,6 +109,7 @@ void RenderGraph::markOutput(ResourceHandle version) { declaration_->outputs.pus
 
 void RenderGraph::clear() {
   declaration_->resources.clear();
+  declaration_->traits.clear();
   declaration_->passes.clear();
   declaration_->passNames.clear();
   declaration_->callbacks.clear();

@@ -82,36 +82,37 @@ class Validator {
 
   void checkAccess(PassId passId, const ResourceAccess& a) {
     const PassDecl& pass = graph_.pass(passId);
-    const ResourceDecl& r = graph_.resource(a.resource);
+    // Checked against the compact traits; the (large) decl is only read for a message.
+    const ResourceTraits& r = graph_.declaration().traits[a.resource.index];
     const std::string_view accessName = toString(a.access);  // a table read; messages are built on error only
     if (a.write && !isWrite(a.access)) {
-      error(nameOf(passId), r.name, "write() with the read-only access " + str(accessName) + "; use read()");
+      error(nameOf(passId), nameOf(a.resource), "write() with the read-only access " + str(accessName) + "; use read()");
     } else if (!a.write && isWrite(a.access)) {
-      error(nameOf(passId), r.name, "read() with the writing access " + str(accessName) + "; use write()");
+      error(nameOf(passId), nameOf(a.resource), "read() with the writing access " + str(accessName) + "; use write()");
     }
     if (r.type == ResourceType::Buffer && isImageOnly(a.access)) {
-      error(nameOf(passId), r.name, "is a buffer but is accessed as " + str(accessName) + ", an image access");
+      error(nameOf(passId), nameOf(a.resource), "is a buffer but is accessed as " + str(accessName) + ", an image access");
     } else if (r.type == ResourceType::Image && isBufferOnly(a.access)) {
-      error(nameOf(passId), r.name, "is an image but is accessed as " + str(accessName) + ", a buffer access");
+      error(nameOf(passId), nameOf(a.resource), "is an image but is accessed as " + str(accessName) + ", a buffer access");
     }
     if (!allowedInPass(a.access, pass.kind)) {
-      error(nameOf(passId), r.name, str(accessName) + " is not possible in a " + str(toString(pass.kind)) + " pass");
+      error(nameOf(passId), nameOf(a.resource), str(accessName) + " is not possible in a " + str(toString(pass.kind)) + " pass");
     }
-    checkShaderStages(passId, r, a);
+    checkShaderStages(passId, a);
     if (r.type == ResourceType::Image) checkFormat(passId, r, a);
     if (a.write && r.kind == ResourceKind::History) {
-      error(nameOf(passId), r.name, "writes a history resource (last frame's copy is read-only)");
+      error(nameOf(passId), nameOf(a.resource), "writes a history resource (last frame's copy is read-only)");
     } else if (a.write && r.readOnly) {
-      error(nameOf(passId), r.name, "writes a read-only import");
+      error(nameOf(passId), nameOf(a.resource), "writes a read-only import");
     }
     checkVersion(passId, a);
   }
 
-  void checkShaderStages(PassId passId, const ResourceDecl& r, const ResourceAccess& a) {
+  void checkShaderStages(PassId passId, const ResourceAccess& a) {
     const PassDecl& pass = graph_.pass(passId);
     if (!isShaderAccess(a.access)) {
       if (a.shaderStages != ShaderStage::None) {
-        error(nameOf(passId), r.name, "gives shader stages to " + str(toString(a.access)) + ", which no shader performs");
+        error(nameOf(passId), nameOf(a.resource), "gives shader stages to " + str(toString(a.access)) + ", which no shader performs");
       }
       return;
     }
@@ -119,39 +120,39 @@ class Validator {
                                 : pass.kind == PassKind::Compute ? ShaderStage::Compute
                                                                    : ShaderStage::None;
     if (any(a.shaderStages & ~allowed)) {
-      error(nameOf(passId), r.name,
+      error(nameOf(passId), nameOf(a.resource),
             "uses shader stage " + toString(a.shaderStages) + " in a " + str(toString(pass.kind)) + " pass");
     }
   }
 
-  void checkFormat(PassId passId, const ResourceDecl& r, const ResourceAccess& a) {
+  void checkFormat(PassId passId, const ResourceTraits& r, const ResourceAccess& a) {
     const bool colorAttachment = a.access == Access::ColorAttachment || a.access == Access::ColorAttachmentRead;
     const bool depthAttachment = a.access == Access::DepthAttachment || a.access == Access::DepthRead;
-    if (colorAttachment && isDepth(r.image.format)) {
-      error(nameOf(passId), r.name,
-            "uses the depth format " + str(toString(r.image.format)) + " as a color attachment (" +
+    if (colorAttachment && isDepth(r.format)) {
+      error(nameOf(passId), nameOf(a.resource),
+            "uses the depth format " + str(toString(r.format)) + " as a color attachment (" +
                 str(toString(a.access)) + ")");
-    } else if (depthAttachment && !isDepth(r.image.format)) {
-      error(nameOf(passId), r.name,
-            "uses the color format " + str(toString(r.image.format)) + " as a depth attachment (" +
+    } else if (depthAttachment && !isDepth(r.format)) {
+      error(nameOf(passId), nameOf(a.resource),
+            "uses the color format " + str(toString(r.format)) + " as a depth attachment (" +
                 str(toString(a.access)) + ")");
     }
   }
 
   void checkVersion(PassId passId, const ResourceAccess& a) {
-    const ResourceDecl& r = graph_.resource(a.resource);
+    const ResourceKind kind = graph_.declaration().traits[a.resource.index].kind;
     const uint32_t slot = versions_.slot(a.resource, a.version);
     const PassId producer = slot == kInvalidIndex ? PassId{} : versions_.producer[slot];
     if (a.version == 0) {
-      if (!a.write && isTransient(r.kind)) error(nameOf(passId), r.name, "reads it before any pass writes it");
+      if (!a.write && isTransient(kind)) error(nameOf(passId), nameOf(a.resource), "reads it before any pass writes it");
       return;
     }
     if (!producer.valid()) {
-      error(nameOf(passId), r.name,
+      error(nameOf(passId), nameOf(a.resource),
             (a.write ? "writes over version " : "reads version ") + std::to_string(a.version) +
                 ", which no pass writes");
     } else if (producer == passId && !a.write) {
-      error(nameOf(passId), r.name, "reads version " + std::to_string(a.version) + ", which it writes itself");
+      error(nameOf(passId), nameOf(a.resource), "reads version " + std::to_string(a.version) + ", which it writes itself");
     }
   }
 

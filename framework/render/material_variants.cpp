@@ -22,10 +22,12 @@ const char* kAccessorMacros =
 
 }  // namespace
 
-plugin::PluginError layerCompileError(const gpu::ShaderCompileError& error, const std::string& what,
-                                      const std::string& plugin) {
-  return plugin::PluginError(what + " (plugin '" + plugin + "') does not compile: " + error.file() + ":" +
-                             std::to_string(error.line()) + ": " + error.diagnostics().front().message);
+plugin::PluginError layerCompileError(const gpu::ShaderCompileError& error, const gpu::ShaderLibrary& library,
+                                      const std::string& what, const std::string& plugin) {
+  const auto file = library.fileOf(error.file());
+  return plugin::PluginError(what + " (plugin '" + plugin + "') does not compile: " +
+                             (file ? file->string() : error.file()) + ":" + std::to_string(error.line()) + ": " +
+                             error.diagnostics().front().message);
 }
 
 std::string glslImageFormat(graph::Format format) {

@@ -32,8 +32,9 @@ gpu::ShaderRequest forwardMaterialVariant(const plugin::Registry& registry, cons
 
 // A layer or material whose generated variant failed to compile, as a
 // PluginError naming it, its plugin and the file:line glslang reported (the
-// author's own file when the error is there: the variant #includes it).
-plugin::PluginError layerCompileError(const gpu::ShaderCompileError& error, const std::string& what,
-                                      const std::string& plugin);
+// author's own file when the error is there: the variant #includes it; its
+// path on disk when the library read it from a plugin's directory).
+plugin::PluginError layerCompileError(const gpu::ShaderCompileError& error, const gpu::ShaderLibrary& library,
+                                      const std::string& what, const std::string& plugin);
 
 }  // namespace sg::render

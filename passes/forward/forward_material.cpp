@@ -9,24 +9,26 @@ namespace {
 
 const gpu::Pipeline& forwardPipeline(PassContext& ctx, const render::SceneView& view,
                                      const plugin::MaterialStack& material, bool blend) {
-  return ctx.device().pipeline((blend ? "forward/blend/" : "forward/") + material.name, [&] {
-    try {
-      return gpu::GraphicsPipelineDesc{
-          .vertex = {.path = "passes/forward/forward.vert"},
-          .fragment = render::forwardMaterialVariant(view.materials, material),
-          .layout = {.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}},
-                     .extraSets = {view.scene.materialSetLayout()},
-                     .pushConstantBytes = sizeof(render::ObjectConstants)},
-          .vertexInput = render::sceneVertexInput(),
-          .colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT},
-          .depthFormat = VK_FORMAT_D32_SFLOAT,
-          .depthTest = true,
-          .depthWrite = !blend,
-          .alphaBlend = blend};
-    } catch (const gpu::ShaderCompileError& e) {
-      throw render::layerCompileError(e, "material '" + material.name + "', forward variant,", material.plugin);
-    }
-  });
+  const auto describe = [&] {
+    return gpu::GraphicsPipelineDesc{
+        .vertex = {.path = "passes/forward/forward.vert"},
+        .fragment = render::forwardMaterialVariant(view.materials, material),
+        .layout = {.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}},
+                   .extraSets = {view.scene.materialSetLayout()},
+                   .pushConstantBytes = sizeof(render::ObjectConstants)},
+        .vertexInput = render::sceneVertexInput(),
+        .colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT},
+        .depthFormat = VK_FORMAT_D32_SFLOAT,
+        .depthTest = true,
+        .depthWrite = !blend,
+        .alphaBlend = blend};
+  };
+  try {
+    return ctx.device().pipeline((blend ? "forward/blend/" : "forward/") + material.name, describe);
+  } catch (const gpu::ShaderCompileError& e) {
+    throw render::layerCompileError(e, ctx.device().shaders(), "the forward variant of material '" + material.name + "'",
+                                    material.plugin);
+  }
 }
 
 }  // namespace

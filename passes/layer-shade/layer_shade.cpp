@@ -14,8 +14,10 @@ constexpr uint32_t kBaseBindings[] = {kBindFrame,    kBindParams,   kBindObjects
                                       kBindLevelRects, kBindRemap,  kBindCounters, kBindWork,
                                       kBindIdMaps,   kBindVertices, kBindIndices};
 
+// Compiled the first time a frame dispatches the layer; a GLSL error names the
+// layer, its plugin and the author's file:line.
 const gpu::Pipeline& layerPipeline(PassContext& ctx, const DecoupledFrame& frame, const plugin::MaterialLayer& layer) {
-  return ctx.device().pipeline("layer-shade/" + layer.name, [&] {
+  const auto describe = [&] {
     gpu::PipelineLayoutDesc layout = decoupledLayout(kBaseBindings, false, 12, {frame.view.scene.materialSetLayout()});
     layout.bindings.push_back({kBindLayerOutput, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
     for (uint32_t i = 0; i < layer.reads.size(); ++i)
@@ -24,12 +26,13 @@ const gpu::Pipeline& layerPipeline(PassContext& ctx, const DecoupledFrame& frame
       layout.bindings.push_back({kBindLayerHistory, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
       layout.bindings.push_back({kBindPreviousRemap, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
     }
-    try {
-      return gpu::ComputePipelineDesc{.shader = decoupledLayerVariant(layer), .layout = layout};
-    } catch (const gpu::ShaderCompileError& e) {
-      throw layerCompileError(e, "material layer '" + layer.name + "'", layer.plugin);
-    }
-  });
+    return gpu::ComputePipelineDesc{.shader = decoupledLayerVariant(layer), .layout = layout};
+  };
+  try {
+    return ctx.device().pipeline("layer-shade/" + layer.name, describe);
+  } catch (const gpu::ShaderCompileError& e) {
+    throw layerCompileError(e, ctx.device().shaders(), "material layer '" + layer.name + "'", layer.plugin);
+  }
 }
 
 }  // namespace

@@ -238,6 +238,8 @@ graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const
     targets.color = passes::addOccupancyView(graph, frame, sheetRegionOrigin_, sheetRegionSize_);
   if (shading && settings_.view == DebugView::Sheet) targets.color = passes::addSheetView(graph, frame);
   const bool passthrough = settings_.view != DebugView::Final;  // debug colours as they are
+  // Plugins' passes on the HDR colour, in the order they were registered.
+  for (const auto& post : in.view.materials.postPasses()) targets.color = post.declare(graph, targets.color);
   const auto exposure = passes::addExposure(graph, targets.color);
   return passes::addTonemap(graph, targets.color, exposure, in.output, passthrough);
 }

@@ -19,6 +19,7 @@ graph::ResourceHandle forwardRecipe(graph::RenderGraph& graph, const render::Fra
   if (passes::hasAlphaMode(inputs.view, scene::AlphaMode::Mask)) targets = passes::addAlphaMask(graph, inputs.view, targets);
   if (passes::hasAlphaMode(inputs.view, scene::AlphaMode::Blend))
     targets.color = passes::addAlphaBlend(graph, inputs.view, inputs.cameraPosition, targets);
+  for (const auto& post : inputs.view.materials.postPasses()) targets.color = post.declare(graph, targets.color);
   const auto exposure = passes::addExposure(graph, targets.color);
   return passes::addTonemap(graph, targets.color, exposure, inputs.output);
 }

@@ -24,8 +24,9 @@ struct Run {
   std::string output;  // stdout and stderr
 };
 
-Run run(const std::string& args) {
-  const std::string command = std::string(SG_CLI) + " " + args + " 2>&1";
+// stderr: where the command's stderr goes (merged into the output by default).
+Run run(const std::string& args, const std::string& stderrTo = "&1") {
+  const std::string command = std::string(SG_CLI) + " " + args + " 2>" + stderrTo;
   Run r;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return r;
@@ -249,6 +250,91 @@ TEST(Cli, BenchWritesResultsForEveryConfiguration) {
                            "decoupled bias +2.0"})
     EXPECT_TRUE(names.count(name)) << name;
   EXPECT_TRUE(std::filesystem::exists(dir / "results.csv"));
+}
+
+// stdout only (plugins report themselves on stderr).
+std::string stdoutOf(const std::string& args) { return run(args, "/dev/null").output; }
+
+struct PlanSummary {
+  std::set<std::string> kept;  // passes not culled
+  int historyResources = 0;
+};
+
+PlanSummary planOf(const std::string& args) {
+  const auto plan = nlohmann::json::parse(stdoutOf("graph --json --size 160x90 " + args));
+  PlanSummary s;
+  for (const auto& p : plan["passes"])
+    if (!p["culled"].get<bool>()) s.kept.insert(p["name"].get<std::string>());
+  for (const auto& r : plan["resources"]) s.historyResources += r["kind"] == "History";
+  return s;
+}
+
+// Only what the scene calls for: the compiled frame holds the layer passes,
+// support-expand and history of the visible objects' materials, no more.
+TEST(Cli, GraphHoldsOnlyWhatTheMaterialsCallFor) {
+  const auto pbr = planOf("--mode decoupled");
+  EXPECT_TRUE(pbr.kept.count("layer-shade"));
+  EXPECT_FALSE(pbr.kept.count("layer-shade #2")) << "gltf-pbr is one layer";
+  EXPECT_FALSE(pbr.kept.count("support-expand")) << "no neighbourhood layer";
+  EXPECT_EQ(pbr.historyResources, 0) << "no persistent layer";
+
+  const auto bumps = planOf("--mode decoupled --material bumps");
+  EXPECT_TRUE(bumps.kept.count("support-expand"));
+  EXPECT_TRUE(bumps.kept.count("layer-shade #2"));
+  EXPECT_FALSE(bumps.kept.count("layer-shade #3"));
+  EXPECT_EQ(bumps.historyResources, 0);
+
+  const auto skin = planOf("--mode decoupled --material skin");
+  EXPECT_TRUE(skin.kept.count("layer-shade #3"));
+  EXPECT_FALSE(skin.kept.count("layer-shade #4"));
+
+  const auto marble = planOf("--mode decoupled --material marble");
+  EXPECT_FALSE(marble.kept.count("support-expand"));
+  EXPECT_EQ(marble.historyResources, 2) << "last frame's marble image and remap table";
+
+  const auto forward = planOf("--mode forward --material skin");
+  EXPECT_FALSE(forward.kept.count("layer-shade"));
+  EXPECT_FALSE(forward.kept.count("support-expand"));
+  EXPECT_EQ(forward.historyResources, 0);
+}
+
+TEST(Cli, StatsReportLayerDispatchesAndReuse) {
+  const auto stats = tempDir() / "marble-stats.json";
+  auto r = run("render --mode decoupled --material marble --frames 3 --size 160x90 -o " +
+               (tempDir() / "marble.png").string() + " --stats " + stats.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(stats);
+  const auto s = nlohmann::json::parse(in);
+  EXPECT_EQ(s["layer_dispatches"].get<int>(), 2 * s["objects_decoupled"].get<int>());
+  EXPECT_EQ(s["layers"], nlohmann::json({"marble", "marble-shade"}));
+  ASSERT_TRUE(s["layer_reuse"].contains("marble"));
+  EXPECT_GT(s["layer_reuse"]["marble"].get<double>(), 0.9) << "a still camera reuses last frame's marble";
+  EXPECT_GT(s["history_bytes"].get<double>(), 0.0);
+}
+
+TEST(Cli, UnknownMaterialIsNamedWithTheKnownOnes) {
+  auto r = run("graph --material velvet");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.output.find("no material 'velvet'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("gltf-pbr"), std::string::npos) << r.output;
+}
+
+TEST(Cli, PluginPostPassRunsInTheFrame) {
+  const auto plan = planOf(std::string("--plugin ") + SG_PLUGIN_GOOD);
+  EXPECT_TRUE(plan.kept.count("test-post"));
+}
+
+// A layer whose GLSL does not compile: the plugin, the author's own file and
+// line, glslang's message; exit 1, no crash, in both shading paths.
+TEST(Cli, BrokenLayerGlslIsReportedInTheAuthorsFile) {
+  for (const char* mode : {"decoupled", "forward"}) {
+    auto r = run(std::string("render --size 64x64 --frames 1 -o ") + (tempDir() / "broken.png").string() +
+                 " --plugin " + SG_PLUGIN_BROKEN_GLSL + " --material broken --mode " + mode);
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("(plugin 'test-broken-glsl')"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("broken-glsl/broken.glsl:6:"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("brightnes"), std::string::npos) << r.output;
+  }
 }
 
 TEST(Cli, GraphDotIsAGraphvizDigraph) {

@@ -16,6 +16,8 @@ void registerGood(sg::plugin::Registry* registry, const char* directory) {
                          .declare = [](sg::graph::RenderGraph& graph, sg::graph::ResourceHandle color) {
                            auto& pass = graph.addPass("test-post", sg::graph::QueueClass::Graphics);
                            pass.read(color, sg::graph::Access::Sampled, sg::graph::ShaderStage::Fragment);
+                           pass.sideEffect();  // like a histogram sent elsewhere: kept though nothing reads it
+                           pass.execute([](sg::PassContext&) {});
                            return color;
                          }});
 }

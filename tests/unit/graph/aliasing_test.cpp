@@ -197,5 +197,42 @@ TEST(GraphAliasing, PlaceTransientsOnHandMadeLifetimes) {
   EXPECT_TRUE(plan.aliasesOf(ResourceId{2}).empty());
 }
 
+TEST(GraphAliasing, PlacingLifetimesMatchesPlacingPlannedResources) {
+  // PlanCompiler hands placement the used transients' lifetimes directly; the
+  // same transients given as planned resources (with an unused one and an
+  // external one in between, which are skipped) place identically, and a
+  // reused MemoryPlan gives what a fresh one gives.
+  std::vector<PlannedResource> resources(5);
+  const uint32_t lifetimes[5][2] = {{0, 2}, {0, 0}, {3, 5}, {1, 4}, {2, 3}};
+  for (uint32_t r = 0; r < 5; ++r) {
+    resources[r].kind = ResourceKind::TransientBuffer;
+    resources[r].desc.type = ResourceType::Buffer;
+    resources[r].desc.queues = QueueMask::Graphics;
+    resources[r].firstUse = lifetimes[r][0];
+    resources[r].lastUse = lifetimes[r][1];
+  }
+  resources[1].culled = true;
+  resources[4].kind = ResourceKind::Imported;
+  const std::vector<MemoryRequirements> requirements{
+      {.size = 512, .alignment = 512, .memoryTypeBits = 1},
+      {.size = 64, .alignment = 64, .memoryTypeBits = 1},
+      {.size = 256, .alignment = 256, .memoryTypeBits = 1},
+      {.size = 1024, .alignment = 1024, .memoryTypeBits = 1},
+      {.size = 64, .alignment = 64, .memoryTypeBits = 1},
+  };
+  const MemoryPlan fromResources = placeTransients(resources, requirements, true);
+  const std::vector<TransientLifetime> transients{
+      {2, 3, 5, QueueMask::Graphics}, {0, 0, 2, QueueMask::Graphics}, {3, 1, 4, QueueMask::Graphics}};
+  MemoryPlan reused = placeTransients(resources, requirements, false);  // leaves other contents behind
+  placeTransients(transients, 5, requirements, true, reused);
+  EXPECT_EQ(reused.placements, fromResources.placements);
+  EXPECT_EQ(reused.aliasesWith, fromResources.aliasesWith);
+  EXPECT_EQ(reused.aliases, fromResources.aliases);
+  EXPECT_EQ(reused.heapBytes, fromResources.heapBytes);
+  EXPECT_EQ(reused.heapBytesWithoutAliasing, fromResources.heapBytesWithoutAliasing);
+  EXPECT_FALSE(reused.placements[1].placed());
+  EXPECT_FALSE(reused.placements[4].placed());
+}
+
 }  // namespace
 }  // namespace sg::graph

@@ -97,6 +97,28 @@ TEST(GraphDeclare, ClearedGraphAndPlanCompilerGiveWhatFreshOnesGive) {
   }
 }
 
+TEST(GraphDeclare, ResourceTraitsFollowTheDeclarations) {
+  // The compact per-resource traits the compile steps look up must match the
+  // declarations, history resources included, and be cleared with the graph.
+  RenderGraph g;
+  g.createImage("color", colorImage());
+  g.importBuffer("readback", BufferDesc{.size = 256}, ImportedState{}, FinalState{}, ImportMode::ReadOnly);
+  const ResourceHandle persistent = g.importPersistentImage("accum", colorImage(), ResourceState{});
+  g.history(persistent);
+  const GraphDeclaration& d = g.declaration();
+  ASSERT_EQ(d.traits.size(), d.resources.size());
+  for (std::size_t r = 0; r < d.resources.size(); ++r) {
+    EXPECT_EQ(d.traits[r].kind, d.resources[r].kind);
+    EXPECT_EQ(d.traits[r].type, d.resources[r].type);
+    EXPECT_EQ(d.traits[r].readOnly, d.resources[r].readOnly);
+    if (d.resources[r].type == ResourceType::Image) EXPECT_EQ(d.traits[r].format, d.resources[r].image.format);
+  }
+  EXPECT_TRUE(d.traits[1].readOnly);
+  EXPECT_EQ(d.traits[3].kind, ResourceKind::History);
+  g.clear();
+  EXPECT_TRUE(g.declaration().traits.empty());
+}
+
 TEST(GraphDeclare, MovedGraphKeepsItsPassBuildersWorking) {
   RenderGraph g;
   auto buf = g.createBuffer("buf", BufferDesc{.size = 4});

@@ -81,7 +81,7 @@ TEST_F(MaterialVariants, AuthorErrorsPointIntoTheAuthorsFile) {
     } catch (const gpu::ShaderCompileError& e) {
       EXPECT_EQ(e.file(), "my-plugin/broken.glsl");
       EXPECT_EQ(e.line(), 4);
-      const std::string message = render::layerCompileError(e, "material layer 'broken'", "my-plugin").what();
+      const std::string message = render::layerCompileError(e, library_, "material layer 'broken'", "my-plugin").what();
       EXPECT_NE(message.find("material layer 'broken' (plugin 'my-plugin')"), std::string::npos) << message;
       EXPECT_NE(message.find("my-plugin/broken.glsl:4: "), std::string::npos) << message;
       EXPECT_NE(message.find("undefinedThing"), std::string::npos) << message;
