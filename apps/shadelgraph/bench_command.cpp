@@ -3,6 +3,7 @@
 // repetitions; medians are reported with shading cost, memory, and error
 // against a 16-sample forward reference (ꟻLIP, PSNR) and flicker along a
 // camera path with sub-pixel motion. Writes results.json and results.csv.
+// With --materials, the material sweep of bench_materials.cpp runs instead.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -22,45 +23,14 @@
 #include <shadelgraph/image/png.hpp>
 #include <shadelgraph/render/renderer.hpp>
 
+#include "bench_materials.hpp"
 #include "commands.hpp"
 #include "scene_source.hpp"
 
 namespace sg::app {
-namespace {
-
-struct Config {
-  std::string name;
-  bool decoupled = false;
-  int filter = 2;
-  std::optional<float> bias;  // decoupled: fixed bias; empty = adjuster
-};
-
-struct BenchArgs {
-  std::vector<std::string> scenes;
-  std::string out = "out/bench";
-  std::vector<std::string> sizes{"640x360"};
-  int repetitions = 5;
-  int flickerFrames = 12;
-  int referenceScale = 4;  // reference: this many samples per pixel side (4 -> 16 spp)
-  bool shimmer = false;    // also the shimmer case: the default scene's gold sphere close up
-};
-
-std::vector<Config> sweep() {
-  std::vector<Config> configs{{"forward", false}};
-  for (int filter : {0, 1, 2})
-    configs.push_back({std::string("decoupled ") + (filter == 0 ? "point" : filter == 1 ? "bilinear" : "trilinear"), true,
-                       filter, 0.0f});
-  for (float bias : {-1.0f, -0.5f, 0.5f, 1.0f, 1.5f, 2.0f}) {
-    char name[64];
-    std::snprintf(name, sizeof name, "decoupled bias %+.1f", double(bias));
-    configs.push_back({name, true, 2, bias});
-  }
-  return configs;
-}
 
 image::Rgba8Image toImage(const gpu::HostImage& h) { return {h.width, h.height, h.rgba8}; }
 
-// Box filter of `scale` x `scale` blocks in linear light (the reference's supersampling).
 image::Rgba8Image downsample(const gpu::HostImage& big, uint32_t scale) {
   auto toLinear = [](uint8_t v) {
     const double c = v / 255.0;
@@ -87,6 +57,57 @@ double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
   return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+namespace {
+
+std::string cpuName() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown";
+}
+
+}  // namespace
+
+nlohmann::json machineJson(const gpu::Context& context) {
+  return {{"cpu", cpuName()},
+          {"cores", std::thread::hardware_concurrency()},
+          {"device", context.deviceName()},
+          {"driver", context.driverDescription()}};
+}
+
+namespace {
+
+struct Config {
+  std::string name;
+  bool decoupled = false;
+  int filter = 2;
+  std::optional<float> bias;  // decoupled: fixed bias; empty = adjuster
+};
+
+struct BenchArgs {
+  std::vector<std::string> scenes;
+  std::string out = "out/bench";
+  std::vector<std::string> sizes{"640x360"};
+  int repetitions = 5;
+  int flickerFrames = 12;
+  int referenceScale = 4;  // reference: this many samples per pixel side (4 -> 16 spp)
+  bool shimmer = false;    // also the shimmer case: the default scene's gold sphere close up
+  std::vector<std::string> materials;  // non-empty: the material sweep instead (bench_materials.cpp)
+};
+
+std::vector<Config> sweep() {
+  std::vector<Config> configs{{"forward", false}};
+  for (int filter : {0, 1, 2})
+    configs.push_back({std::string("decoupled ") + (filter == 0 ? "point" : filter == 1 ? "bilinear" : "trilinear"), true,
+                       filter, 0.0f});
+  for (float bias : {-1.0f, -0.5f, 0.5f, 1.0f, 1.5f, 2.0f}) {
+    char name[64];
+    std::snprintf(name, sizeof name, "decoupled bias %+.1f", double(bias));
+    configs.push_back({name, true, 2, bias});
+  }
+  return configs;
 }
 
 // The camera at step `i` of a sideways move by a quarter pixel per frame (at
@@ -223,19 +244,20 @@ void writeCsv(const std::filesystem::path& file, const nlohmann::json& runs) {
           << ',' << c["flicker"] << ',' << c["flicker_reference"] << ',' << c["flicker_excess"] << '\n';
 }
 
-std::string cpuName() {
-  std::ifstream in("/proc/cpuinfo");
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  return "unknown";
-}
-
 void runBench(const BenchArgs& args) {
   const std::filesystem::path out = args.out;
   std::filesystem::create_directories(out);
   gpu::Context context;
   gpu::Device device(context);
   device.shaders().add(gpu::builtinShaders());
+  if (!args.materials.empty()) {
+    runMaterialBench(context, device,
+                     {.materials = args.materials, .scenes = args.scenes, .sizes = args.sizes,
+                      .repetitions = args.repetitions, .referenceScale = args.referenceScale},
+                     out);
+    setExitCode(context.validationLog().count() ? 1 : 0);
+    return;
+  }
   nlohmann::json runs = nlohmann::json::array();
   const std::vector<std::string> scenes = args.scenes.empty() ? std::vector<std::string>{""} : args.scenes;
   for (const auto& scenePath : scenes)
@@ -249,11 +271,7 @@ void runBench(const BenchArgs& args) {
     parseSize(args.sizes.front(), w, h);
     runs.push_back(benchScene(device, "", w, h, args, out, shimmerCamera(), "shimmer"));
   }
-  const nlohmann::json results{{"machine", {{"cpu", cpuName()},
-                                            {"cores", std::thread::hardware_concurrency()},
-                                            {"device", context.deviceName()},
-                                            {"driver", context.driverDescription()}}},
-                               {"runs", runs}};
+  const nlohmann::json results{{"machine", machineJson(context)}, {"runs", runs}};
   std::ofstream(out / "results.json") << results.dump(2) << "\n";
   writeCsv(out / "results.csv", runs);
   std::printf("%-10s %-9s %-22s %9s %8s %8s %7s %9s\n", "scene", "size", "config", "frame ms", "shd/px", "FLIP",
@@ -298,6 +316,12 @@ void addBenchCommand(CLI::App& app) {
   cmd->add_option("--flicker-frames", args.flickerFrames, "frames along the sub-pixel camera path")->capture_default_str();
   cmd->add_option("--reference-scale", args.referenceScale, "reference samples per pixel side")->capture_default_str();
   cmd->add_flag("--shimmer", args.shimmer, "add the shimmer case (default scene's gold sphere, close up)");
+  cmd->add_option("--materials", args.materials,
+                  "instead of the configuration sweep: for each of these materials (comma-separated, e.g. "
+                  "gltf-pbr,bumps,skin,marble) forward and decoupled trilinear with the adjuster, against a forward "
+                  "reference of the same material; writes materials.json and materials.csv (--flicker-frames and "
+                  "--shimmer do not apply)")
+      ->delimiter(',');
   cmd->callback([] { runBench(args); });
 }
 

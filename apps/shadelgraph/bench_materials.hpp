@@ -1,0 +1,40 @@
+#pragma once
+// shadelgraph bench --materials a,b,c: what each material (layer stack) costs,
+// forward and decoupled, with the error of each against a supersampled
+// forward render of the same material. Also what the material sweep shares
+// with the configuration sweep of bench_command.cpp.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include <shadelgraph/gpu/context.hpp>
+#include <shadelgraph/gpu/device.hpp>
+#include <shadelgraph/image/png.hpp>
+
+namespace sg::app {
+
+struct MaterialBenchArgs {
+  std::vector<std::string> materials;  // registered names, e.g. gltf-pbr, bumps, skin, marble
+  std::vector<std::string> scenes;     // empty: the built-in scene
+  std::vector<std::string> sizes;
+  int repetitions = 5;
+  int referenceScale = 4;  // reference: this many samples per pixel side
+};
+
+// Runs the material sweep; writes materials.json, materials.csv and images
+// into `out` and prints a table.
+void runMaterialBench(gpu::Context& context, gpu::Device& device, const MaterialBenchArgs& args,
+                      const std::filesystem::path& out);
+
+// Shared with bench_command.cpp (defined there).
+image::Rgba8Image toImage(const gpu::HostImage& h);
+// Box filter of `scale` x `scale` blocks in linear light (the reference's supersampling).
+image::Rgba8Image downsample(const gpu::HostImage& big, uint32_t scale);
+double median(std::vector<double> v);
+// CPU, cores, Vulkan device and driver.
+nlohmann::json machineJson(const gpu::Context& context);
+
+}  // namespace sg::app
