@@ -315,13 +315,14 @@ void addBenchCommand(CLI::App& app) {
   cmd->add_option("--repetitions", args.repetitions, "timed frames per configuration")->capture_default_str();
   cmd->add_option("--flicker-frames", args.flickerFrames, "frames along the sub-pixel camera path")->capture_default_str();
   cmd->add_option("--reference-scale", args.referenceScale, "reference samples per pixel side")->capture_default_str();
-  cmd->add_flag("--shimmer", args.shimmer, "add the shimmer case (default scene's gold sphere, close up)");
+  auto* shimmer = cmd->add_flag("--shimmer", args.shimmer, "add the shimmer case (default scene's gold sphere, close up)");
   cmd->add_option("--materials", args.materials,
                   "instead of the configuration sweep: for each of these materials (comma-separated, e.g. "
                   "gltf-pbr,bumps,skin,marble) forward and decoupled trilinear with the adjuster, against a forward "
                   "reference of the same material; writes materials.json and materials.csv (--flicker-frames and "
                   "--shimmer do not apply)")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->excludes(shimmer);
   cmd->callback([] { runBench(args); });
 }
 

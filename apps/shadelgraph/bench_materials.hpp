@@ -12,6 +12,7 @@
 
 #include <shadelgraph/gpu/context.hpp>
 #include <shadelgraph/gpu/device.hpp>
+#include <shadelgraph/gpu/readback.hpp>
 #include <shadelgraph/image/png.hpp>
 
 namespace sg::app {

@@ -16,6 +16,19 @@ std::string credit(const std::string& what, const std::string& name, const std::
   return what + " '" + name + "' (plugin '" + plugin + "')";
 }
 
+// Registers `item` under its name in `table`, or throws naming both plugins.
+template <class Item>
+void addNamed(std::map<std::string, Item>& table, Item item, const char* what) {
+  if (!validName(item.name))
+    throw PluginError(credit(what, item.name, item.plugin) +
+                      ": a name starts with a letter and has only letters, digits, '-' and '_'");
+  if (auto it = table.find(item.name); it != table.end())
+    throw PluginError(credit(what, item.name, item.plugin) + ": already registered by plugin '" + it->second.plugin +
+                      "'");
+  std::string name = item.name;
+  table.emplace(std::move(name), std::move(item));
+}
+
 }  // namespace
 
 std::string glslName(const std::string& layerName) {
@@ -26,26 +39,14 @@ std::string glslName(const std::string& layerName) {
 
 void Registry::addLayer(MaterialLayer layer) {
   layer.plugin = plugin_;
-  if (!validName(layer.name))
-    throw PluginError(credit("material layer", layer.name, plugin_) +
-                      ": a name starts with a letter and has only letters, digits, '-' and '_'");
-  if (auto it = layers_.find(layer.name); it != layers_.end())
-    throw PluginError(credit("material layer", layer.name, plugin_) + ": already registered by plugin '" +
-                      it->second.plugin + "'");
   if (layer.source.empty() || layer.function.empty())
     throw PluginError(credit("material layer", layer.name, plugin_) + ": needs a GLSL source and a function name");
-  layers_.emplace(layer.name, std::move(layer));
+  addNamed(layers_, std::move(layer), "material layer");
 }
 
 void Registry::addMaterial(MaterialStack material) {
   material.plugin = plugin_;
-  if (!validName(material.name))
-    throw PluginError(credit("material", material.name, plugin_) +
-                      ": a name starts with a letter and has only letters, digits, '-' and '_'");
-  if (auto it = materials_.find(material.name); it != materials_.end())
-    throw PluginError(credit("material", material.name, plugin_) + ": already registered by plugin '" +
-                      it->second.plugin + "'");
-  materials_.emplace(material.name, std::move(material));
+  addNamed(materials_, std::move(material), "material");
 }
 
 void Registry::addPostPass(PostPass pass) {

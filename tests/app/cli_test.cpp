@@ -252,6 +252,64 @@ TEST(Cli, BenchWritesResultsForEveryConfiguration) {
   EXPECT_TRUE(std::filesystem::exists(dir / "results.csv"));
 }
 
+// The material sweep's output format on a tiny run: every (material, path)
+// configuration with the documented keys; times are not asserted.
+TEST(Cli, BenchMaterialsWritesEveryMaterialAndPath) {
+  const auto dir = tempDir() / "bench-materials";
+  std::filesystem::remove_all(dir);
+  auto r = run("bench --materials gltf-pbr,marble --out " + dir.string() +
+               " --sizes 64x36 --repetitions 1 --reference-scale 2");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "results.json")) << "--materials replaces the configuration sweep";
+  EXPECT_TRUE(std::filesystem::exists(dir / "materials.csv"));
+  std::ifstream in(dir / "materials.json");
+  const auto json = nlohmann::json::parse(in);
+  for (const char* key : {"cpu", "cores", "device", "driver"}) EXPECT_TRUE(json["machine"].contains(key)) << key;
+  ASSERT_EQ(json["runs"].size(), 1u);
+  const auto& configs = json["runs"][0]["configs"];
+  std::set<std::string> seen;
+  for (const auto& c : configs) {
+    const auto material = c["material"].get<std::string>(), path = c["path"].get<std::string>();
+    seen.insert(material + " " + path);
+    for (const char* key : {"material_run", "layers", "frame_ms_median", "gpu_ms_median", "pass_ms_median",
+                            "layer_shade_ms_median", "layer_dispatches", "layer_reuse", "history_bytes",
+                            "transient_bytes", "shade_memory_bytes", "flip_mean", "psnr", "composite_misses",
+                            "persistent"})
+      EXPECT_TRUE(c.contains(key)) << material << " " << path << ": " << key;
+    EXPECT_GE(c["flip_mean"].get<double>(), 0.0);
+    EXPECT_LE(c["flip_mean"].get<double>(), 1.0);
+    EXPECT_EQ(c["composite_misses"], 0) << c["config"];
+    EXPECT_TRUE(std::filesystem::exists(dir / c["image"].get<std::string>())) << c["image"];
+    if (path == "decoupled") {
+      EXPECT_TRUE(c["pass_ms_median"].contains("layer-shade")) << material;
+      EXPECT_GT(c["layer_dispatches"].get<int>(), 0) << material;
+    } else {
+      EXPECT_FALSE(c["pass_ms_median"].contains("layer-shade")) << material;
+    }
+    // Only a decoupled material with a persistent layer has history and the first/cold/steady comparison.
+    const bool persistent = material == "marble" && path == "decoupled";
+    EXPECT_EQ(c["persistent"].is_null(), !persistent) << material << " " << path;
+    EXPECT_EQ(c["history_bytes"].get<uint64_t>() > 0, persistent) << material << " " << path;
+    if (persistent) {
+      for (const char* phase : {"first_frame", "cold", "steady"})
+        EXPECT_TRUE(c["persistent"][phase]["layer_reuse"].contains("marble")) << phase;
+      EXPECT_TRUE(c["persistent"]["first_frame"].contains("layer_shade_ms"));
+      EXPECT_TRUE(c["persistent"]["cold"].contains("layer_shade_ms_median"));
+      EXPECT_TRUE(c["persistent"]["steady"].contains("layer_shade_ms_median"));
+      EXPECT_TRUE(c["persistent"].contains("payoff_ms"));
+      // Counts, not times: nothing to reuse in the first and cold frames, some in the steady ones (the
+      // adjuster may still move the bias in a one-round run).
+      EXPECT_EQ(c["persistent"]["first_frame"]["layer_reuse"]["marble"], 0.0);
+      EXPECT_EQ(c["persistent"]["cold"]["layer_reuse"]["marble"], 0.0);
+      EXPECT_GT(c["persistent"]["steady"]["layer_reuse"]["marble"].get<double>(), 0.0);
+    }
+  }
+  for (const char* material : {"gltf-pbr", "marble"})
+    for (const char* path : {"forward", "decoupled"})
+      EXPECT_TRUE(seen.count(std::string(material) + " " + path)) << material << " " << path;
+  EXPECT_EQ(configs.size(), 4u);
+}
+
 // stdout only (plugins report themselves on stderr).
 std::string stdoutOf(const std::string& args) { return run(args, "/dev/null").output; }
 
