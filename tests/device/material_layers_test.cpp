@@ -150,8 +150,8 @@ TEST(MaterialLayers, MarbleIsReusedFromLastFrame) {
   EXPECT_GT(s3.layerReuse[0].computed, 0u);
   EXPECT_GT(s3.layerReuse[0].reused, 0u);
   // The marble is band-limited by each sample's footprint; where the shadels
-  // are coarser than the pixels (level 0 follows the textures' density, and
-  // the far walls reach it) the decoupled marble is the smoother one.
+  // are coarser than the pixels (the box walls' stretched chart: a wall shadel
+  // is several pixels wide) the decoupled marble is the smoother one.
   const auto both = renderBothWays("marble");
   EXPECT_GT(both.psnr, 22.0);
 }
