@@ -160,7 +160,10 @@ TEST(MaterialLayers, DebugLayersRenderInBothPaths) {
   for (const char* material : {"debug-uv-checker", "debug-triangle-id", "debug-detail-level"}) {
     SCOPED_TRACE(material);
     const auto both = renderBothWays(material);
-    if (std::string(material) != "debug-detail-level") EXPECT_GT(both.psnr, 20.0);
+    // detail-level differs by design: the shadel's level against a level derived from pixel derivatives.
+    if (std::string(material) != "debug-detail-level") {
+      EXPECT_GT(both.psnr, 20.0);
+    }
   }
 }
 
