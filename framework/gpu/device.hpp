@@ -40,6 +40,8 @@ class Device {
   // The pipeline built from `desc` the first time `name` is asked for.
   const Pipeline& pipeline(const std::string& name, const std::function<ComputePipelineDesc()>& desc);
   const Pipeline& pipeline(const std::string& name, const std::function<GraphicsPipelineDesc()>& desc);
+  // Has `name` been built (what a frame needed so far)?
+  bool hasPipeline(const std::string& name) const { return pipelines_.count(name) != 0; }
 
  private:
   Context& context_;

@@ -41,6 +41,7 @@ class Session {
     return renderer_->plan({.width = size, .height = size, .cameraOverride = camera});
   }
   plugins::DecoupledStats stats() const { return shading_->stats(); }
+  const gpu::Device& device() const { return *device_; }
   const scene::Scene& scene() const { return scene_; }
 
  private:

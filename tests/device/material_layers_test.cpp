@@ -181,6 +181,9 @@ TEST(MaterialLayers, HiddenObjectsBringNoLayers) {
   d.render(kSize);
   EXPECT_EQ(d.stats().layers, std::vector<std::string>{"gltf-pbr"});
   EXPECT_EQ(d.stats().historyBytes, 0u);
+  EXPECT_TRUE(d.device().hasPipeline("layer-shade/gltf-pbr"));
+  EXPECT_FALSE(d.device().hasPipeline("layer-shade/marble")) << "compiled only for visible objects' materials";
+  EXPECT_FALSE(d.device().hasPipeline("layer-shade/marble-shade"));
 }
 
 }  // namespace
