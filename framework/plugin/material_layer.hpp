@@ -4,6 +4,7 @@
 // path. The framework generates the decoupled compute variant (one shadel per
 // invocation) and the forward fragment variant (one pixel) from it.
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,6 +29,15 @@ struct LayerRead {
 // to the visible ones (support-expand grows by one chunk).
 inline constexpr uint32_t kMaxLayerRadius = 8;
 
+// A texture of the layer's own (a PNG, RGBA8, mip-mapped, linear filtering,
+// repeat), bound as `uniform sampler2D <name>` in both variants. Sample it
+// with textureGrad and the Surface's derivatives.
+struct LayerTexture {
+  std::string name;            // the GLSL sampler's name
+  std::filesystem::path file;  // absolute, or relative to the working directory
+  bool srgb = false;           // colour data (decoded to linear when sampled)
+};
+
 struct MaterialLayer {
   std::string name;      // unique, e.g. "height"; also the GLSL accessor name (letters, digits, '_', '-')
   std::string source;    // GLSL virtual path, e.g. "materials/height-normal/height.glsl"
@@ -41,6 +51,7 @@ struct MaterialLayer {
   bool persistent = false;
   LayerPaths paths = LayerPaths::Both;
   std::vector<std::pair<std::string, std::string>> parameters;  // #define name value, before the source
+  std::vector<LayerTexture> textures;
   std::string plugin;  // who registered it (set by the registry; named in errors)
 
   uint32_t radius() const {

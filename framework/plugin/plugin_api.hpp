@@ -9,7 +9,7 @@
 
 #include <shadelgraph/plugin/registry.hpp>
 
-#define SG_PLUGIN_ABI_VERSION 1u
+#define SG_PLUGIN_ABI_VERSION 2u
 
 extern "C" {
 

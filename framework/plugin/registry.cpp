@@ -104,6 +104,12 @@ std::vector<std::string> Registry::problems() const {
       if (l.persistent && l.paths == LayerPaths::ForwardOnly)
         problems.push_back(who + ": is persistent, which only means something decoupled");
     }
+    for (const auto& texture : l.textures) {
+      if (!validName(texture.name) || texture.name.find('-') != std::string::npos)
+        problems.push_back(who + ": texture name '" + texture.name + "' is not a GLSL identifier");
+      if (!std::filesystem::is_regular_file(texture.file))
+        problems.push_back(who + ": texture '" + texture.name + "': no such file " + texture.file.string());
+    }
   }
   for (const auto& [name, m] : materials_) {
     const std::string who = credit("material", name, m.plugin);

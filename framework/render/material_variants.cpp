@@ -9,6 +9,14 @@ void defineParameters(std::ostringstream& out, const plugin::MaterialLayer& laye
   for (const auto& [name, value] : layer.parameters) out << "#define " << name << " " << value << "\n";
 }
 
+// The layer's own textures, set 2 from binding `first` on.
+uint32_t declareTextures(std::ostringstream& out, const plugin::MaterialLayer& layer, uint32_t first) {
+  for (const auto& texture : layer.textures)
+    out << "layout(set = " << kLayerTextureSet << ", binding = " << first++ << ") uniform sampler2D " << texture.name
+        << ";\n";
+  return first;
+}
+
 void undefineParameters(std::ostringstream& out, const plugin::MaterialLayer& layer) {
   for (const auto& [name, value] : layer.parameters) out << "#undef " << name << "\n";
 }
@@ -84,6 +92,7 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
     out << "bool sgPrevious(out vec4 value) { value = vec4(0.0); return false; }\n";
   }
   out << kAccessorMacros;
+  declareTextures(out, layer, 0);
   defineParameters(out, layer);
   out << "#include <" << layer.source << ">\n";
   undefineParameters(out, layer);
@@ -123,8 +132,10 @@ gpu::ShaderRequest forwardMaterialVariant(const plugin::Registry& registry, cons
         << "vec4 sgLayer_" << id << "(ivec2 offset) { return sgLayerValue_" << id << "; }\n";
   }
   out << kAccessorMacros;
+  uint32_t textureBinding = 0;
   for (const auto& name : stack.layers) {
     const auto& layer = registry.layer(name);
+    textureBinding = declareTextures(out, layer, textureBinding);
     defineParameters(out, layer);
     out << "#include <" << layer.source << ">\n";
     undefineParameters(out, layer);

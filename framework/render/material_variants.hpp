@@ -12,6 +12,7 @@
 #include <shadelgraph/gpu/shader_compiler.hpp>
 #include <shadelgraph/plugin/registry.hpp>
 #include <shadelgraph/render/decoupled_frame.hpp>
+#include <shadelgraph/render/layer_textures.hpp>
 
 namespace sg::render {
 

@@ -18,6 +18,7 @@ Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, FrameRecipe r
       scene_(scene),
       recipe_(std::move(recipe)),
       materials_(materials),
+      layerTextures_(device, materials),
       gpuScene_(device.context(), device.memory(), scene),
       frameUniforms_(device.context(), device.memory(),
                      {sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryLocation::Upload,
@@ -59,7 +60,7 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
                                    .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                    .name = "output", .category = "output"});
   }
-  auto frame = std::make_unique<Frame>(Frame{{gpuScene_, frameUniforms_, gpuScene_.allDraws(), materials_}, {}, {}});
+  auto frame = std::make_unique<Frame>(Frame{{gpuScene_, frameUniforms_, gpuScene_.allDraws(), materials_, layerTextures_}, {}, {}});
   frame->output = frame->graph.importImage(
       "output", {.format = graph::Format::RGBA8Srgb, .size = graph::Size::absolute(settings.width, settings.height)},
       graph::ImportedState{graph::Layout::Undefined},

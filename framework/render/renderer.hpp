@@ -9,6 +9,7 @@
 #include <shadelgraph/gpu/readback.hpp>
 #include <shadelgraph/render/frame_recipe.hpp>
 #include <shadelgraph/render/gpu_scene.hpp>
+#include <shadelgraph/render/layer_textures.hpp>
 #include <shadelgraph/scene/scene.hpp>
 
 namespace sg::render {
@@ -47,6 +48,7 @@ class Renderer {
   const scene::Scene& scene_;
   FrameRecipe recipe_;
   const plugin::Registry& materials_;
+  LayerTextures layerTextures_;
   GpuScene gpuScene_;
   gpu::Buffer frameUniforms_;
   std::optional<gpu::Image> output_;

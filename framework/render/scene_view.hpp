@@ -7,6 +7,7 @@
 #include <shadelgraph/gpu/buffer.hpp>
 #include <shadelgraph/plugin/registry.hpp>
 #include <shadelgraph/render/gpu_scene.hpp>
+#include <shadelgraph/render/layer_textures.hpp>
 
 namespace sg::render {
 
@@ -15,6 +16,7 @@ struct SceneView {
   const gpu::Buffer& frameUniforms;
   std::span<const uint32_t> draws;  // the draws (indices into scene.draws()) the pass takes
   const plugin::Registry& materials;
+  LayerTextures& layerTextures;  // the layers' own textures, loaded when first drawn
 };
 
 // Push constants and cull mode for one draw, then the indexed draw.

@@ -9,12 +9,15 @@ namespace {
 
 const gpu::Pipeline& forwardPipeline(PassContext& ctx, const render::SceneView& view,
                                      const plugin::MaterialStack& material, bool blend) {
+  const render::TextureSet* textures = view.layerTextures.forMaterial(material);
   const auto describe = [&] {
+    std::vector<VkDescriptorSetLayout> sets{view.scene.materialSetLayout()};
+    if (textures) sets.push_back(textures->layout());
     return gpu::GraphicsPipelineDesc{
         .vertex = {.path = "passes/forward/forward.vert"},
         .fragment = render::forwardMaterialVariant(view.materials, material),
         .layout = {.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}},
-                   .extraSets = {view.scene.materialSetLayout()},
+                   .extraSets = sets,
                    .pushConstantBytes = sizeof(render::ObjectConstants)},
         .vertexInput = render::sceneVertexInput(),
         .colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT},
@@ -51,9 +54,15 @@ void drawForward(PassContext& ctx, const render::SceneView& view, std::span<cons
   view.scene.bindGeometry(ctx.cmd());
   const gpu::Pipeline* bound = nullptr;
   for (uint32_t d : draws) {
-    const auto& pipeline = forwardPipeline(ctx, view, forwardMaterial(view, d), blend);
+    const auto& material = forwardMaterial(view, d);
+    const auto& pipeline = forwardPipeline(ctx, view, material, blend);
     if (&pipeline != bound) {
       ctx.bind(pipeline, {{0, gpu::BufferBinding{view.frameUniforms.handle()}}});
+      if (const render::TextureSet* textures = view.layerTextures.forMaterial(material)) {
+        VkDescriptorSet set = textures->set();
+        vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), render::kLayerTextureSet,
+                                1, &set, 0, nullptr);
+      }
       bound = &pipeline;
     }
     const auto& item = view.scene.draws()[d];

@@ -17,8 +17,10 @@ constexpr uint32_t kBaseBindings[] = {kBindFrame,    kBindParams,   kBindObjects
 // Compiled the first time a frame dispatches the layer; a GLSL error names the
 // layer, its plugin and the author's file:line.
 const gpu::Pipeline& layerPipeline(PassContext& ctx, const DecoupledFrame& frame, const plugin::MaterialLayer& layer) {
+  const TextureSet* textures = frame.view.layerTextures.forLayer(layer);
   const auto describe = [&] {
     gpu::PipelineLayoutDesc layout = decoupledLayout(kBaseBindings, false, 12, {frame.view.scene.materialSetLayout()});
+    if (textures) layout.extraSets.push_back(textures->layout());
     layout.bindings.push_back({kBindLayerOutput, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
     for (uint32_t i = 0; i < layer.reads.size(); ++i)
       layout.bindings.push_back({kBindLayerInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
@@ -78,6 +80,11 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
         writes.push_back({kBindPreviousRemap, gpu::BufferBinding{ctx.buffer(history.previousRemap).handle()}});
       }
       bindDecoupled(ctx, pipeline, frame, kBaseBindings, writes);
+      if (const TextureSet* textures = frame.view.layerTextures.forLayer(*step.layer)) {
+        VkDescriptorSet set = textures->set();
+        vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout(), kLayerTextureSet, 1, &set,
+                                0, nullptr);
+      }
       for (const uint32_t object : step.objects) {
         VkDescriptorSet material = frame.view.scene.materialSet(draws[frame.objectDraws[object]].material);
         vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout(), 1, 1, &material, 0,

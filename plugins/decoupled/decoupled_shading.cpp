@@ -183,8 +183,10 @@ graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const
                                ownedEntryCount_, objectCount, storage_.capacityChunks(),
                                storage_.counterCount, {}};
   params_.write(&params, sizeof params);
-  render::SceneView forwardView{in.view.scene, in.view.frameUniforms, frameForwardDraws_, in.view.materials};
-  render::DecoupledFrame frame{.view = {in.view.scene, in.view.frameUniforms, frameDraws_, in.view.materials},
+  render::SceneView forwardView{in.view.scene, in.view.frameUniforms, frameForwardDraws_, in.view.materials,
+                                in.view.layerTextures};
+  render::DecoupledFrame frame{.view = {in.view.scene, in.view.frameUniforms, frameDraws_, in.view.materials,
+                                                        in.view.layerTextures},
                                .objectIds = frameObjects_,
                                .objectDraws = decoupledDraws_,
                                .params = params_, .objects = objects_, .shadelInstances = shadelInstances_,

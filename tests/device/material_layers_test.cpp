@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -17,6 +19,7 @@
 #include <shadelgraph/scene/default_scene.hpp>
 
 #include "decoupled_session.hpp"
+#include "test_support.hpp"
 
 namespace sg::test {
 namespace {
@@ -184,6 +187,54 @@ TEST(MaterialLayers, HiddenObjectsBringNoLayers) {
   EXPECT_TRUE(d.device().hasPipeline("layer-shade/gltf-pbr"));
   EXPECT_FALSE(d.device().hasPipeline("layer-shade/marble")) << "compiled only for visible objects' materials";
   EXPECT_FALSE(d.device().hasPipeline("layer-shade/marble-shade"));
+}
+
+// A layer's own texture (a PNG it declares), in both paths.
+TEST(MaterialLayers, LayerTexturesAreBoundInBothPaths) {
+  test::TempDir dir;
+  std::vector<uint8_t> red(8 * 8 * 4);
+  for (size_t i = 0; i < red.size(); i += 4) {
+    red[i] = 220;
+    red[i + 1] = 40;
+    red[i + 2] = 30;
+    red[i + 3] = 255;
+  }
+  image::writePng(dir.path() / "tint.png", 8, 8, red.data());
+  std::filesystem::create_directories(dir.path() / "tinted");
+  std::ofstream(dir.path() / "tinted" / "tinted.glsl") << "vec4 tinted(Surface s) {\n"
+                                                           "  return textureGrad(tint, s.uv0, s.uv0Dx, s.uv0Dy);\n"
+                                                           "}\n";
+  plugin::Registry registry;
+  materials::registerBuiltinMaterials(registry);
+  registry.beginPlugin("test");
+  registry.addShaderDirectory(dir.path());
+  registry.addLayer({.name = "tinted", .source = "tinted/tinted.glsl", .function = "tinted",
+                     .textures = {{.name = "tint", .file = dir.path() / "tint.png"}}});
+  registry.addMaterial({.name = "tinted", .layers = {"tinted"}});
+  for (const auto mode : {scene::ShadingMode::Decoupled, scene::ShadingMode::Forward}) {
+    Session d(courtyardWith("tinted"), mode, {}, registry);
+    const auto image = d.render(64);
+    // Unlit texture colour everywhere but the sky: the exposure scales it, the hue stays.
+    const uint8_t* p = &image.rgba8[(48 * 64 + 32) * 4];
+    EXPECT_GT(p[0], 2 * p[1]) << "mode " << int(mode);
+    EXPECT_GT(p[0], 2 * p[2]) << "mode " << int(mode);
+  }
+}
+
+TEST(MaterialLayers, MissingLayerTextureIsAClearError) {
+  plugin::Registry registry;
+  materials::registerBuiltinMaterials(registry);
+  registry.beginPlugin("test");
+  registry.addLayer({.name = "lost", .source = "x.glsl", .function = "f",
+                     .textures = {{.name = "gone", .file = "/nonexistent/gone.png"}}});
+  registry.addMaterial({.name = "lost", .layers = {"lost"}});
+  try {
+    registry.check();
+    FAIL() << "accepted";
+  } catch (const plugin::PluginError& e) {
+    EXPECT_NE(std::string(e.what()).find("texture 'gone': no such file /nonexistent/gone.png"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
