@@ -111,7 +111,9 @@ TEST(GraphDeclare, ResourceTraitsFollowTheDeclarations) {
     EXPECT_EQ(d.traits[r].kind, d.resources[r].kind);
     EXPECT_EQ(d.traits[r].type, d.resources[r].type);
     EXPECT_EQ(d.traits[r].readOnly, d.resources[r].readOnly);
-    if (d.resources[r].type == ResourceType::Image) EXPECT_EQ(d.traits[r].format, d.resources[r].image.format);
+    if (d.resources[r].type == ResourceType::Image) {
+      EXPECT_EQ(d.traits[r].format, d.resources[r].image.format);
+    }
   }
   EXPECT_TRUE(d.traits[1].readOnly);
   EXPECT_EQ(d.traits[3].kind, ResourceKind::History);
