@@ -44,7 +44,7 @@ void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const Decoup
         bool storage = false;
         for (const auto& pb : pipelineBindings)
           if (pb.binding == b) storage = pb.type == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-        writes.push_back({b, gpu::ImageBinding{ctx.image(f.layerImage).view(),
+        writes.push_back({b, gpu::ImageBinding{ctx.image(f.shadedColor).view(),
                                                storage ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                                                storage ? VK_NULL_HANDLE : ctx.device().nearestSampler()}});
         break;

@@ -41,7 +41,8 @@ struct DecoupledFrame {
   uint32_t objectCount = 0;
   int filter = 2;  // composite: 0 point, 1 bilinear, 2 trilinear
   bool levelView = false;  // composite shows the detail level instead of the shading
-  graph::ResourceHandle remap, counters, work, args, layerImage;
+  graph::ResourceHandle remap, counters, work, args;
+  graph::ResourceHandle shadedColor;  // what composite filters: the last layer of every material writes it
 };
 
 // The set-0 layout of a decoupled pass using `bindings`; the layer image is a

@@ -12,7 +12,7 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, render::DecoupledF
   pass.read(color, graph::Access::ColorAttachmentRead);
   pass.read(depth, graph::Access::DepthRead);
   pass.read(frame.remap, graph::Access::StorageRead);
-  pass.read(frame.layerImage, graph::Access::Sampled);
+  pass.read(frame.shadedColor, graph::Access::Sampled);
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);  // misses
   color = pass.write(color, graph::Access::ColorAttachment);
   pass.execute([frame, color, depth](PassContext& ctx) {

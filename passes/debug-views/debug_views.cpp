@@ -51,7 +51,7 @@ graph::ResourceHandle addSheetView(graph::RenderGraph& graph, const render::Deco
   graph::Pass* pass = nullptr;
   auto view = addFullscreenView(graph, frame, "debug-sheet", "passes/debug-views/sheet.frag", {render::kBindLayerImage},
                                 uint32_t{0}, pass);
-  pass->read(frame.layerImage, graph::Access::Sampled);
+  pass->read(frame.shadedColor, graph::Access::Sampled);
   return view;
 }
 

@@ -200,7 +200,7 @@ graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const
   frame.counters = graph.createBuffer("shade counters", {.size = sizeof(ShadeCounters)});
   frame.work = graph.createBuffer("work", {.size = workBufferBytes(objectCount, storage_.capacityChunks())});
   frame.args = graph.createBuffer("dispatch args", {.size = std::max<uint64_t>(12ull * objectCount, 12)});
-  frame.layerImage = graph.createImage(
+  frame.shadedColor = graph.createImage(
       "shade storage", {.format = graph::Format::RGBA16F,
                         .size = graph::Size::absolute(storage_.widthTexels(), storage_.heightTexels())});
   auto readback = graph.importBuffer("shade counters readback", {.size = sizeof(ShadeCounters)}, {},
@@ -262,7 +262,7 @@ void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, render::Decoupl
     std::vector<passes::LayerShadeStep> steps;
     for (const auto& planned : layerPlan_.depths[depth]) {
       const auto& layer = materials.layer(planned.layer);
-      passes::LayerShadeStep step{&layer, planned.objects, planned.final ? frame.layerImage : images.at(layer.name)};
+      passes::LayerShadeStep step{&layer, planned.objects, planned.final ? frame.shadedColor : images.at(layer.name)};
       for (const auto& read : layer.reads) step.inputs.push_back(images.at(read.layer));
       if (layer.persistent) {
         step.history = history.layers.at(layer.name).history;
@@ -274,7 +274,7 @@ void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, render::Decoupl
     const std::string name = depth == 0 ? "layer-shade" : "layer-shade #" + std::to_string(depth + 1);
     passes::addLayerShade(graph, frame, name, steps, {history.previousRemap, history.valid});
     for (size_t i = 0; i < steps.size(); ++i)
-      (layerPlan_.depths[depth][i].final ? frame.layerImage : images[steps[i].layer->name]) = steps[i].output;
+      (layerPlan_.depths[depth][i].final ? frame.shadedColor : images[steps[i].layer->name]) = steps[i].output;
   }
 }
 
