@@ -134,27 +134,15 @@ void DecoupledShading::initialize(const render::FrameInputs& in) {
   initialized_ = true;
 }
 
-graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const render::FrameInputs& in) {
-  if (!initialized_) initialize(in);
-  // The adjuster reads the counters of the frame before (complete: frames are
-  // waited for), which was rendered with lastFrameBias_.
-  if (frames_ > 0 && !settings_.fixedBias) {
-    const auto c = stats().counters;
-    bias_ = adjuster_.update({lastFrameBias_, uint64_t(c.chunksMarked), storage_.capacityChunks(), c.overflowChunks});
-  }
-  lastFrameBias_ = bias_;
-  ++frames_;
-
-  const auto objectCount = uint32_t(decoupledDraws_.size());
-
-  // Objects in mode auto that are tiny on screen this frame go forward; they
-  // keep their shadel space and simply mark nothing. Objects outside the view
-  // are not shaded at all.
+// Objects in mode auto that are tiny on screen this frame go forward; they
+// keep their shadel space and simply mark nothing. Objects outside the view
+// are not shaded at all.
+void DecoupledShading::selectFrameObjects(const render::FrameInputs& in) {
   frameDraws_.clear();
   frameObjects_.clear();
   frameMaterials_.clear();
   frameForwardDraws_ = forwardDraws_;
-  for (uint32_t object = 0; object < objectCount; ++object) {
+  for (uint32_t object = 0; object < uint32_t(decoupledDraws_.size()); ++object) {
     const glm::vec4 sphere = objectSpheres_[object];
     if (!sphereInFrustum(in.viewProjection, sphere)) continue;
     const float distance = glm::distance(glm::vec3(sphere), in.cameraPosition);
@@ -168,6 +156,22 @@ graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const
       frameMaterials_.push_back(objectMaterials_[object]);
     }
   }
+}
+
+graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const render::FrameInputs& in) {
+  if (!initialized_) initialize(in);
+  // The adjuster reads the counters of the frame before (complete: frames are
+  // waited for), which was rendered with lastFrameBias_.
+  if (frames_ > 0 && !settings_.fixedBias) {
+    const auto c = stats().counters;
+    bias_ = adjuster_.update({lastFrameBias_, uint64_t(c.chunksMarked), storage_.capacityChunks(), c.overflowChunks});
+  }
+  lastFrameBias_ = bias_;
+  ++frames_;
+
+  const auto objectCount = uint32_t(decoupledDraws_.size());
+
+  selectFrameObjects(in);
   layerPlan_ = planLayers(in.view.materials, frameObjects_, frameMaterials_);
 
   // An entry takes up to 64 chunks from one partition at once: keep partitions

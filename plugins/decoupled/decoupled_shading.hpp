@@ -78,6 +78,8 @@ class DecoupledShading {
 
  private:
   void initialize(const render::FrameInputs& inputs);
+  // This frame's decoupled objects (frameDraws_, frameObjects_, frameMaterials_) and forward draws.
+  void selectFrameObjects(const render::FrameInputs& inputs);
   // One layer-shade pass per depth of the frame's layer plan.
   void addLayerPasses(graph::RenderGraph& graph, render::DecoupledFrame& frame, const plugin::Registry& materials,
                       const LayerHistory::Declared& history);
