@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 
+#include <shadelgraph/gpu/barriers.hpp>
 #include <shadelgraph/gpu/pass_context.hpp>
 
 namespace sg::passes {
@@ -26,17 +27,6 @@ void dispatchGroups(VkCommandBuffer cmd, uint32_t groups) {
   vkCmdDispatch(cmd, x, (groups + x - 1) / x, 1);
 }
 
-// Compute to compute, over the whole buffer.
-VkBufferMemoryBarrier2 bufferBarrier(VkBuffer buffer, VkAccessFlags2 src, VkAccessFlags2 dst) {
-  VkBufferMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
-  barrier.srcStageMask = barrier.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-  barrier.srcAccessMask = src;
-  barrier.dstAccessMask = dst;
-  barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.buffer = buffer;
-  barrier.size = VK_WHOLE_SIZE;
-  return barrier;
-}
 
 }  // namespace
 
@@ -63,14 +53,9 @@ void addSupportExpand(graph::RenderGraph& graph, render::DecoupledFrame& frame) 
     // neighbouring entries (write-after-read: an execution dependency; without
     // it a chunk could grow from a chunk added in this very pass, a
     // nondeterministic cascade). The graph synchronizes only between passes.
-    const std::array barriers{bufferBarrier(maskBuffer, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT),
-                              bufferBarrier(ctx.buffer(frame.remap).handle(), VK_ACCESS_2_NONE,
-                                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT)};
-    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dependency.bufferMemoryBarrierCount = uint32_t(barriers.size());
-    dependency.pBufferMemoryBarriers = barriers.data();
-    vkCmdPipelineBarrier2(ctx.cmd(), &dependency);
+    gpu::memoryBarrier(ctx.cmd(), {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
+                       {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
 
     bindDecoupled(ctx, supportPipeline(ctx, true, bindings), frame, bindings, extra);
     dispatchGroups(ctx.cmd(), (frame.ownedEntryCount + 63) / 64);  // a thread per owned entry

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <decoupled/decoupled_tables.hpp>
+#include <shadelgraph/gpu/barriers.hpp>
 #include <shadelgraph/gpu/buffer.hpp>
 #include <shadelgraph/gpu/descriptors.hpp>
 #include <shadelgraph/gpu/pipeline.hpp>
@@ -126,36 +127,15 @@ class SupportExpandDeviceTest : public DeviceTest {
       const uint32_t x = std::min(groups, 65535u);
       vkCmdDispatch(cmd, x, (groups + x - 1) / x, 1);
     };
-    // The pass's barriers: the masks from gather to apply, gather's remap reads before apply's writes.
-    auto bufferBarrier = [](VkBuffer buffer, VkAccessFlags2 src, VkAccessFlags2 dst) {
-      VkBufferMemoryBarrier2 b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
-      b.srcStageMask = b.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-      b.srcAccessMask = src;
-      b.dstAccessMask = dst;
-      b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-      b.buffer = buffer;
-      b.size = VK_WHOLE_SIZE;
-      return b;
-    };
-    auto gatherToApply = [&](VkCommandBuffer cmd) {
-      const VkBufferMemoryBarrier2 barriers[] = {
-          bufferBarrier(masks.handle(), VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT),
-          bufferBarrier(remap.handle(), VK_ACCESS_2_NONE, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT)};
-      VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-      dependency.bufferMemoryBarrierCount = 2;
-      dependency.pBufferMemoryBarriers = barriers;
-      vkCmdPipelineBarrier2(cmd, &dependency);
+    // The pass's barrier: the masks from gather to apply, gather's remap reads before apply's writes.
+    auto gatherToApply = [](VkCommandBuffer cmd) {
+      gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
+                         {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                          VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
     };
     auto hostBarrier = [](VkCommandBuffer cmd) {
-      VkMemoryBarrier2 b{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-      b.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-      b.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-      b.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-      b.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-      VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-      dependency.memoryBarrierCount = 1;
-      dependency.pMemoryBarriers = &b;
-      vkCmdPipelineBarrier2(cmd, &dependency);
+      gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
+                         {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT});
     };
     context->submitAndWait([&](VkCommandBuffer cmd) {
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, gather.handle());
