@@ -65,6 +65,9 @@ void DecoupledShading::initialize(const render::FrameInputs& in) {
   const plugin::Registry& materials = in.view.materials;
   for (uint32_t d = 0; d < draws.size(); ++d) {
     ShadingChoice& choice = choices_[draws[d].instance];
+    const scene::Mesh& mesh = in.scene.meshes[size_t(in.scene.instances[choice.instance].mesh)];
+    const scene::Bounds world = scene::transformBounds(mesh.bounds, draws[d].world);
+    drawSpheres_.emplace_back(world.center(), world.radius());
     const plugin::MaterialStack& material = materials.material(draws[d].materialStack);
     if (choice.decoupled && !materials.runsIn(material, plugin::ShadingPath::Decoupled)) {
       choice.decoupled = false;
@@ -75,7 +78,6 @@ void DecoupledShading::initialize(const render::FrameInputs& in) {
       continue;
     }
     const int meshIndex = in.scene.instances[choice.instance].mesh;
-    const scene::Mesh& mesh = in.scene.meshes[size_t(meshIndex)];
     auto it = maps.find(meshIndex);
     if (it == maps.end()) {
       const scene::ChartVerdict chart = scene::chooseShadingChart(mesh);
@@ -100,8 +102,6 @@ void DecoupledShading::initialize(const render::FrameInputs& in) {
                        supportRadius(materials, material) > 0 ? 1u : 0u, {}});
     objectMaterials_.push_back(material.name);
     decoupledDraws_.push_back(d);
-    const scene::Bounds world = scene::transformBounds(mesh.bounds, draw.world);
-    objectSpheres_.emplace_back(world.center(), world.radius());
     objectAutomatic_.push_back(choice.automatic);
   }
   const auto tables = shadel::buildGpuTables(*space_);
@@ -136,14 +136,16 @@ void DecoupledShading::initialize(const render::FrameInputs& in) {
 
 // Objects in mode auto that are tiny on screen this frame go forward; they
 // keep their shadel space and simply mark nothing. Objects outside the view
-// are not shaded at all.
+// are not shaded at all (nor their materials compiled).
 void DecoupledShading::selectFrameObjects(const render::FrameInputs& in) {
   frameDraws_.clear();
   frameObjects_.clear();
   frameMaterials_.clear();
-  frameForwardDraws_ = forwardDraws_;
+  frameForwardDraws_.clear();
+  for (const uint32_t d : forwardDraws_)
+    if (sphereInFrustum(in.viewProjection, drawSpheres_[d])) frameForwardDraws_.push_back(d);
   for (uint32_t object = 0; object < uint32_t(decoupledDraws_.size()); ++object) {
-    const glm::vec4 sphere = objectSpheres_[object];
+    const glm::vec4 sphere = drawSpheres_[decoupledDraws_[object]];
     if (!sphereInFrustum(in.viewProjection, sphere)) continue;
     const float distance = glm::distance(glm::vec3(sphere), in.cameraPosition);
     const bool tiny = objectAutomatic_[object] && in.pixelsPerUnitAtUnitDistance > 0.0f && distance > sphere.w &&

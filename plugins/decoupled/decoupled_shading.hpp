@@ -91,10 +91,10 @@ class DecoupledShading {
   float lastFrameBias_ = 0.0f;
   uint64_t frames_ = 0;
   bool initialized_ = false;
-  // Static: every decoupled object's draw (by object index), its world
-  // bounding sphere and whether its mode is auto; the draws always forward.
+  // Static: every decoupled object's draw (by object index) and whether its
+  // mode is auto; the draws always forward; every draw's world bounding sphere.
   std::vector<uint32_t> decoupledDraws_, forwardDraws_;
-  std::vector<glm::vec4> objectSpheres_;
+  std::vector<glm::vec4> drawSpheres_;
   std::vector<bool> objectAutomatic_;
   std::vector<std::string> objectMaterials_;  // by object: its material (runs decoupled)
   // This frame: the objects shaded decoupled (draws, ids, materials), and the forward draws.

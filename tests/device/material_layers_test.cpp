@@ -71,6 +71,14 @@ image::ImageDifference renderBothWays(const std::string& material) {
   return d;
 }
 
+// A copy of the first object, 20 units behind the scene's camera.
+void addBehindTheCamera(scene::Scene& s) {
+  const scene::Camera camera = s.cameras.front();
+  s.instances.push_back(s.instances.front());
+  s.instances.back().world = glm::translate(glm::mat4(1.0f), glm::vec3(camera.world[2]) * 20.0f) *
+                             glm::translate(glm::mat4(1.0f), glm::vec3(camera.world[3]));
+}
+
 // High-frequency energy: mean absolute difference between horizontal neighbours.
 double roughness(const gpu::HostImage& image) {
   double sum = 0.0;
@@ -174,10 +182,7 @@ TEST(MaterialLayers, HiddenObjectsBringNoLayers) {
   // The marble object is behind the camera: its persistent layer and history
   // must not appear, the others' gltf-pbr must.
   scene::Scene s = courtyardWith("gltf-pbr");
-  const scene::Camera camera = s.cameras.front();
-  s.instances.push_back(s.instances.front());
-  s.instances.back().world = glm::translate(glm::mat4(1.0f), glm::vec3(camera.world[2]) * 20.0f) *
-                             glm::translate(glm::mat4(1.0f), glm::vec3(camera.world[3]));
+  addBehindTheCamera(s);
   s.instances.back().material = "marble";
   Session d(std::move(s), scene::ShadingMode::Decoupled);
   EXPECT_EQ(historyResources(d.plan(kSize)), 0u);
@@ -187,6 +192,16 @@ TEST(MaterialLayers, HiddenObjectsBringNoLayers) {
   EXPECT_TRUE(d.device().hasPipeline("layer-shade/gltf-pbr"));
   EXPECT_FALSE(d.device().hasPipeline("layer-shade/marble")) << "compiled only for visible objects' materials";
   EXPECT_FALSE(d.device().hasPipeline("layer-shade/marble-shade"));
+}
+
+TEST(MaterialLayers, HiddenForwardObjectsCompileNothing) {
+  scene::Scene s = courtyardWith("gltf-pbr");
+  addBehindTheCamera(s);
+  s.instances.back().material = "debug-uv-checker";
+  Session d(std::move(s), scene::ShadingMode::Forward);
+  d.render(kSize);
+  EXPECT_TRUE(d.device().hasPipeline("forward/gltf-pbr"));
+  EXPECT_FALSE(d.device().hasPipeline("forward/debug-uv-checker")) << "the only object with it is behind the camera";
 }
 
 // A layer's own texture (a PNG it declares), in both paths.
