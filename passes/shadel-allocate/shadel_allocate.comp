@@ -1,13 +1,29 @@
 #version 460
 // Storage for the marked chunks of each owned remap entry: popcount of its
-// occupancy, taken with atomicAdd from one of SG_STORAGE_COUNTERS partitions
-// picked by a hash of the entry (so allocation does not serialize on one
-// counter). A partition that is full counts the overflow and leaves the entry
+// occupancy, taken from one of SG_STORAGE_COUNTERS partitions picked by a hash
+// of the entry (so allocation does not serialize on one counter). A full
+// partition passes the request on to the next ones, so storage runs out only
+// when no partition has room; then the overflow is counted and the entry left
 // without storage: never a write out of bounds.
 #include <plugins/decoupled/shaders/decoupled.glsl>
 #include <plugins/decoupled/shaders/work.glsl>
 
 layout(local_size_x = 64) in;
+
+// `count` chunks from the first partition, starting at `first`, that has room
+// (compare-and-swap: a failed attempt takes nothing); SG_NO_STORAGE if none.
+uint takeChunks(uint first, uint count) {
+  for (uint i = 0u; i < params.storageCounters; ++i) {
+    uint p = (first + i) % params.storageCounters;
+    uint current = counters.allocated[p];
+    while (current + count <= params.chunksPerCounter) {
+      uint seen = atomicCompSwap(counters.allocated[p], current, current + count);
+      if (seen == current) return p * params.chunksPerCounter + current;
+      current = seen;
+    }
+  }
+  return SG_NO_STORAGE;
+}
 
 void main() {
   uint i = gl_GlobalInvocationID.x;
@@ -18,13 +34,12 @@ void main() {
   if (count == 0u) return;
   atomicAdd(counters.chunksMarked, count);
   atomicAdd(counters.levelChunks[min(owned.level, SG_MAX_LEVELS - 1u)], count);
-  uint storagePartition = sgStorageCounter(owned.entryIndex, params.storageCounters);
-  uint base = atomicAdd(counters.allocated[storagePartition], count);
-  if (base + count > params.chunksPerCounter) {
+  uint base = takeChunks(sgStorageCounter(owned.entryIndex, params.storageCounters), count);
+  if (base == SG_NO_STORAGE) {
     atomicAdd(counters.overflowChunks, count);
     return;  // storageBase stays SG_NO_STORAGE (shadel-clear)
   }
-  remap[owned.entryIndex].storageBase = storagePartition * params.chunksPerCounter + base;
+  remap[owned.entryIndex].storageBase = base;
   atomicAdd(counters.chunksAllocated, count);
   atomicAdd(work[sgObjectChunksSlot(owned.instanceId)], count);
 }

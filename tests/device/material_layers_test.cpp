@@ -45,18 +45,10 @@ size_t historyResources(const graph::CompiledPlan& plan) {
   }));
 }
 
-// A few frames: the shade-space adjuster settles (support rings can overflow
-// the first frame's storage partitions; the adjuster then raises the bias).
-gpu::HostImage settledRender(Session& session, int frames = 4) {
-  gpu::HostImage image;
-  for (int i = 0; i < frames; ++i) image = session.render(kSize);
-  return image;
-}
-
 image::ImageDifference renderBothWays(const std::string& material) {
   Session decoupled(courtyardWith(material), scene::ShadingMode::Decoupled);
   Session forward(courtyardWith(material), scene::ShadingMode::Forward);
-  const auto a = settledRender(decoupled), b = forward.render(kSize);
+  const auto a = decoupled.render(kSize), b = forward.render(kSize);
   if (const char* dir = std::getenv("SG_TEST_IMAGES")) {  // to look at them
     image::writePng(std::string(dir) + "/" + material + "-decoupled.png", a.width, a.height, a.rgba8.data());
     image::writePng(std::string(dir) + "/" + material + "-forward.png", b.width, b.height, b.rgba8.data());
@@ -109,12 +101,12 @@ TEST(MaterialLayers, GltfPbrNeedsOneDispatchPerObjectAndNothingElse) {
 TEST(MaterialLayers, BumpsHeightToNormalAgreesWithItsForwardFallback) {
   Session d(courtyardWith("bumps"), scene::ShadingMode::Decoupled);
   EXPECT_TRUE(hasPass(d.plan(kSize), "support-expand"));
-  const auto bumped = settledRender(d);
+  const auto bumped = d.render(kSize);
   EXPECT_GT(d.stats().counters.supportChunks, 0u) << "radius-1 reads need the chunks around the visible ones";
   EXPECT_EQ(d.stats().layerDispatches, 2 * d.stats().objects);
   // Visibly different from the flat material, and the two variants agree.
   Session flat(courtyardWith("gltf-pbr"), scene::ShadingMode::Decoupled);
-  EXPECT_GT(image::compareRgba8(bumped.rgba8, settledRender(flat).rgba8).meanAbs, 1.0);
+  EXPECT_GT(image::compareRgba8(bumped.rgba8, flat.render(kSize).rgba8).meanAbs, 1.0);
   const auto both = renderBothWays("bumps");
   EXPECT_GT(both.psnr, 26.0);
   EXPECT_LT(both.meanAbs, 6.0);
@@ -126,13 +118,13 @@ TEST(MaterialLayers, SkinBlurCostsThreeDispatchesPerObjectAndSmooths) {
   for (const char* pass : {"layer-shade", "layer-shade #2", "layer-shade #3", "support-expand"})
     EXPECT_TRUE(hasPass(plan, pass)) << pass;
   EXPECT_FALSE(hasPass(plan, "layer-shade #4"));
-  const auto blurred = settledRender(skin);
+  const auto blurred = skin.render(kSize);
   const auto s = skin.stats();
   EXPECT_EQ(s.layerDispatches, 3 * s.objects) << "three layers: three dispatches per visible object, not more";
   EXPECT_EQ(s.layers, (std::vector<std::string>{"gltf-pbr", "blur-u", "blur-v"}));
   EXPECT_EQ(s.counters.compositeMisses, 0u);
   Session sharp(courtyardWith("gltf-pbr"), scene::ShadingMode::Decoupled);
-  const double sharpRoughness = roughness(settledRender(sharp)), blurredRoughness = roughness(blurred);
+  const double sharpRoughness = roughness(sharp.render(kSize)), blurredRoughness = roughness(blurred);
   std::printf("neighbour difference: gltf-pbr %.3f, skin %.3f\n", sharpRoughness, blurredRoughness);
   EXPECT_LT(blurredRoughness, 0.9 * sharpRoughness);
 }
