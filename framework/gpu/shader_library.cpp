@@ -1,5 +1,6 @@
 #include <shadelgraph/gpu/shader_library.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -11,7 +12,11 @@ void ShaderLibrary::add(std::span<const EmbeddedShaderFile> files) {
 
 void ShaderLibrary::add(std::string path, std::string source) { files_[std::move(path)] = std::move(source); }
 
-void ShaderLibrary::addDirectory(std::filesystem::path directory) { directories_.push_back(std::move(directory)); }
+void ShaderLibrary::addDirectory(std::filesystem::path directory) {
+  // Every renderer adds its plugins' directories; once is enough.
+  if (std::find(directories_.begin(), directories_.end(), directory) == directories_.end())
+    directories_.push_back(std::move(directory));
+}
 
 std::optional<std::filesystem::path> ShaderLibrary::fileOf(const std::string& path) const {
   if (files_.count(path)) return std::nullopt;

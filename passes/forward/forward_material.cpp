@@ -52,23 +52,26 @@ std::vector<uint32_t> drawsWithAlphaMode(const render::SceneView& view, scene::A
 
 void drawForward(PassContext& ctx, const render::SceneView& view, std::span<const uint32_t> draws, bool blend) {
   view.scene.bindGeometry(ctx.cmd());
-  const gpu::Pipeline* bound = nullptr;
+  // The pipeline (looked up by name) and its texture set change only with the
+  // material, and the draws come grouped by material.
+  const plugin::MaterialStack* boundMaterial = nullptr;
+  const gpu::Pipeline* pipeline = nullptr;
   for (uint32_t d : draws) {
     const auto& material = forwardMaterial(view, d);
-    const auto& pipeline = forwardPipeline(ctx, view, material, blend);
-    if (&pipeline != bound) {
-      ctx.bind(pipeline, {{0, gpu::BufferBinding{view.frameUniforms.handle()}}});
+    if (&material != boundMaterial) {
+      pipeline = &forwardPipeline(ctx, view, material, blend);
+      ctx.bind(*pipeline, {{0, gpu::BufferBinding{view.frameUniforms.handle()}}});
       if (const render::TextureSet* textures = view.layerTextures.forMaterial(material)) {
         VkDescriptorSet set = textures->set();
-        vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), render::kLayerTextureSet,
+        vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->layout(), render::kLayerTextureSet,
                                 1, &set, 0, nullptr);
       }
-      bound = &pipeline;
+      boundMaterial = &material;
     }
     const auto& item = view.scene.draws()[d];
     VkDescriptorSet set = view.scene.materialSet(item.material);
-    vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), 1, 1, &set, 0, nullptr);
-    render::drawItem(ctx.cmd(), pipeline, item, d);
+    vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->layout(), 1, 1, &set, 0, nullptr);
+    render::drawItem(ctx.cmd(), *pipeline, item, d);
   }
 }
 
