@@ -23,6 +23,7 @@
 #include <shadelgraph/image/png.hpp>
 #include <shadelgraph/render/renderer.hpp>
 
+#include "bench_graph.hpp"
 #include "bench_materials.hpp"
 #include "commands.hpp"
 #include "scene_source.hpp"
@@ -70,11 +71,13 @@ std::string cpuName() {
 
 }  // namespace
 
+nlohmann::json hostJson() { return {{"cpu", cpuName()}, {"cores", std::thread::hardware_concurrency()}}; }
+
 nlohmann::json machineJson(const gpu::Context& context) {
-  return {{"cpu", cpuName()},
-          {"cores", std::thread::hardware_concurrency()},
-          {"device", context.deviceName()},
-          {"driver", context.driverDescription()}};
+  nlohmann::json machine = hostJson();
+  machine["device"] = context.deviceName();
+  machine["driver"] = context.driverDescription();
+  return machine;
 }
 
 namespace {
@@ -323,7 +326,22 @@ void addBenchCommand(CLI::App& app) {
                   "--shimmer do not apply)")
       ->delimiter(',')
       ->excludes(shimmer);
-  cmd->callback([] { runBench(args); });
+  cmd->callback([cmd] {
+    if (cmd->got_subcommand("graph")) return;
+    runBench(args);
+  });
+
+  static GraphBenchArgs graphArgs;
+  auto* graph = cmd->add_subcommand("graph",
+                                    "Instead: declare + compile time of synthetic render graphs by size (no device); "
+                                    "writes graph.json and graph.csv into --out");
+  graph->add_option("--passes", graphArgs.passes, "graph sizes in passes, e.g. 10,100,1000")
+      ->delimiter(',')
+      ->capture_default_str();
+  graph->add_option("--graphs", graphArgs.graphs, "distinct graphs per size")->capture_default_str();
+  graph->add_option("--repetitions", graphArgs.repetitions, "timed rounds")->capture_default_str();
+  graph->fallthrough();  // --out belongs to bench
+  graph->callback([] { runGraphBench(graphArgs, args.out); });
 }
 
 }  // namespace sg::app

@@ -35,7 +35,9 @@ image::Rgba8Image toImage(const gpu::HostImage& h);
 // Box filter of `scale` x `scale` blocks in linear light (the reference's supersampling).
 image::Rgba8Image downsample(const gpu::HostImage& big, uint32_t scale);
 double median(std::vector<double> v);
-// CPU, cores, Vulkan device and driver.
+// CPU and cores.
+nlohmann::json hostJson();
+// hostJson() plus the Vulkan device and driver.
 nlohmann::json machineJson(const gpu::Context& context);
 
 }  // namespace sg::app

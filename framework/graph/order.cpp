@@ -1,5 +1,6 @@
 #include <shadelgraph/graph/order.hpp>
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 
@@ -45,6 +46,16 @@ std::vector<PassId> orderPasses(const DependencyGraph& deps, const std::vector<b
 void orderPasses(const DependencyGraph& deps, const std::vector<bool>& culled, std::vector<PassId>& order) {
   const uint32_t passCount = deps.passCount();
   const auto kept = [&](PassId p) { return culled.empty() || !culled[p.index]; };
+  order.clear();
+  order.reserve(passCount);
+  // The usual case: every pass declared after the passes it depends on. Then
+  // declaration order is the answer (each pass is ready when its turn comes).
+  if (std::all_of(deps.edges.begin(), deps.edges.end(), [](const Dependency& e) { return e.from < e.to; })) {
+    for (uint32_t p = 0; p < passCount; ++p) {
+      if (kept(PassId{p})) order.push_back(PassId{p});
+    }
+    return;
+  }
   std::vector<uint32_t> waitingFor(passCount, 0);
   for (const Dependency& e : deps.edges) {
     if (kept(e.from) && kept(e.to)) ++waitingFor[e.to.index];
@@ -54,8 +65,6 @@ void orderPasses(const DependencyGraph& deps, const std::vector<bool>& culled, s
   for (uint32_t p = 0; p < passCount; ++p) {
     if (kept(PassId{p}) && waitingFor[p] == 0) ready.insert(p);
   }
-  order.clear();
-  order.reserve(passCount);
   uint32_t next = 0;
   while (ready.popSmallest(next)) {
     const PassId pass{next};

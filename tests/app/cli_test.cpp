@@ -254,6 +254,42 @@ TEST(Cli, BenchWritesResultsForEveryConfiguration) {
 
 // The material sweep's output format on a tiny run: every (material, path)
 // configuration with the documented keys; times are not asserted.
+// bench graph needs no device: medians per size and mode, ratios, and the
+// render graph's targets for the sizes given (not asserted: timing is measured, not tested).
+TEST(Cli, BenchGraphWritesMediansAndRatiosPerSize) {
+  const auto dir = tempDir() / "bench-graph";
+  std::filesystem::remove_all(dir);
+  auto r = run("bench graph --passes 10,100 --graphs 2 --repetitions 3 --out " + dir.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("target: 100 passes"), std::string::npos) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "graph.csv"));
+  std::ifstream in(dir / "graph.json");
+  const auto json = nlohmann::json::parse(in);
+  EXPECT_TRUE(json["machine"].contains("cpu"));
+  ASSERT_EQ(json["sizes"].size(), 2u);
+  for (const auto& size : json["sizes"]) {
+    const auto passes = size["passes"].get<double>();
+    EXPECT_GT(size["kept_passes_mean"].get<double>(), 0.0);
+    EXPECT_LE(size["kept_passes_mean"].get<double>(), passes);
+    EXPECT_EQ(size["samples"], 2 * 3) << "graphs x repetitions";
+    for (const char* mode : {"fresh", "reused"}) {
+      const auto& m = size[mode];
+      EXPECT_GT(m["median_us"].get<double>(), 0.0) << mode;
+      EXPECT_LE(m["p10_us"].get<double>(), m["median_us"].get<double>()) << mode;
+      EXPECT_GE(m["p90_us"].get<double>(), m["median_us"].get<double>()) << mode;
+    }
+  }
+  ASSERT_EQ(json["ratios"].size(), 1u);
+  EXPECT_EQ(json["ratios"][0]["passes"], 100);
+  EXPECT_EQ(json["ratios"][0]["over"], 10);
+  EXPECT_TRUE(json["targets"]["100_passes_under_100_us"]["met"].is_boolean());
+  EXPECT_FALSE(json["targets"].contains("1000_over_100_at_most_15")) << "no 1000-pass size was run";
+
+  auto tooSmall = run("bench graph --passes 1 --out " + dir.string());
+  EXPECT_EQ(tooSmall.exitCode, 1);
+  EXPECT_NE(tooSmall.output.find("at least 2 passes"), std::string::npos) << tooSmall.output;
+}
+
 TEST(Cli, BenchMaterialsWritesEveryMaterialAndPath) {
   const auto dir = tempDir() / "bench-materials";
   std::filesystem::remove_all(dir);

@@ -107,5 +107,20 @@ TEST(GraphOrder, LongChainOrdersEveryPass) {
   EXPECT_EQ(order.back(), PassId{0});
 }
 
+// Dependencies that all point forward take the shortcut (no sort); one that
+// points back must still be honoured, with everything else in its place.
+TEST(GraphOrder, ForwardDependenciesKeepDeclarationOrderAndOneBackwardEdgeIsHonoured) {
+  DependencyGraph deps;
+  deps.firstEdge = {0, 1, 2, 2, 2, 2};  // 5 passes: 0 -> 1, 1 -> 3
+  deps.edges = {{PassId{0}, PassId{1}, ResourceId{0}, PipelineStage::None},
+                {PassId{1}, PassId{3}, ResourceId{1}, PipelineStage::None}};
+  const std::vector<bool> culled{false, false, true, false, false};
+  EXPECT_EQ(orderPasses(deps, culled), (std::vector<PassId>{PassId{0}, PassId{1}, PassId{3}, PassId{4}}));
+
+  deps.firstEdge = {0, 1, 2, 2, 2, 3};  // and 4 -> 1: pass 1 waits for the later-declared pass 4
+  deps.edges.push_back({PassId{4}, PassId{1}, ResourceId{2}, PipelineStage::None});
+  EXPECT_EQ(orderPasses(deps, culled), (std::vector<PassId>{PassId{0}, PassId{4}, PassId{1}, PassId{3}}));
+}
+
 }  // namespace
 }  // namespace sg::graph

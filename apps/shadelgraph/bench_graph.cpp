@@ -1,0 +1,189 @@
+// shadelgraph bench graph: declare + compile time of synthetic frame graphs
+// (benchmarks/graph/synthetic_graph.hpp) per size, in two modes:
+//   fresh  - a new RenderGraph and compile() every time (allocations included);
+//   reused - one RenderGraph and PlanCompiler per size, cleared and reused, as
+//            a frame loop does.
+// Every round times each (size, mode, graph) once, in an order rotated from
+// round to round, after one untimed warm-up round. Distinct graphs matter: a
+// CPU that compiles one graph back to back learns its branches, and a small
+// graph then compiles about twice as fast as any frame would see it.
+#include "bench_graph.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include <synthetic_graph.hpp>
+
+#include "bench_materials.hpp"
+
+namespace sg::app {
+namespace {
+
+enum class Mode { Fresh, Reused };
+constexpr Mode kModes[] = {Mode::Fresh, Mode::Reused};
+const char* modeName(Mode m) { return m == Mode::Fresh ? "fresh" : "reused"; }
+
+// The targets for the render graph (#3).
+constexpr double kTargetMicrosecondsAt100 = 100.0;
+constexpr double kMaxRatio1000Over100 = 15.0;
+
+struct SizeRun {
+  uint32_t passes = 0;
+  std::vector<graph::SyntheticGraph> graphs;
+  graph::RenderGraph reusedGraph;
+  graph::PlanCompiler compiler;
+  std::size_t keptPasses = 0;                 // summed over the graphs, from the warm-up round
+  std::vector<double> microseconds[2];        // per mode
+};
+
+double declareAndCompile(SizeRun& run, Mode mode, const graph::SyntheticGraph& recipe,
+                         const graph::CompileOptions& options, std::size_t& keptPasses) {
+  const auto start = std::chrono::steady_clock::now();
+  if (mode == Mode::Fresh) {
+    graph::RenderGraph g;
+    declare(g, recipe);
+    const graph::CompiledPlan plan = graph::compile(g, options);
+    keptPasses = plan.order.size();
+  } else {
+    run.reusedGraph.clear();
+    declare(run.reusedGraph, recipe);
+    keptPasses = run.compiler.compile(run.reusedGraph, options).order.size();
+  }
+  return std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+}
+
+double percentile(std::vector<double> v, double p) {
+  std::sort(v.begin(), v.end());
+  return v[static_cast<std::size_t>(p * double(v.size() - 1) + 0.5)];
+}
+
+const nlohmann::json* findSize(const nlohmann::json& sizes, uint32_t passes) {
+  for (const auto& s : sizes)
+    if (s["passes"] == passes) return &s;
+  return nullptr;
+}
+
+}  // namespace
+
+void runGraphBench(const GraphBenchArgs& args, const std::filesystem::path& out) {
+  if (args.passes.empty() || args.graphs == 0 || args.repetitions == 0)
+    throw std::invalid_argument("bench graph: --passes, --graphs and --rounds must not be empty or 0");
+  for (const uint32_t p : args.passes)
+    if (p < 2) throw std::invalid_argument("bench graph: a synthetic graph has at least 2 passes");
+  std::filesystem::create_directories(out);
+  const graph::CompileOptions options = graph::syntheticCompileOptions();
+
+  std::vector<SizeRun> runs(args.passes.size());
+  for (std::size_t s = 0; s < runs.size(); ++s) {
+    runs[s].passes = args.passes[s];
+    for (uint32_t g = 0; g < args.graphs; ++g) runs[s].graphs.push_back(graph::makeSyntheticGraph(args.passes[s], 42 + g));
+  }
+
+  // (size, mode) configurations, alternated; round 0 is the warm-up.
+  const std::size_t configs = runs.size() * 2;
+  for (uint32_t round = 0; round <= args.repetitions; ++round) {
+    for (uint32_t g = 0; g < args.graphs; ++g) {
+      for (std::size_t i = 0; i < configs; ++i) {
+        const std::size_t c = (i + round + g) % configs;
+        SizeRun& run = runs[c / 2];
+        const Mode mode = kModes[c % 2];
+        std::size_t kept = 0;
+        const double us = declareAndCompile(run, mode, run.graphs[g], options, kept);
+        if (round == 0 && mode == Mode::Fresh) run.keptPasses += kept;
+        if (round > 0) run.microseconds[c % 2].push_back(us);
+      }
+    }
+  }
+
+  nlohmann::json sizes = nlohmann::json::array();
+  for (const SizeRun& run : runs) {
+    nlohmann::json size{{"passes", run.passes},
+                        {"kept_passes_mean", double(run.keptPasses) / args.graphs},
+                        {"samples", run.microseconds[0].size()}};
+    for (const Mode mode : kModes) {
+      const std::vector<double>& us = run.microseconds[static_cast<int>(mode)];
+      const double med = median(us);
+      size[modeName(mode)] = {{"median_us", med},
+                              {"p10_us", percentile(us, 0.1)},
+                              {"p90_us", percentile(us, 0.9)},
+                              {"per_pass_ns", med * 1000.0 / run.passes}};
+    }
+    sizes.push_back(size);
+  }
+  nlohmann::json ratios = nlohmann::json::array();
+  for (std::size_t s = 1; s < runs.size(); ++s) {
+    nlohmann::json r{{"passes", runs[s].passes}, {"over", runs[s - 1].passes}};
+    for (const Mode mode : kModes)
+      r[modeName(mode)] = sizes[s][modeName(mode)]["median_us"].get<double>() /
+                          sizes[s - 1][modeName(mode)]["median_us"].get<double>();
+    ratios.push_back(r);
+  }
+  nlohmann::json targets = nlohmann::json::object();
+  const nlohmann::json* at100 = findSize(sizes, 100);
+  const nlohmann::json* at1000 = findSize(sizes, 1000);
+  if (at100) {
+    nlohmann::json t;
+    bool met = true;
+    for (const Mode mode : kModes) {
+      const double us = (*at100)[modeName(mode)]["median_us"].get<double>();
+      t[modeName(mode)] = us;
+      met = met && us < kTargetMicrosecondsAt100;
+    }
+    t["met"] = met;
+    targets["100_passes_under_100_us"] = t;
+  }
+  if (at100 && at1000) {
+    nlohmann::json t;
+    bool met = true;
+    for (const Mode mode : kModes) {
+      const double ratio = (*at1000)[modeName(mode)]["median_us"].get<double>() /
+                           (*at100)[modeName(mode)]["median_us"].get<double>();
+      t[modeName(mode)] = ratio;
+      met = met && ratio <= kMaxRatio1000Over100;
+    }
+    t["met"] = met;
+    targets["1000_over_100_at_most_15"] = t;
+  }
+
+  const nlohmann::json results{{"machine", hostJson()},
+                               {"graphs_per_size", args.graphs},
+                               {"repetitions", args.repetitions},
+                               {"sizes", sizes},
+                               {"ratios", ratios},
+                               {"targets", targets}};
+  std::ofstream(out / "graph.json") << results.dump(2) << "\n";
+  std::ofstream csv(out / "graph.csv");
+  csv << "passes,kept_passes_mean,mode,median_us,p10_us,p90_us,per_pass_ns\n";
+  for (const auto& s : sizes)
+    for (const Mode mode : kModes) {
+      const auto& m = s[modeName(mode)];
+      csv << s["passes"] << ',' << s["kept_passes_mean"] << ',' << modeName(mode) << ',' << m["median_us"] << ','
+          << m["p10_us"] << ',' << m["p90_us"] << ',' << m["per_pass_ns"] << '\n';
+    }
+
+  std::printf("declare + compile, medians of %u rounds x %u distinct graphs per size, sizes alternated\n", args.repetitions,
+              args.graphs);
+  std::printf("%7s %6s %12s %12s %12s %12s\n", "passes", "kept", "fresh us", "reused us", "fresh ns/p", "reused ns/p");
+  for (const auto& s : sizes)
+    std::printf("%7u %6.0f %12.1f %12.1f %12.0f %12.0f\n", s["passes"].get<uint32_t>(),
+                s["kept_passes_mean"].get<double>(), s["fresh"]["median_us"].get<double>(),
+                s["reused"]["median_us"].get<double>(), s["fresh"]["per_pass_ns"].get<double>(),
+                s["reused"]["per_pass_ns"].get<double>());
+  for (const auto& r : ratios)
+    std::printf("%u/%u passes: %.1fx fresh, %.1fx reused\n", r["passes"].get<uint32_t>(), r["over"].get<uint32_t>(),
+                r["fresh"].get<double>(), r["reused"].get<double>());
+  if (targets.contains("100_passes_under_100_us"))
+    std::printf("target: 100 passes < %.0f us: %s\n", kTargetMicrosecondsAt100,
+                targets["100_passes_under_100_us"]["met"].get<bool>() ? "met" : "NOT met");
+  if (targets.contains("1000_over_100_at_most_15"))
+    std::printf("target: 1000 passes <= %.0fx 100 passes: %s\n", kMaxRatio1000Over100,
+                targets["1000_over_100_at_most_15"]["met"].get<bool>() ? "met" : "NOT met");
+  std::printf("wrote %s/graph.json and graph.csv\n", out.c_str());
+}
+
+}  // namespace sg::app
