@@ -69,13 +69,13 @@ GraphExecutor::Transient& GraphExecutor::transientFor(graph::ResourceId id, cons
   return transients_.insert_or_assign(id.index, std::move(t)).first->second;
 }
 
-graph::CompiledPlan GraphExecutor::compile(const graph::RenderGraph& graph, graph::CompileOptions options) {
+const graph::CompiledPlan& GraphExecutor::compile(const graph::RenderGraph& graph, graph::CompileOptions options) {
   // First pass: resolved descriptions and usages (memory estimated).
   graph::CompileOptions first = options;
   first.memoryRequirements.clear();
   first.queryMemoryRequirements = nullptr;
   first.enableAliasing = false;
-  const graph::CompiledPlan draft = graph::compile(graph, first);
+  const graph::CompiledPlan& draft = draftCompiler_.compile(graph, first);
   options.memoryRequirements.assign(draft.resources.size(), {});
   for (uint32_t i = 0; i < draft.resources.size(); ++i) {
     const auto& r = draft.resources[i];
@@ -85,7 +85,7 @@ graph::CompiledPlan GraphExecutor::compile(const graph::RenderGraph& graph, grap
     options.memoryRequirements[i] = {req.size, req.alignment, req.memoryTypeBits};
   }
   options.queryMemoryRequirements = nullptr;
-  return graph::compile(graph, options);
+  return planCompiler_.compile(graph, options);
 }
 
 void GraphExecutor::placeTransients(const graph::CompiledPlan& plan) {

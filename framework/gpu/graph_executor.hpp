@@ -14,6 +14,7 @@
 #include <shadelgraph/gpu/device.hpp>
 #include <shadelgraph/gpu/image.hpp>
 #include <shadelgraph/gpu/timestamps.hpp>
+#include <shadelgraph/graph/compile.hpp>
 #include <shadelgraph/graph/compile_options.hpp>
 #include <shadelgraph/graph/compiled_plan.hpp>
 #include <shadelgraph/graph/render_graph.hpp>
@@ -47,8 +48,9 @@ class GraphExecutor {
   void bindBuffer(graph::ResourceHandle handle, const Buffer& buffer);
 
   // Compiles with the transients' real memory requirements: the Vulkan objects
-  // are created from a first compile's resolved descriptions and queried.
-  graph::CompiledPlan compile(const graph::RenderGraph& graph, graph::CompileOptions options);
+  // are created from a first compile's resolved descriptions and queried. The
+  // plan stays valid until the next compile(), whose memory it reuses.
+  const graph::CompiledPlan& compile(const graph::RenderGraph& graph, graph::CompileOptions options);
   // Records, submits and waits for one frame.
   FrameTimings execute(const graph::RenderGraph& graph, const graph::CompiledPlan& plan);
 
@@ -83,6 +85,9 @@ class GraphExecutor {
   std::map<uint32_t, const Buffer*> boundBuffers_;
   // Transients by resource index; recreated when their description changes.
   std::map<uint32_t, Transient> transients_;
+  // One for the draft (estimated memory), one for the plan: each keeps its memory from frame to frame.
+  graph::PlanCompiler draftCompiler_;
+  graph::PlanCompiler planCompiler_;
   std::vector<Allocation> heaps_;
   std::vector<graph::MemoryPlacement> placed_;  // placement the transients are bound at
   uint64_t transientBytes_ = 0;

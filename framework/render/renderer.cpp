@@ -83,7 +83,7 @@ graph::CompiledPlan Renderer::plan(const RenderSettings& settings) {
 FrameResult Renderer::render(const RenderSettings& settings) {
   gpu::CpuTimer timer;
   auto frame = declare(settings);
-  const auto plan = executor_.compile(frame->graph, {.outputWidth = settings.width, .outputHeight = settings.height,
+  const graph::CompiledPlan& plan = executor_.compile(frame->graph, {.outputWidth = settings.width, .outputHeight = settings.height,
                                                       .enableAliasing = settings.aliasing});
   executor_.bindImage(frame->output, *output_);
   FrameResult result;
