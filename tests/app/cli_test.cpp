@@ -282,7 +282,11 @@ TEST(Cli, BenchGraphWritesMediansAndRatiosPerSize) {
   ASSERT_EQ(json["ratios"].size(), 1u);
   EXPECT_EQ(json["ratios"][0]["passes"], 100);
   EXPECT_EQ(json["ratios"][0]["over"], 10);
-  EXPECT_TRUE(json["targets"]["100_passes_under_100_us"]["met"].is_boolean());
+  for (const char* mode : {"fresh", "reused"}) {
+    const auto& target = json["targets"]["100_passes_under_100_us"][mode];
+    EXPECT_EQ(target["value"].get<double>(), json["sizes"][1][mode]["median_us"].get<double>()) << mode;
+    EXPECT_EQ(target["met"].get<bool>(), target["value"].get<double>() < 100.0) << mode;
+  }
   EXPECT_FALSE(json["targets"].contains("1000_over_100_at_most_15")) << "no 1000-pass size was run";
 
   auto tooSmall = run("bench graph --passes 1 --out " + dir.string());
