@@ -9,7 +9,7 @@ namespace sg::app {
 
 struct GraphBenchArgs {
   std::vector<uint32_t> passes{10, 100, 1000};
-  uint32_t graphs = 8;   // distinct graphs per size
+  uint32_t graphs = 8;        // distinct graphs per size
   uint32_t repetitions = 40;  // timed rounds; each compiles every graph of every size once per mode
 };
 
