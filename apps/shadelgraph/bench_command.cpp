@@ -71,6 +71,19 @@ std::string cpuName() {
 
 }  // namespace
 
+nlohmann::json runPerSceneAndSize(
+    const std::vector<std::string>& scenes, const std::vector<std::string>& sizes,
+    const std::function<nlohmann::json(const std::string& scene, uint32_t width, uint32_t height)>& run) {
+  nlohmann::json runs = nlohmann::json::array();
+  for (const auto& scene : scenes.empty() ? std::vector<std::string>{""} : scenes)
+    for (const auto& size : sizes) {
+      uint32_t w = 0, h = 0;
+      parseSize(size, w, h);
+      runs.push_back(run(scene, w, h));
+    }
+  return runs;
+}
+
 nlohmann::json hostJson() { return {{"cpu", cpuName()}, {"cores", std::thread::hardware_concurrency()}}; }
 
 nlohmann::json machineJson(const gpu::Context& context) {
@@ -261,14 +274,9 @@ void runBench(const BenchArgs& args) {
     setExitCode(context.validationLog().count() ? 1 : 0);
     return;
   }
-  nlohmann::json runs = nlohmann::json::array();
-  const std::vector<std::string> scenes = args.scenes.empty() ? std::vector<std::string>{""} : args.scenes;
-  for (const auto& scenePath : scenes)
-    for (const auto& size : args.sizes) {
-      uint32_t w = 0, h = 0;
-      parseSize(size, w, h);
-      runs.push_back(benchScene(device, scenePath, w, h, args, out));
-    }
+  nlohmann::json runs = runPerSceneAndSize(args.scenes, args.sizes, [&](const std::string& scene, uint32_t w, uint32_t h) {
+    return benchScene(device, scene, w, h, args, out);
+  });
   if (args.shimmer) {
     uint32_t w = 0, h = 0;
     parseSize(args.sizes.front(), w, h);

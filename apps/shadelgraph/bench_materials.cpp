@@ -283,14 +283,10 @@ void printTable(const nlohmann::json& runs) {
 
 void runMaterialBench(gpu::Context& context, gpu::Device& device, const MaterialBenchArgs& args,
                       const std::filesystem::path& out) {
-  nlohmann::json runs = nlohmann::json::array();
-  const std::vector<std::string> scenes = args.scenes.empty() ? std::vector<std::string>{""} : args.scenes;
-  for (const auto& scenePath : scenes)
-    for (const auto& size : args.sizes) {
-      uint32_t w = 0, h = 0;
-      parseSize(size, w, h);
-      runs.push_back(benchMaterials(device, scenePath, w, h, args, out));
-    }
+  const nlohmann::json runs =
+      runPerSceneAndSize(args.scenes, args.sizes, [&](const std::string& scene, uint32_t w, uint32_t h) {
+        return benchMaterials(device, scene, w, h, args, out);
+      });
   const nlohmann::json results{{"machine", machineJson(context)}, {"runs", runs}};
   std::ofstream(out / "materials.json") << results.dump(2) << "\n";
   writeCsv(out / "materials.csv", runs);

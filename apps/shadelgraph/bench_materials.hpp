@@ -5,6 +5,7 @@
 // with the configuration sweep of bench_command.cpp.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,10 @@ image::Rgba8Image toImage(const gpu::HostImage& h);
 // Box filter of `scale` x `scale` blocks in linear light (the reference's supersampling).
 image::Rgba8Image downsample(const gpu::HostImage& big, uint32_t scale);
 double median(std::vector<double> v);
+// One run per scene (the built-in one when `scenes` is empty) and size, scene by scene.
+nlohmann::json runPerSceneAndSize(
+    const std::vector<std::string>& scenes, const std::vector<std::string>& sizes,
+    const std::function<nlohmann::json(const std::string& scene, uint32_t width, uint32_t height)>& run);
 // CPU and cores.
 nlohmann::json hostJson();
 // hostJson() plus the Vulkan device and driver.
