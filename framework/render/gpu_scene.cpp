@@ -196,7 +196,7 @@ void GpuScene::createMaterials(gpu::Context& context, gpu::MemoryAllocator& memo
       }
       images[slot] = {sampler, textures_[texture].view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     }
-    g.flags = {uint32_t(m.alphaMode), m.doubleSided ? 1u : 0u, present, 0u};
+    g.flags = {uint32_t(m.alphaMode), m.doubleSided ? 1u : 0u, present, m.unlit ? 1u : 0u};
     gpu::Buffer& ubo = materialBuffers_.emplace_back(
         context, memory,
         gpu::BufferDesc{sizeof(GpuMaterial), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryLocation::Upload, m.name, "materials"});

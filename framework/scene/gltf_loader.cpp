@@ -17,7 +17,8 @@ namespace {
 
 using detail::InvalidAsset;
 
-constexpr std::string_view kSupportedExtensions[] = {"KHR_texture_transform", "KHR_lights_punctual"};
+constexpr std::string_view kSupportedExtensions[] = {"KHR_texture_transform", "KHR_lights_punctual",
+                                                     "KHR_materials_unlit"};
 
 std::vector<uint8_t> readFile(const std::filesystem::path& file) {
   std::error_code error;

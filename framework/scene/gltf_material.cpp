@@ -196,6 +196,7 @@ void convertMaterials(const GltfContext& context, Scene& scene) {
     out.alphaMode = toAlphaMode(in.alphaMode);
     out.alphaCutoff = static_cast<float>(in.alphaCutoff);
     out.doubleSided = in.doubleSided;
+    out.unlit = in.extensions.count("KHR_materials_unlit") != 0;
     scene.materials.push_back(std::move(out));
   }
 }

@@ -43,6 +43,7 @@ struct Material {
   AlphaMode alphaMode = AlphaMode::Opaque;
   float alphaCutoff = 0.5f;  // used by AlphaMode::Mask only
   bool doubleSided = false;
+  bool unlit = false;  // KHR_materials_unlit: the base colour is the radiance, no lighting
 };
 
 }  // namespace sg::scene

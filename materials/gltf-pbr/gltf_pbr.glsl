@@ -78,6 +78,7 @@ vec3 shadeMetallicRoughness(Surface s, vec3 baseColor, float metallic, float rou
 // The glTF material layer: rgb = outgoing radiance towards the camera, a = alpha.
 vec4 shadeGltfPbr(Surface s) {
   vec4 baseColor = materialBaseColor(s);
+  if (material.flags.w != 0u) return baseColor;  // KHR_materials_unlit
   float metallic = material.params.x, roughness = material.params.y;
   if (materialHas(SG_TEX_METALLIC_ROUGHNESS)) {
     vec4 mr = materialSample(metallicRoughnessTexture, SG_TEX_METALLIC_ROUGHNESS, s);

@@ -25,7 +25,7 @@ layout(set = 1, binding = 0, std140) uniform MaterialBlock {
   vec4 baseColorFactor;
   vec4 emissiveFactor;  // rgb, w = normal scale
   vec4 params;          // x = metallic, y = roughness, z = occlusion strength, w = alpha cutoff
-  uvec4 flags;          // x = alpha mode, y = double sided, z = bitmask of present textures
+  uvec4 flags;          // x = alpha mode, y = double sided, z = bitmask of present textures, w = unlit
   TextureSlot slots[5];
 } material;
 
