@@ -1,11 +1,13 @@
 #include "app_session.hpp"
 
 #include <cstdio>
+#include <filesystem>
 
 #include <CLI/CLI.hpp>
 
-#include <builtin_materials.hpp>
+#include <builtin_plugins.hpp>
 #include <builtin_shaders.hpp>
+#include <decoupled/decoupled_package.hpp>
 #include <shadelgraph/plugin/plugin_loader.hpp>
 
 #include "scene_source.hpp"
@@ -27,11 +29,49 @@ void addMaterialOptions(CLI::App& command, MaterialArgs& args) {
                      "plugin's (default: the scene's, else gltf-pbr)");
 }
 
+void addFrameOptions(CLI::App& command, FrameArgs& args) {
+  command.add_option("--frame-graph", args.frameGraph,
+                     "the frame: a registered frame's name (forward, decoupled, a plugin's) or a JSON frame "
+                     "description (docs/composing-frames.md); default: decoupled");
+  command.add_option("--object-mode", args.objectModes,
+                     "NAME=forward|decoupled|auto: one object's shading mode, over --mode; repeatable");
+}
+
+namespace {
+
+plugin::ResolvedFrame chooseFrame(const plugin::Registry& registry, const std::string& frameGraph) {
+  if (frameGraph.empty()) return plugin::resolveFrame(registry.frame("decoupled"), registry);
+  if (registry.hasFrame(frameGraph)) return plugin::resolveFrame(registry.frame(frameGraph), registry);
+  if (!std::filesystem::exists(frameGraph))
+    throw plugin::FrameError("--frame-graph " + frameGraph + ": no such file, and no frame of that name (known: " +
+                             plugin::join(registry.frameNames()) + ")");
+  return plugin::resolveFrame(plugin::loadFrameDescription(frameGraph), registry);
+}
+
+// "name=mode" onto the scene's instances (every instance of that name).
+void applyObjectModes(scene::Scene& scene, const std::vector<std::string>& modes) {
+  for (const auto& item : modes) {
+    const auto eq = item.find('=');
+    const auto mode = eq == std::string::npos ? std::nullopt : scene::parseShadingMode(item.substr(eq + 1));
+    if (!mode) throw std::invalid_argument("--object-mode " + item + ": expected NAME=forward|decoupled|auto");
+    const std::string name = item.substr(0, eq);
+    bool found = false;
+    for (auto& instance : scene.instances)
+      if (instance.name == name) {
+        instance.shading = *mode;
+        found = true;
+      }
+    if (!found) throw std::invalid_argument("--object-mode " + item + ": the scene has no object '" + name + "'");
+  }
+}
+
+}  // namespace
+
 AppSession::AppSession(const std::string& scenePath, const std::string& mode, plugins::DecoupledSettings settings,
-                       const MaterialArgs& materials) {
-  // The built-ins, then the plugins (which may use built-in layers); a bad
-  // plugin fails before the scene loads and the device starts.
-  materials::registerBuiltinMaterials(registry);
+                       const MaterialArgs& materials, const FrameArgs& frame) {
+  // The built-ins, then the plugins (which may use built-in layers and
+  // passes); a bad plugin fails before the scene loads and the device starts.
+  plugins::registerBuiltins(registry);
   const auto paths = materials.paths();
   const auto plugged = plugin::loadPlugins({paths.begin(), paths.end()}, registry);
   for (const auto& p : plugged) std::fprintf(stderr, "plugin '%s': %s\n", p.name.c_str(), p.library.c_str());
@@ -42,14 +82,17 @@ AppSession::AppSession(const std::string& scenePath, const std::string& mode, pl
     registry.material(materials.material);  // an unknown name fails here, listing the known ones
     for (auto& instance : scene.instances) instance.material = materials.material;
   }
-  std::optional<scene::ShadingMode> override;
-  if (!mode.empty()) override = scene::parseShadingMode(mode);
-  // Before the upload: objects shaded decoupled without a chart get an automatic one.
-  decoupled = std::make_unique<plugins::DecoupledShading>(plugins::chooseShading(scene, override), settings);
+  // A frame that cannot work fails before the device starts.
+  auto resolved = chooseFrame(registry, frame.frameGraph);
+  if (!mode.empty())
+    for (auto& instance : scene.instances) instance.shading = *scene::parseShadingMode(mode);
+  applyObjectModes(scene, frame.objectModes);
   context = std::make_unique<gpu::Context>();
   device = std::make_unique<gpu::Device>(*context);
   device->shaders().add(gpu::builtinShaders());
-  renderer = std::make_unique<render::Renderer>(*device, scene, decoupled->recipe(), registry);
+  auto made = plugins::makeDecoupledRenderer(*device, scene, registry, std::move(resolved), std::nullopt, settings);
+  decoupled = std::move(made.shading);
+  renderer = std::move(made.renderer);
 }
 
 AppSession::~AppSession() {

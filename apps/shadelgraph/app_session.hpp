@@ -1,7 +1,8 @@
 #pragma once
 // What the device commands share: a Vulkan context (validation from
 // SG_VALIDATION), the gpu device with the built-in shaders, the scene, the
-// plugin registry, and a renderer running the forward recipe.
+// plugin registry, and a renderer running a frame description (the built-in
+// "decoupled" frame unless --frame-graph names another).
 #include <memory>
 #include <string>
 #include <vector>
@@ -30,12 +31,19 @@ struct MaterialArgs {
 };
 void addMaterialOptions(CLI::App& command, MaterialArgs& args);
 
+// --frame-graph FILE|NAME and --object-mode NAME=MODE (repeatable).
+struct FrameArgs {
+  std::string frameGraph;  // a built-in or plugin frame's name, or a JSON file; empty: "decoupled"
+  std::vector<std::string> objectModes;  // "object=forward|decoupled|auto"
+};
+void addFrameOptions(CLI::App& command, FrameArgs& args);
+
 struct AppSession {
   // mode: "" (each object's own), "forward", "decoupled" or "auto" for every object.
   // materials: plugin libraries or directories of them (--plugin, --plugin-dir),
   // loaded after those of $SG_PLUGIN_PATH, and a material for every object.
   AppSession(const std::string& scenePath, const std::string& mode = "", plugins::DecoupledSettings settings = {},
-             const MaterialArgs& materials = {});
+             const MaterialArgs& materials = {}, const FrameArgs& frame = {});
   ~AppSession();
   // Non-zero (and a message on stderr) when validation reported anything.
   int validationExitCode() const;
@@ -46,7 +54,7 @@ struct AppSession {
   std::vector<scene::CameraPath> cameraPaths;
   std::unique_ptr<gpu::Context> context;
   std::unique_ptr<gpu::Device> device;
-  std::unique_ptr<plugins::DecoupledShading> decoupled;
+  std::shared_ptr<plugins::DecoupledShading> decoupled;
   std::unique_ptr<render::Renderer> renderer;
 };
 

@@ -15,7 +15,8 @@
 
 #include <builtin_materials.hpp>
 #include <builtin_shaders.hpp>
-#include <decoupled/decoupled_shading.hpp>
+#include <builtin_plugins.hpp>
+#include <decoupled/decoupled_package.hpp>
 #include <shadelgraph/gpu/device.hpp>
 #include <shadelgraph/image/flicker.hpp>
 #include <shadelgraph/image/flip.hpp>
@@ -138,7 +139,7 @@ scene::Camera pathCamera(scene::Camera camera, const scene::Scene& s, uint32_t h
 
 struct Session {
   scene::Scene scene;
-  std::unique_ptr<plugins::DecoupledShading> decoupled;
+  std::shared_ptr<plugins::DecoupledShading> decoupled;
   std::unique_ptr<render::Renderer> renderer;
 };
 
@@ -165,11 +166,11 @@ nlohmann::json benchScene(gpu::Device& device, const std::string& scenePath, uin
     // A fixed bias below zero asks for up to 4x more shadels per level: give
     // it the storage, so the sweep measures shading, not overflow.
     const double storage = 2.0 * std::pow(4.0, std::max(0.0, -double(configs[c].bias.value_or(0.0f)))) * 1.5;
-    s.decoupled = std::make_unique<plugins::DecoupledShading>(
-        plugins::chooseShading(s.scene, mode),
+    auto made = plugins::makeDecoupledRenderer(
+        device, s.scene, plugins::builtinRegistry(), mode,
         plugins::DecoupledSettings{.storageFactor = storage, .filter = configs[c].filter, .fixedBias = configs[c].bias});
-    s.renderer = std::make_unique<render::Renderer>(device, s.scene, s.decoupled->recipe(),
-                                                    materials::builtinMaterials());
+    s.decoupled = std::move(made.shading);
+    s.renderer = std::move(made.renderer);
   }
   const scene::Camera camera =
       cameraOverride ? *cameraOverride : sessions[0].renderer->camera({.width = width, .height = height});

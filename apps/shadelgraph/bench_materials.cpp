@@ -15,7 +15,8 @@
 #include <memory>
 
 #include <builtin_materials.hpp>
-#include <decoupled/decoupled_shading.hpp>
+#include <builtin_plugins.hpp>
+#include <decoupled/decoupled_package.hpp>
 #include <shadelgraph/image/flip.hpp>
 #include <shadelgraph/image/metrics.hpp>
 #include <shadelgraph/render/renderer.hpp>
@@ -34,7 +35,7 @@ struct MaterialConfig {
 
 struct Session {
   scene::Scene scene;
-  std::unique_ptr<plugins::DecoupledShading> decoupled;
+  std::shared_ptr<plugins::DecoupledShading> decoupled;
   std::unique_ptr<render::Renderer> renderer;
 };
 
@@ -97,7 +98,7 @@ nlohmann::json benchMaterials(gpu::Device& device, const std::string& scenePath,
   const auto loaded = loadSceneArgument(scenePath);
   const std::string sceneName = scenePath.empty() ? "default" : std::filesystem::path(scenePath).stem().string();
   const std::string tag = sceneName + "-" + std::to_string(width);
-  const auto& registry = materials::builtinMaterials();
+  const auto& registry = plugins::builtinRegistry();
 
   // Forward and decoupled of every material, adjacent: configs[2m], configs[2m + 1].
   std::vector<MaterialConfig> configs;
@@ -112,9 +113,9 @@ nlohmann::json benchMaterials(gpu::Device& device, const std::string& scenePath,
     s.scene = loaded.scene;
     for (auto& instance : s.scene.instances) instance.material = configs[c].material;
     const auto mode = configs[c].decoupled ? scene::ShadingMode::Decoupled : scene::ShadingMode::Forward;
-    s.decoupled = std::make_unique<plugins::DecoupledShading>(plugins::chooseShading(s.scene, mode),
-                                                              plugins::DecoupledSettings{.filter = 2});
-    s.renderer = std::make_unique<render::Renderer>(device, s.scene, s.decoupled->recipe(), registry);
+    auto made = plugins::makeDecoupledRenderer(device, s.scene, registry, mode, plugins::DecoupledSettings{.filter = 2});
+    s.decoupled = std::move(made.shading);
+    s.renderer = std::move(made.renderer);
   }
   const scene::Camera camera = sessions[0].renderer->camera({.width = width, .height = height});
   const render::RenderSettings view{.width = width, .height = height, .cameraOverride = camera};

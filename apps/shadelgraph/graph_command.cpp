@@ -18,6 +18,7 @@ void addGraphCommand(CLI::App& app) {
     std::string mode;
     bool dot = false, json = false, noAliasing = false;
     MaterialArgs materials;
+    FrameArgs frame;
   };
   static Args args;
   auto* cmd = app.add_subcommand("graph", "Print the compiled render graph of the frame 'render' would run");
@@ -29,11 +30,12 @@ void addGraphCommand(CLI::App& app) {
   cmd->add_flag("--json", args.json, "JSON")->excludes(dot);
   cmd->add_flag("--no-aliasing", args.noAliasing, "give every transient its own memory");
   addMaterialOptions(*cmd, args.materials);
+  addFrameOptions(*cmd, args.frame);
   cmd->callback([] {
     render::RenderSettings settings;
     parseSize(args.size, settings.width, settings.height);
     settings.aliasing = !args.noAliasing;
-    AppSession session(args.scene, args.mode, {}, args.materials);
+    AppSession session(args.scene, args.mode, {}, args.materials, args.frame);
     const auto plan = session.renderer->plan(settings);
     const std::string text = args.dot ? graph::toDot(plan) : args.json ? graph::toJson(plan) : graph::toText(plan);
     std::fwrite(text.data(), 1, text.size(), stdout);

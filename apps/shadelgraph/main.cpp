@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   sg::app::addGraphCommand(app);
   sg::app::addInspectCommand(app);
   sg::app::addBenchCommand(app);
+  sg::app::addPassesCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -35,6 +35,7 @@ struct RenderArgs {
   int frames = 2;
   bool noAliasing = false;
   MaterialArgs materials;
+  FrameArgs frameGraph;
 };
 
 void printTable(const gpu::FrameTimings& t, uint64_t transientBytes, const gpu::MemoryTotals& memory) {
@@ -134,7 +135,7 @@ void runRender(const RenderArgs& args) {
                                                         {"sheet", plugins::DebugView::Sheet}};
   decoupled.view = views.at(args.view);
   if (args.bias >= 0.0f) decoupled.fixedBias = args.bias;
-  AppSession session(args.scene, args.mode, decoupled, args.materials);
+  AppSession session(args.scene, args.mode, decoupled, args.materials, args.frameGraph);
   for (const auto& choice : session.decoupled->choices())
     if (!choice.decoupled && args.mode == "decoupled")
       std::printf("forward: %s (%s)\n", session.scene.instances[choice.instance].name.c_str(), choice.reason.c_str());
@@ -195,6 +196,7 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--frames", args.frames, "frames to render; the last is reported")->capture_default_str();
   cmd->add_flag("--no-aliasing", args.noAliasing, "give every transient its own memory");
   addMaterialOptions(*cmd, args.materials);
+  addFrameOptions(*cmd, args.frameGraph);
   cmd->callback([] { runRender(args); });
 }
 

@@ -53,8 +53,12 @@ void PassContext::beginRendering(std::initializer_list<ColorTarget> colors, std:
 }
 
 void PassContext::bind(const gpu::Pipeline& pipeline, std::initializer_list<gpu::DescriptorWrite> writes) const {
+  bind(pipeline, std::span<const gpu::DescriptorWrite>(writes.begin(), writes.size()));
+}
+
+void PassContext::bind(const gpu::Pipeline& pipeline, std::span<const gpu::DescriptorWrite> writes) const {
   vkCmdBindPipeline(cmd_, pipeline.bindPoint(), pipeline.handle());
-  if (writes.size()) descriptors_.bind(cmd_, pipeline, writes);
+  if (!writes.empty()) descriptors_.bind(cmd_, pipeline, writes);
 }
 
 }  // namespace sg

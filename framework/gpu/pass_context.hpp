@@ -49,6 +49,7 @@ class PassContext {
   void endRendering() const { vkCmdEndRendering(cmd_); }
   // Bind a pipeline and, in one call, its set-0 descriptors.
   void bind(const gpu::Pipeline& pipeline, std::initializer_list<gpu::DescriptorWrite> writes = {}) const;
+  void bind(const gpu::Pipeline& pipeline, std::span<const gpu::DescriptorWrite> writes) const;
 
  private:
   friend class gpu::GraphExecutor;

@@ -38,6 +38,14 @@ struct LayerTexture {
   bool srgb = false;           // colour data (decoded to linear when sampled)
 };
 
+// A frame resource (an image some pass of the frame writes: "ao.image", a
+// shadow map) the layer samples, bound as `uniform sampler2D <name>` in both
+// variants. Screen-space images are sampled at sgScreenUv(s.position).
+struct LayerFrameInput {
+  std::string name;      // the GLSL sampler's name
+  std::string resource;  // the frame resource
+};
+
 struct MaterialLayer {
   std::string name;      // unique, e.g. "height"; also the GLSL accessor name (letters, digits, '_', '-')
   std::string source;    // GLSL virtual path, e.g. "materials/height-normal/height.glsl"
@@ -52,6 +60,7 @@ struct MaterialLayer {
   LayerPaths paths = LayerPaths::Both;
   std::vector<std::pair<std::string, std::string>> parameters;  // #define name value, before the source
   std::vector<LayerTexture> textures;
+  std::vector<LayerFrameInput> frameInputs;
   std::string plugin;  // who registered it (set by the registry; named in errors)
 
   uint32_t radius() const {

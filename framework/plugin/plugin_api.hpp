@@ -4,12 +4,12 @@
 // `sg_plugin_info`, checks the ABI version and calls `registerPlugin`.
 //
 // The ABI version changes whenever Registry, MaterialLayer, MaterialStack or
-// PostPass change layout: a plugin built against other headers is refused.
+// PassPlugin or FrameDescription change layout: a plugin built against other headers is refused.
 #include <cstdint>
 
 #include <shadelgraph/plugin/registry.hpp>
 
-#define SG_PLUGIN_ABI_VERSION 2u
+#define SG_PLUGIN_ABI_VERSION 3u
 
 extern "C" {
 

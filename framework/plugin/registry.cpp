@@ -49,10 +49,52 @@ void Registry::addMaterial(MaterialStack material) {
   addNamed(materials_, std::move(material), "material");
 }
 
-void Registry::addPostPass(PostPass pass) {
+void Registry::addPass(PassPlugin pass) {
   pass.plugin = plugin_;
-  if (!pass.declare) throw PluginError(credit("post pass", pass.name, plugin_) + ": has no declare function");
-  postPasses_.push_back(std::move(pass));
+  if (!pass.declare) throw PluginError(credit("pass", pass.name, plugin_) + ": has no declare function");
+  for (const auto* list : {&pass.reads, &pass.writes})
+    for (const auto& resource : *list)
+      if (resource.empty()) throw PluginError(credit("pass", pass.name, plugin_) + ": a frame resource has no name");
+  addNamed(passes_, std::move(pass), "pass");
+}
+
+void Registry::addFrame(FrameDescription frame) {
+  if (!validName(frame.name))
+    throw PluginError("frame '" + frame.name + "' (plugin '" + plugin_ +
+                      "'): a name starts with a letter and has only letters, digits, '-' and '_'");
+  if (frames_.count(frame.name)) throw PluginError("frame '" + frame.name + "' (plugin '" + plugin_ + "'): already registered");
+  std::string name = frame.name;
+  frames_.emplace(std::move(name), std::move(frame));
+}
+
+const PassPlugin& Registry::pass(const std::string& name) const {
+  auto it = passes_.find(name);
+  if (it == passes_.end()) throw PluginError("no pass '" + name + "' is registered (known: " + join(passNames()) + ")");
+  return it->second;
+}
+
+std::vector<std::string> Registry::passNames() const {
+  std::vector<std::string> names;
+  for (const auto& [name, pass] : passes_) names.push_back(name);
+  return names;
+}
+
+const FrameDescription& Registry::frame(const std::string& name) const {
+  auto it = frames_.find(name);
+  if (it == frames_.end()) throw PluginError("no frame '" + name + "' is registered (known: " + join(frameNames()) + ")");
+  return it->second;
+}
+
+std::vector<std::string> Registry::frameNames() const {
+  std::vector<std::string> names;
+  for (const auto& [name, frame] : frames_) names.push_back(name);
+  return names;
+}
+
+std::string join(const std::vector<std::string>& names) {
+  std::string joined;
+  for (const auto& n : names) joined += (joined.empty() ? "" : ", ") + n;
+  return joined;
 }
 
 const MaterialLayer& Registry::layer(const std::string& name) const {

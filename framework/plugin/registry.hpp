@@ -1,8 +1,8 @@
 #pragma once
 // What plugins register and the renderer looks up: material layers, materials
-// (layer stacks), GLSL source directories and post-processing passes. The
-// built-ins (materials/builtin_materials.cpp) register here exactly like a
-// plugin loaded with --plugin.
+// (layer stacks), GLSL source directories, passes and frame descriptions. The
+// built-ins (materials/, plugins/forward, plugins/decoupled) register here
+// exactly like a plugin loaded with --plugin.
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -10,13 +10,10 @@
 #include <string>
 #include <vector>
 
-#include <shadelgraph/graph/handles.hpp>
+#include <shadelgraph/plugin/frame_description.hpp>
 #include <shadelgraph/plugin/material_layer.hpp>
 #include <shadelgraph/plugin/material_stack.hpp>
-
-namespace sg::graph {
-class RenderGraph;
-}
+#include <shadelgraph/plugin/pass_plugin.hpp>
 
 namespace sg::plugin {
 
@@ -28,14 +25,6 @@ class PluginError : public std::runtime_error {
 
 enum class ShadingPath : uint8_t { Decoupled, Forward };
 
-// A pass a plugin adds to every frame, on the HDR colour after shading and
-// before exposure and tonemapping. It returns the colour's new version.
-struct PostPass {
-  std::string name;
-  std::function<graph::ResourceHandle(graph::RenderGraph&, graph::ResourceHandle color)> declare;
-  std::string plugin;
-};
-
 class Registry {
  public:
   // What is registered from now on is credited to `plugin` (in error messages).
@@ -46,7 +35,10 @@ class Registry {
   void addMaterial(MaterialStack material);
   // GLSL sources by virtual path (a layer's `source` and its #includes).
   void addShaderDirectory(std::filesystem::path directory) { shaderDirectories_.push_back(std::move(directory)); }
-  void addPostPass(PostPass pass);
+  void addPass(PassPlugin pass);
+  // A frame description (its passes need not be registered yet: frames are
+  // checked when resolved).
+  void addFrame(FrameDescription frame);
 
   bool hasLayer(const std::string& name) const { return layers_.count(name) != 0; }
   bool hasMaterial(const std::string& name) const { return materials_.count(name) != 0; }
@@ -59,8 +51,15 @@ class Registry {
   bool runsIn(const MaterialStack& material, ShadingPath path) const;
 
   const std::vector<std::filesystem::path>& shaderDirectories() const { return shaderDirectories_; }
-  const std::vector<PostPass>& postPasses() const { return postPasses_; }
   std::vector<std::string> materialNames() const;
+
+  bool hasPass(const std::string& name) const { return passes_.count(name) != 0; }
+  const PassPlugin& pass(const std::string& name) const;
+  const std::map<std::string, PassPlugin>& passes() const { return passes_; }
+  std::vector<std::string> passNames() const;
+  bool hasFrame(const std::string& name) const { return frames_.count(name) != 0; }
+  const FrameDescription& frame(const std::string& name) const;
+  std::vector<std::string> frameNames() const;
 
   // Every inconsistency among what is registered: unknown layers in a stack,
   // a read of a layer that does not come earlier, a neighbourhood read in a
@@ -75,10 +74,13 @@ class Registry {
   std::map<std::string, MaterialLayer> layers_;
   std::map<std::string, MaterialStack> materials_;
   std::vector<std::filesystem::path> shaderDirectories_;
-  std::vector<PostPass> postPasses_;
+  std::map<std::string, PassPlugin> passes_;
+  std::map<std::string, FrameDescription> frames_;
 };
 
 // "blur-u" -> "blur_u": the layer's name as a GLSL identifier.
 std::string glslName(const std::string& layerName);
+// "a, b, c"
+std::string join(const std::vector<std::string>& names);
 
 }  // namespace sg::plugin

@@ -17,6 +17,20 @@ uint32_t declareTextures(std::ostringstream& out, const plugin::MaterialLayer& l
   return first;
 }
 
+// The frame resources a variant samples, set 0 from binding kBindLayerFrameInputs + `first` on.
+uint32_t declareFrameInputs(std::ostringstream& out, const plugin::MaterialLayer& layer, uint32_t first) {
+  for (const auto& input : layer.frameInputs)
+    out << "layout(set = 0, binding = " << kBindLayerFrameInputs + first++ << ") uniform sampler2D " << input.name
+        << ";\n";
+  return first;
+}
+
+void checkFrameInputCount(size_t count, const std::string& what, const std::string& plugin) {
+  if (count > kMaxLayerFrameInputs)
+    throw plugin::PluginError(what + " (plugin '" + plugin + "') samples more than " +
+                              std::to_string(kMaxLayerFrameInputs) + " frame resources");
+}
+
 void undefineParameters(std::ostringstream& out, const plugin::MaterialLayer& layer) {
   for (const auto& [name, value] : layer.parameters) out << "#undef " << name << "\n";
 }
@@ -52,7 +66,27 @@ std::string glslImageFormat(graph::Format format) {
   }
 }
 
+std::vector<const plugin::LayerFrameInput*> forwardFrameInputs(const plugin::Registry& registry,
+                                                               const plugin::MaterialStack& stack) {
+  std::vector<const plugin::LayerFrameInput*> inputs;
+  for (const auto& name : stack.layers)
+    for (const auto& input : registry.layer(name).frameInputs) inputs.push_back(&input);
+  return inputs;
+}
+
+graph::ResourceHandle frameInputImage(const std::map<std::string, graph::ResourceHandle>& images,
+                                      const plugin::MaterialLayer& layer, const plugin::LayerFrameInput& input) {
+  auto it = images.find(input.resource);
+  if (it == images.end())
+    throw plugin::PluginError("material layer '" + layer.name + "' (plugin '" + layer.plugin +
+                              "') samples frame resource '" + input.resource +
+                              "', which no earlier pass of the frame wrote (add a pass that writes it before the "
+                              "shading passes)");
+  return it->second;
+}
+
 gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
+  checkFrameInputCount(layer.frameInputs.size(), "material layer '" + layer.name + "'", layer.plugin);
   if (layer.reads.size() > kMaxLayerReads)
     throw plugin::PluginError("material layer '" + layer.name + "' (plugin '" + layer.plugin + "') reads more than " +
                               std::to_string(kMaxLayerReads) + " layers");
@@ -93,6 +127,7 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
   }
   out << kAccessorMacros;
   declareTextures(out, layer, 0);
+  declareFrameInputs(out, layer, 0);
   defineParameters(out, layer);
   out << "#include <" << layer.source << ">\n";
   undefineParameters(out, layer);
@@ -132,10 +167,12 @@ gpu::ShaderRequest forwardMaterialVariant(const plugin::Registry& registry, cons
         << "vec4 sgLayer_" << id << "(ivec2 offset) { return sgLayerValue_" << id << "; }\n";
   }
   out << kAccessorMacros;
-  uint32_t textureBinding = 0;
+  checkFrameInputCount(forwardFrameInputs(registry, stack).size(), "material '" + stack.name + "'", stack.plugin);
+  uint32_t textureBinding = 0, frameInputBinding = 0;
   for (const auto& name : stack.layers) {
     const auto& layer = registry.layer(name);
     textureBinding = declareTextures(out, layer, textureBinding);
+    frameInputBinding = declareFrameInputs(out, layer, frameInputBinding);
     defineParameters(out, layer);
     out << "#include <" << layer.source << ">\n";
     undefineParameters(out, layer);

@@ -7,7 +7,9 @@
 // generated text declares the layer images and accessors, includes the
 // author's file (so errors point into it), and calls the layer function.
 #include <cstdint>
+#include <map>
 #include <string>
+#include <vector>
 
 #include <shadelgraph/gpu/shader_compiler.hpp>
 #include <shadelgraph/plugin/registry.hpp>
@@ -22,10 +24,22 @@ inline constexpr uint32_t kBindLayerInputs = 14;               // + i: the i-th 
 inline constexpr uint32_t kMaxLayerReads = 8;
 inline constexpr uint32_t kBindLayerHistory = 22;              // persistent: last frame's image of this layer
 inline constexpr uint32_t kBindPreviousRemap = 23;             // persistent: last frame's remap table
+// + i: the i-th frame resource the layer (decoupled) or the material's layers
+// (forward, in stack order) sample; set 0 in both variants.
+inline constexpr uint32_t kBindLayerFrameInputs = 24;
+inline constexpr uint32_t kMaxLayerFrameInputs = 4;
 
 // GLSL image format qualifier of a layer image ("rgba16f"); throws for
 // formats a layer cannot write.
 std::string glslImageFormat(graph::Format format);
+
+// The frame resources the forward variant of `stack` samples, in binding order.
+std::vector<const plugin::LayerFrameInput*> forwardFrameInputs(const plugin::Registry& registry,
+                                                               const plugin::MaterialStack& stack);
+// The frame resource `input` of `layer` among `images` (a frame's resources);
+// throws naming the layer, its plugin and the resource when no pass wrote it.
+graph::ResourceHandle frameInputImage(const std::map<std::string, graph::ResourceHandle>& images,
+                                      const plugin::MaterialLayer& layer, const plugin::LayerFrameInput& input);
 
 gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer);
 // Every layer of `stack` must run forward (Registry::materialFor picks the fallback).

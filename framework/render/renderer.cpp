@@ -2,38 +2,55 @@
 
 #include <shadelgraph/gpu/error.hpp>
 #include <shadelgraph/render/frame_uniforms.hpp>
+#include <shadelgraph/render/frustum.hpp>
+#include <shadelgraph/scene/bounds.hpp>
 
 namespace sg::render {
 
-// One frame's declaration: the graph holds callbacks that refer to `view`.
+// One frame's declaration: the graph holds callbacks that refer to `view`,
+// `inputs` and the draw lists in `context`.
 struct Renderer::Frame {
   SceneView view;
+  FrameInputs inputs;
   graph::RenderGraph graph;
+  std::optional<FrameContext> context;
   graph::ResourceHandle output;
 };
 
-Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, FrameRecipe recipe,
-                   const plugin::Registry& materials)
+Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, const plugin::Registry& registry,
+                   plugin::ResolvedFrame frame)
     : device_(device),
       scene_(scene),
-      recipe_(std::move(recipe)),
-      materials_(materials),
-      layerTextures_(device, materials),
+      registry_(registry),
+      frame_(std::move(frame)),
+      layerTextures_(device, registry),
       gpuScene_(device.context(), device.memory(), scene),
       frameUniforms_(device.context(), device.memory(),
                      {sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryLocation::Upload,
                       "frame uniforms", "frame"}),
       executor_(device) {
-  materials_.check();
+  registry_.check();
+  for (const auto& instance : scene.instances) modes_.push_back(instance.shading);
+  for (const auto& draw : gpuScene_.draws()) {
+    const auto world = scene::transformBounds(scene.meshes[size_t(scene.instances[draw.instance].mesh)].bounds, draw.world);
+    drawSpheres_.emplace_back(world.center(), world.radius());
+  }
   for (const auto& draw : gpuScene_.draws())
-    if (!materials_.hasMaterial(draw.materialStack))
+    if (!registry_.hasMaterial(draw.materialStack))
       throw plugin::PluginError("object '" + scene.instances[draw.instance].name + "' uses material '" +
                                 draw.materialStack + "', which no plugin registered");
   // Plugins' GLSL (their layers' sources) by virtual path.
-  for (const auto& directory : materials_.shaderDirectories()) device_.shaders().addDirectory(directory);
+  for (const auto& directory : registry_.shaderDirectories()) device_.shaders().addDirectory(directory);
 }
 
 Renderer::~Renderer() = default;
+
+void Renderer::setObjectMode(uint32_t instance, scene::ShadingMode mode) {
+  if (instance >= modes_.size())
+    throw std::out_of_range("object " + std::to_string(instance) + ": the scene has " + std::to_string(modes_.size()) +
+                            " objects");
+  modes_[instance] = mode;
+}
 
 scene::Camera Renderer::camera(const RenderSettings& settings) const {
   if (settings.cameraOverride) return *settings.cameraOverride;
@@ -60,16 +77,37 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
                                    .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                    .name = "output", .category = "output"});
   }
-  auto frame = std::make_unique<Frame>(Frame{{gpuScene_, frameUniforms_, gpuScene_.allDraws(), materials_, layerTextures_}, {}, {}});
+  const float focal = cam.projection == scene::Projection::Perspective
+                          ? std::abs(uniforms.projection[1][1]) * 0.5f * float(settings.height)
+                          : 0.0f;
+  auto frame = std::make_unique<Frame>(Frame{
+      {gpuScene_, frameUniforms_, gpuScene_.allDraws(), registry_, layerTextures_},
+      {scene_, device_, executor_, modes_, frameNumber_++, cam.position(), focal, uniforms.viewProjection,
+       settings.width, settings.height},
+      {}, {}, {}});
   frame->output = frame->graph.importImage(
       "output", {.format = graph::Format::RGBA8Srgb, .size = graph::Size::absolute(settings.width, settings.height)},
       graph::ImportedState{graph::Layout::Undefined},
       graph::FinalState{graph::Layout::TransferSrc, graph::PipelineStage::Transfer, graph::AccessFlag::TransferRead});
-  const float focal = cam.projection == scene::Projection::Perspective
-                          ? std::abs(uniforms.projection[1][1]) * 0.5f * float(settings.height)
-                          : 0.0f;
-  const auto result = recipe_(frame->graph, {frame->view, scene_, device_, executor_, cam.position(), focal,
-                                             uniforms.viewProjection, settings.width, settings.height, frame->output});
+  FrameContext& context = frame->context.emplace(frame->graph, frame->inputs, frame->view, states_);
+  for (uint32_t d = 0; d < drawSpheres_.size(); ++d)
+    if (sphereInFrustum(uniforms.viewProjection, drawSpheres_[d])) context.draws().forward.push_back(d);
+  context.write(plugin::kOutputResource, frame->output);
+  // Packages first settle what they take (prepare), then every pass declares.
+  for (const auto& pass : frame_.passes)
+    if (pass.pass->prepare) {
+      context.setPass(&pass);
+      pass.pass->prepare(context);
+    }
+  for (const auto& pass : frame_.passes) {
+    context.setPass(&pass);
+    pass.pass->declare(context);
+  }
+  context.setPass(nullptr);
+  const auto result = context.read(plugin::kOutputResource);
+  if (result == frame->output)
+    throw plugin::FrameError("frame '" + frame_.name + "' writes nothing to '" + plugin::kOutputResource +
+                             "' (it needs a pass such as tonemap)");
   frame->graph.markOutput(result);
   return frame;
 }

@@ -1,13 +1,17 @@
 #pragma once
-// Renders frames of one scene through a frame recipe: uploads the scene, owns
-// the output image and the graph executor, and reads the result back.
+// Renders frames of one scene through a frame description: uploads the scene,
+// keeps each object's shading mode, turns the resolved frame into render-graph
+// passes every frame (each registered pass's prepare, then declare), owns the
+// output image and the graph executor, and reads the result back.
+#include <map>
 #include <memory>
 #include <optional>
 
 #include <shadelgraph/gpu/device.hpp>
 #include <shadelgraph/gpu/graph_executor.hpp>
 #include <shadelgraph/gpu/readback.hpp>
-#include <shadelgraph/render/frame_recipe.hpp>
+#include <shadelgraph/plugin/frame_description.hpp>
+#include <shadelgraph/render/frame_context.hpp>
 #include <shadelgraph/render/gpu_scene.hpp>
 #include <shadelgraph/render/layer_textures.hpp>
 #include <shadelgraph/scene/scene.hpp>
@@ -30,9 +34,18 @@ struct FrameResult {
 
 class Renderer {
  public:
-  // `materials`: the registered layers and materials the scene's objects name.
-  Renderer(gpu::Device& device, const scene::Scene& scene, FrameRecipe recipe, const plugin::Registry& materials);
+  // `registry`: the passes the frame names and the materials the scene's objects name.
+  Renderer(gpu::Device& device, const scene::Scene& scene, const plugin::Registry& registry,
+           plugin::ResolvedFrame frame);
   ~Renderer();
+
+  void setFrame(plugin::ResolvedFrame frame) { frame_ = std::move(frame); }
+  const plugin::ResolvedFrame& frame() const { return frame_; }
+  // State a package's passes share across frames, found by FrameContext::state.
+  void provideState(const std::string& key, std::shared_ptr<void> state) { states_[key] = std::move(state); }
+  // An object's requested shading mode, from the next frame on (initially the scene's).
+  void setObjectMode(uint32_t instance, scene::ShadingMode mode);
+  const std::vector<scene::ShadingMode>& objectModes() const { return modes_; }
 
   // Declares and compiles the frame `render` would run (with real memory requirements).
   graph::CompiledPlan plan(const RenderSettings& settings);
@@ -46,8 +59,12 @@ class Renderer {
 
   gpu::Device& device_;
   const scene::Scene& scene_;
-  FrameRecipe recipe_;
-  const plugin::Registry& materials_;
+  const plugin::Registry& registry_;
+  plugin::ResolvedFrame frame_;
+  std::map<std::string, std::shared_ptr<void>> states_;
+  std::vector<scene::ShadingMode> modes_;
+  std::vector<glm::vec4> drawSpheres_;  // world bounding sphere of every draw, for frustum culling
+  uint64_t frameNumber_ = 0;
   LayerTextures layerTextures_;
   GpuScene gpuScene_;
   gpu::Buffer frameUniforms_;

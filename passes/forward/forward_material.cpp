@@ -1,6 +1,7 @@
 #include "forward_material.hpp"
 
 #include <algorithm>
+#include <set>
 
 #include <shadelgraph/render/material_variants.hpp>
 
@@ -13,10 +14,13 @@ const gpu::Pipeline& forwardPipeline(PassContext& ctx, const render::SceneView& 
   const auto describe = [&] {
     std::vector<VkDescriptorSetLayout> sets{view.scene.materialSetLayout()};
     if (textures) sets.push_back(textures->layout());
+    std::vector<gpu::DescriptorBinding> bindings{{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
+    for (uint32_t i = 0; i < render::forwardFrameInputs(view.materials, material).size(); ++i)
+      bindings.push_back({render::kBindLayerFrameInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
     return gpu::GraphicsPipelineDesc{
         .vertex = {.path = "passes/forward/forward.vert"},
         .fragment = render::forwardMaterialVariant(view.materials, material),
-        .layout = {.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}},
+        .layout = {.bindings = bindings,
                    .extraSets = sets,
                    .pushConstantBytes = sizeof(render::ObjectConstants)},
         .vertexInput = render::sceneVertexInput(),
@@ -34,7 +38,35 @@ const gpu::Pipeline& forwardPipeline(PassContext& ctx, const render::SceneView& 
   }
 }
 
+// The frame uniforms and the frame resources the material's layers sample.
+std::vector<gpu::DescriptorWrite> forwardDescriptors(PassContext& ctx, const render::SceneView& view,
+                                                     const plugin::MaterialStack& material) {
+  std::vector<gpu::DescriptorWrite> writes{{0, gpu::BufferBinding{view.frameUniforms.handle()}}};
+  uint32_t binding = render::kBindLayerFrameInputs;
+  for (const auto& name : material.layers) {
+    const auto& layer = view.materials.layer(name);
+    for (const auto& input : layer.frameInputs) {
+      const auto image = render::frameInputImage(view.frameImages, layer, input);
+      writes.push_back({binding++, gpu::ImageBinding{ctx.image(image).view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                                     ctx.device().nearestSampler()}});
+    }
+  }
+  return writes;
+}
+
 }  // namespace
+
+void readFrameInputs(graph::Pass& pass, const render::SceneView& view, std::span<const uint32_t> draws) {
+  std::set<const plugin::MaterialStack*> materials;
+  for (uint32_t d : draws) materials.insert(&forwardMaterial(view, d));
+  for (const auto* material : materials)
+    for (const auto& name : material->layers) {
+      const auto& layer = view.materials.layer(name);
+      for (const auto& input : layer.frameInputs)
+        pass.read(render::frameInputImage(view.frameImages, layer, input), graph::Access::Sampled,
+                  graph::ShaderStage::Fragment);
+    }
+}
 
 const plugin::MaterialStack& forwardMaterial(const render::SceneView& view, uint32_t draw) {
   return view.materials.materialFor(view.scene.draws()[draw].materialStack, plugin::ShadingPath::Forward);
@@ -60,7 +92,8 @@ void drawForward(PassContext& ctx, const render::SceneView& view, std::span<cons
     const auto& material = forwardMaterial(view, d);
     if (&material != boundMaterial) {
       pipeline = &forwardPipeline(ctx, view, material, blend);
-      ctx.bind(*pipeline, {{0, gpu::BufferBinding{view.frameUniforms.handle()}}});
+      const auto writes = forwardDescriptors(ctx, view, material);
+      ctx.bind(*pipeline, writes);
       if (const render::TextureSet* textures = view.layerTextures.forMaterial(material)) {
         VkDescriptorSet set = textures->set();
         vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->layout(), render::kLayerTextureSet,

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <shadelgraph/gpu/pass_context.hpp>
+#include <shadelgraph/graph/pass.hpp>
 #include <shadelgraph/render/scene_view.hpp>
 
 namespace sg::passes {
@@ -18,6 +19,9 @@ std::vector<uint32_t> drawsWithAlphaMode(const render::SceneView& view, scene::A
 // changes) and descriptor set. Opaque and masked draws write depth; blended
 // ones test it and blend "over".
 void drawForward(PassContext& ctx, const render::SceneView& view, std::span<const uint32_t> draws, bool blend);
+// Declares that `pass` samples the frame resources the forward variants of
+// these draws' materials read (MaterialLayer::frameInputs).
+void readFrameInputs(graph::Pass& pass, const render::SceneView& view, std::span<const uint32_t> draws);
 // Does the view hold a draw with this alpha mode?
 bool hasAlphaMode(const render::SceneView& view, scene::AlphaMode mode);
 

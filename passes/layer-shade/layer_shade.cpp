@@ -24,6 +24,8 @@ const gpu::Pipeline& layerPipeline(PassContext& ctx, const DecoupledFrame& frame
     layout.bindings.push_back({kBindLayerOutput, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
     for (uint32_t i = 0; i < layer.reads.size(); ++i)
       layout.bindings.push_back({kBindLayerInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    for (uint32_t i = 0; i < layer.frameInputs.size(); ++i)
+      layout.bindings.push_back({kBindLayerFrameInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
     if (layer.persistent) {
       layout.bindings.push_back({kBindLayerHistory, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
       layout.bindings.push_back({kBindPreviousRemap, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
@@ -49,6 +51,7 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
   std::map<graph::ResourceHandle, graph::ResourceHandle> written;  // each output once, however many steps write it
   for (auto& step : steps) {
     for (const auto input : step.inputs) pass.read(input, graph::Access::Sampled);
+    for (const auto input : step.frameInputs) pass.read(input, graph::Access::Sampled);
     if (step.layer->persistent) {
       pass.read(step.history, graph::Access::Sampled);
       persistent = true;
@@ -75,6 +78,8 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
       std::vector<gpu::DescriptorWrite> writes{
           {kBindLayerOutput, gpu::ImageBinding{ctx.image(step.output).view(), VK_IMAGE_LAYOUT_GENERAL, VK_NULL_HANDLE}}};
       for (uint32_t i = 0; i < step.inputs.size(); ++i) writes.push_back(sampled(kBindLayerInputs + i, step.inputs[i]));
+      for (uint32_t i = 0; i < step.frameInputs.size(); ++i)
+        writes.push_back(sampled(kBindLayerFrameInputs + i, step.frameInputs[i]));
       if (step.layer->persistent) {
         writes.push_back(sampled(kBindLayerHistory, step.history));
         writes.push_back({kBindPreviousRemap, gpu::BufferBinding{ctx.buffer(history.previousRemap).handle()}});

@@ -14,6 +14,7 @@ struct LayerShadeStep {
   std::vector<uint32_t> objects;               // decoupled object indices: one indirect dispatch each
   graph::ResourceHandle output;                // its own layer image, or the shaded colour
   std::vector<graph::ResourceHandle> inputs;   // the images of layer->reads, in order
+  std::vector<graph::ResourceHandle> frameInputs;  // the frame resources of layer->frameInputs, in order
   graph::ResourceHandle history;               // persistent: last frame's image of this layer
   uint32_t persistentSlot = 0;                 // persistent: its layer_reuse counters
 };

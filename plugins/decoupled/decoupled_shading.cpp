@@ -7,27 +7,14 @@
 
 #include <shadelgraph/gpu/pass_context.hpp>
 #include <shadelgraph/render/decoupled_frame.hpp>
+#include <shadelgraph/render/material_variants.hpp>
+#include <shadelgraph/scene/bounds.hpp>
 #include <shadelgraph/scene/uv_chart.hpp>
 #include <shadelgraph/shadel/id_map_cache.hpp>
 #include <shadelgraph/shadel/level0_resolution.hpp>
 #include <shadelgraph/shadel/shadel_gpu_tables.hpp>
 
-#include "composite/composite.hpp"
-#include "debug-views/debug_views.hpp"
-#include "exposure/exposure.hpp"
-#include "alpha-blend/alpha_blend.hpp"
-#include "alpha-mask/alpha_mask.hpp"
-#include "forward/forward.hpp"
-#include "forward/forward_material.hpp"
 #include "layer-shade/layer_shade.hpp"
-#include "shadel-allocate/shadel_allocate.hpp"
-#include "shadel-clear/shadel_clear.hpp"
-#include "shadel-mark/shadel_mark.hpp"
-#include "support-expand/support_expand.hpp"
-#include "tonemap/tonemap.hpp"
-#include "work-aggregate/work_aggregate.hpp"
-#include "frustum.hpp"
-#include "z-prepass/z_prepass.hpp"
 
 namespace sg::plugins {
 namespace {
@@ -50,60 +37,81 @@ DecoupledShading::DecoupledShading(std::vector<ShadingChoice> choices, Decoupled
 
 DecoupledShading::~DecoupledShading() = default;
 
-render::FrameRecipe DecoupledShading::recipe() {
-  return [this](graph::RenderGraph& graph, const render::FrameInputs& inputs) { return declare(graph, inputs); };
+void DecoupledShading::createTables(gpu::Device& device) {
+  space_ = std::make_unique<shadel::ShadelSpace>(shadel::ShadelSpaceConfig{settings_.sheetSizeLog2});
+  const uint64_t entriesPerSide = uint64_t(1) << (settings_.sheetSizeLog2 - 6);
+  remapBytes_ = entriesPerSide * entriesPerSide * sizeof(shadel::RemapEntry);
+  readback_ = gpu::Buffer(device.context(), device.memory(),
+                          {sizeof(ShadeCounters), VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryLocation::Readback,
+                           "shade counters readback", "readback"});
+  std::memset(readback_.mapped(), 0, sizeof(ShadeCounters));
+  params_ = gpu::Buffer(device.context(), device.memory(),
+                        {sizeof(DecoupledParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryLocation::Upload,
+                         "decoupled params", "decoupled tables"});
 }
 
-void DecoupledShading::initialize(const render::FrameInputs& in) {
-  gpu::Device& device = in.device;
-  const auto& draws = in.view.scene.draws();
-  space_ = std::make_unique<shadel::ShadelSpace>(shadel::ShadelSpaceConfig{settings_.sheetSizeLog2});
-  shadel::IdMapCache cache;
-  std::map<int, std::pair<shadel::DetailLevels, uint32_t>> maps;  // by mesh: its levels and ID-map offset
-  std::vector<uint32_t> idTexels;
-  std::vector<DecoupledObject> objects;
-  const plugin::Registry& materials = in.view.materials;
-  for (uint32_t d = 0; d < draws.size(); ++d) {
-    ShadingChoice& choice = choices_[draws[d].instance];
-    const scene::Mesh& mesh = in.scene.meshes[size_t(in.scene.instances[choice.instance].mesh)];
-    const scene::Bounds world = scene::transformBounds(mesh.bounds, draws[d].world);
-    drawSpheres_.emplace_back(world.center(), world.radius());
-    const plugin::MaterialStack& material = materials.material(draws[d].materialStack);
-    if (choice.decoupled && !materials.runsIn(material, plugin::ShadingPath::Decoupled)) {
-      choice.decoupled = false;
-      choice.reason = "material '" + material.name + "' has forward-only layers";
+void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
+  const auto& in = ctx.inputs();
+  const auto& draws = ctx.gpuScene().draws();
+  const plugin::Registry& materials = ctx.registry();
+  if (slots_.empty()) {
+    slots_.resize(draws.size());
+    identity_.resize(draws.size());
+    for (uint32_t d = 0; d < draws.size(); ++d) {
+      identity_[d] = d;
+      const scene::Mesh& mesh = in.scene.meshes[size_t(in.scene.instances[draws[d].instance].mesh)];
+      const scene::Bounds world = scene::transformBounds(mesh.bounds, draws[d].world);
+      drawSpheres_.emplace_back(world.center(), world.radius());
     }
-    if (!choice.decoupled) {
-      forwardDraws_.push_back(d);
+  }
+  shadel::IdMapCache cache;
+  for (uint32_t d = 0; d < draws.size(); ++d) {
+    const auto& draw = draws[d];
+    const ShadingChoice& choice = choices_[draw.instance];
+    ObjectSlot& slot = slots_[d];
+    slot.instance = draw.instance;
+    const plugin::MaterialStack& material = materials.material(draw.materialStack);
+    const bool wanted = in.objectModes[draw.instance] != scene::ShadingMode::Forward;
+    slot.reason = !wanted                ? "forward by request"
+                  : !choice.eligible     ? choice.reason
+                  : !materials.runsIn(material, plugin::ShadingPath::Decoupled)
+                      ? "material '" + material.name + "' has forward-only layers"
+                      : "";
+    const bool want = slot.reason.empty();
+    if (want == slot.allocated) continue;
+    tablesDirty_ = true;
+    if (!want) {
+      space_->release(d);
+      slot.allocated = false;
+      --allocatedObjects_;
       continue;
     }
-    const int meshIndex = in.scene.instances[choice.instance].mesh;
-    auto it = maps.find(meshIndex);
-    if (it == maps.end()) {
+    const int meshIndex = in.scene.instances[draw.instance].mesh;
+    auto it = idMaps_.find(meshIndex);
+    if (it == idMaps_.end()) {
+      const scene::Mesh& mesh = in.scene.meshes[size_t(meshIndex)];
       const scene::ChartVerdict chart = scene::chooseShadingChart(mesh);
       const uint32_t level0 = shadel::chooseLevel0Size(mesh, chart, shadel::meshTextureDensity(in.scene, mesh));
       auto map = cache.loadOrBake(mesh, chart, {.level0Size = level0});
-      const auto offset = uint32_t(idTexels.size());
-      idTexels.insert(idTexels.end(), map.texels.begin(), map.texels.end());
-      it = maps.emplace(meshIndex, std::pair{map.levels, offset}).first;
+      const auto offset = uint32_t(idTexels_.size());
+      idTexels_.insert(idTexels_.end(), map.texels.begin(), map.texels.end());
+      it = idMaps_.emplace(meshIndex, std::pair{map.levels, offset}).first;
     }
     const auto& [levels, offset] = it->second;
-    const auto object = uint32_t(objects.size());
-    const auto result = space_->allocate(object, levels);
+    const auto result = space_->allocate(d, levels);
     if (!result.ok()) {
-      choice.decoupled = false;
-      choice.reason = "no shadel space: " + result.message;
-      forwardDraws_.push_back(d);
+      slot.reason = "no shadel space: " + result.message;
       continue;
     }
-    const auto& draw = draws[d];
-    objects.push_back({draw.world, draw.firstIndex, draw.vertexOffset, draw.indexCount / 3, draw.material, offset,
-                       uint32_t(choice.uvSet), choice.tileOffset,
-                       supportRadius(materials, material) > 0 ? 1u : 0u, {}});
-    objectMaterials_.push_back(material.name);
-    decoupledDraws_.push_back(d);
-    objectAutomatic_.push_back(choice.automatic);
+    slot.allocated = true;
+    ++allocatedObjects_;
+    slot.record = {draw.world, draw.firstIndex, draw.vertexOffset, draw.indexCount / 3, draw.material, offset,
+                   uint32_t(choice.uvSet), choice.tileOffset, supportRadius(materials, material) > 0 ? 1u : 0u, {}};
   }
+}
+
+void DecoupledShading::uploadTables(gpu::Device& device) {
+  tablesDirty_ = false;
   const auto tables = shadel::buildGpuTables(*space_);
   // The occupancy view shows the square around every allocated level.
   glm::uvec2 lo(~0u), hi(0u);
@@ -115,53 +123,57 @@ void DecoupledShading::initialize(const render::FrameInputs& in) {
     sheetRegionOrigin_ = lo;
     sheetRegionSize_ = glm::uvec2(std::max(hi.x - lo.x, hi.y - lo.y));
   }
+  std::vector<DecoupledObject> objects;
+  for (const auto& slot : slots_) objects.push_back(slot.record);
   ownedEntryCount_ = uint32_t(tables.ownedEntries.size());
-  idMapBytes_ = idTexels.size() * 4;
+  idMapBytes_ = idTexels_.size() * 4;
+  // Earlier frames have completed (the executor waits for each), so the old tables are free.
   objects_ = upload(device, objects, "decoupled objects");
   shadelInstances_ = upload(device, tables.instances, "shadel instances");
   levelRects_ = upload(device, tables.levelRects, "level rects");
   ownedEntries_ = upload(device, tables.ownedEntries, "owned remap entries");
-  idMaps_ = upload(device, idTexels, "triangle-ID maps");
-  const uint64_t entriesPerSide = uint64_t(1) << (settings_.sheetSizeLog2 - 6);
-  remapBytes_ = entriesPerSide * entriesPerSide * sizeof(shadel::RemapEntry);
-  readback_ = gpu::Buffer(device.context(), device.memory(),
-                          {sizeof(ShadeCounters), VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryLocation::Readback,
-                           "shade counters readback", "readback"});
-  std::memset(readback_.mapped(), 0, sizeof(ShadeCounters));
-  params_ = gpu::Buffer(device.context(), device.memory(),
-                        {sizeof(DecoupledParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryLocation::Upload,
-                         "decoupled params", "decoupled tables"});
-  initialized_ = true;
+  idMapBuffer_ = upload(device, idTexels_, "triangle-ID maps");
+}
+
+std::string DecoupledShading::forwardReason(uint32_t instance) const {
+  for (uint32_t d = 0; d < slots_.size(); ++d)
+    if (slots_[d].instance == instance) return slots_[d].reason;
+  return choices_.at(instance).reason;  // no frame yet
 }
 
 // Objects in mode auto that are tiny on screen this frame go forward; they
 // keep their shadel space and simply mark nothing. Objects outside the view
-// are not shaded at all (nor their materials compiled).
-void DecoupledShading::selectFrameObjects(const render::FrameInputs& in) {
-  frameDraws_.clear();
+// are not in the frame's draws at all (nor their materials compiled).
+void DecoupledShading::selectFrameObjects(render::FrameContext& ctx) {
   frameObjects_.clear();
   frameMaterials_.clear();
-  frameForwardDraws_.clear();
-  for (const uint32_t d : forwardDraws_)
-    if (sphereInFrustum(in.viewProjection, drawSpheres_[d])) frameForwardDraws_.push_back(d);
-  for (uint32_t object = 0; object < uint32_t(decoupledDraws_.size()); ++object) {
-    const glm::vec4 sphere = drawSpheres_[decoupledDraws_[object]];
-    if (!sphereInFrustum(in.viewProjection, sphere)) continue;
+  const auto& in = ctx.inputs();
+  const auto& draws = ctx.gpuScene().draws();
+  std::vector<uint32_t> forward;
+  for (const uint32_t d : ctx.draws().forward) {
+    const glm::vec4 sphere = drawSpheres_[d];
     const float distance = glm::distance(glm::vec3(sphere), in.cameraPosition);
-    const bool tiny = objectAutomatic_[object] && in.pixelsPerUnitAtUnitDistance > 0.0f && distance > sphere.w &&
+    const bool automatic = in.objectModes[draws[d].instance] == scene::ShadingMode::Auto;
+    const bool tiny = automatic && in.pixelsPerUnitAtUnitDistance > 0.0f && distance > sphere.w &&
                       sphere.w * in.pixelsPerUnitAtUnitDistance / distance < kTinyObjectPixels;
-    if (tiny) {
-      frameForwardDraws_.push_back(decoupledDraws_[object]);
+    if (!slots_[d].allocated || tiny) {
+      forward.push_back(d);
     } else {
-      frameDraws_.push_back(decoupledDraws_[object]);
-      frameObjects_.push_back(object);
-      frameMaterials_.push_back(objectMaterials_[object]);
+      frameObjects_.push_back(d);
+      frameMaterials_.push_back(draws[d].materialStack);
     }
   }
+  ctx.draws().forward = std::move(forward);
+  ctx.draws().decoupled = frameObjects_;
 }
 
-graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const render::FrameInputs& in) {
-  if (!initialized_) initialize(in);
+void DecoupledShading::prepare(render::FrameContext& ctx) {
+  const auto& in = ctx.inputs();
+  if (preparedFrame_ == in.frameNumber) return;
+  preparedFrame_ = in.frameNumber;
+  if (!space_) createTables(in.device);
+  syncObjects(ctx);
+  if (tablesDirty_) uploadTables(in.device);
   // The adjuster reads the counters of the frame before (complete: frames are
   // waited for), which was rendered with lastFrameBias_.
   if (frames_ > 0 && !settings_.fixedBias) {
@@ -171,10 +183,10 @@ graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const
   lastFrameBias_ = bias_;
   ++frames_;
 
-  const auto objectCount = uint32_t(decoupledDraws_.size());
-
-  selectFrameObjects(in);
-  layerPlan_ = planLayers(in.view.materials, frameObjects_, frameMaterials_);
+  const auto objectCount = uint32_t(slots_.size());
+  selectFrameObjects(ctx);
+  const plugin::Registry& materials = ctx.registry();
+  layerPlan_ = planLayers(materials, frameObjects_, frameMaterials_);
 
   // An entry takes up to 64 chunks from one partition at once: keep partitions
   // at least 4 entries large, so a small storage does not fail every big entry.
@@ -189,71 +201,71 @@ graph::ResourceHandle DecoupledShading::declare(graph::RenderGraph& graph, const
                                ownedEntryCount_, objectCount, storage_.capacityChunks(),
                                storage_.counterCount, {}};
   params_.write(&params, sizeof params);
-  render::SceneView forwardView{in.view.scene, in.view.frameUniforms, frameForwardDraws_, in.view.materials,
-                                in.view.layerTextures};
-  render::DecoupledFrame frame{.view = {in.view.scene, in.view.frameUniforms, frameDraws_, in.view.materials,
-                                                        in.view.layerTextures},
-                               .objectIds = frameObjects_,
-                               .objectDraws = decoupledDraws_,
-                               .params = params_, .objects = objects_, .shadelInstances = shadelInstances_,
-                               .levelRects = levelRects_, .ownedEntries = ownedEntries_, .idMaps = idMaps_,
-                               .ownedEntryCount = ownedEntryCount_, .objectCount = objectCount,
-                               .filter = settings_.filter,
-                               .levelView = settings_.view == DebugView::Level};
-  const auto history = history_.declare(graph, in.device, in.executor, in.view.materials, layerPlan_.persistent,
-                                        storage_.widthTexels(), storage_.heightTexels(), remapBytes_, frames_);
-  frame.remap = history.remap;
+  graph::RenderGraph& graph = ctx.graph();
+  frame_.reset();
+  if (!hasObjects()) return;
+  frame_.emplace(render::DecoupledFrame{.view = ctx.view(frameObjects_),
+                                        .objectIds = frameObjects_,
+                                        .objectDraws = identity_,
+                                        .params = params_, .objects = objects_, .shadelInstances = shadelInstances_,
+                                        .levelRects = levelRects_, .ownedEntries = ownedEntries_, .idMaps = idMapBuffer_,
+                                        .ownedEntryCount = ownedEntryCount_, .objectCount = objectCount,
+                                        .filter = settings_.filter,
+                                        .levelView = settings_.view == DebugView::Level});
+  render::DecoupledFrame& frame = *frame_;
+  declaredHistory_ = history_.declare(graph, in.device, in.executor, materials, layerPlan_.persistent,
+                                      storage_.widthTexels(), storage_.heightTexels(), remapBytes_, frames_);
+  frame.remap = declaredHistory_.remap;
   frame.counters = graph.createBuffer("shade counters", {.size = sizeof(ShadeCounters)});
   frame.work = graph.createBuffer("work", {.size = workBufferBytes(objectCount, storage_.capacityChunks())});
   frame.args = graph.createBuffer("dispatch args", {.size = std::max<uint64_t>(12ull * objectCount, 12)});
   frame.shadedColor = graph.createImage(
       "shade storage", {.format = graph::Format::RGBA16F,
                         .size = graph::Size::absolute(storage_.widthTexels(), storage_.heightTexels())});
-  auto readback = graph.importBuffer("shade counters readback", {.size = sizeof(ShadeCounters)}, {},
-                                     {graph::Layout::Undefined, graph::PipelineStage::AllCommands, graph::AccessFlag::None});
-  in.executor.bindBuffer(readback, readback_);
-
-  passes::ForwardTargets targets;
-  targets.depth = graph.createImage("depth", {.format = graph::Format::D32F});
-  targets.color = graph.createImage("hdr", {.format = graph::Format::RGBA16F});
-  targets.depth = passes::addZPrepass(graph, in.view, targets.depth);
-  // With objects allocated but none shaded this frame, the counters are
-  // still cleared and read back (the adjuster and stats see a zero frame).
-  const bool shading = !frameObjects_.empty();
-  if (objectCount) passes::addShadelClear(graph, frame);
-  if (shading) {
-    passes::addShadelMark(graph, frame, targets.depth);
-    if (layerPlan_.needsSupport) passes::addSupportExpand(graph, frame);
-    passes::addShadelAllocate(graph, frame);
-    passes::addWorkAggregate(graph, frame);
-    addLayerPasses(graph, frame, in.view.materials, history);
-  }
-  targets = passes::addForwardOpaque(graph, forwardView, targets);
-  if (passes::hasAlphaMode(forwardView, scene::AlphaMode::Mask)) targets = passes::addAlphaMask(graph, forwardView, targets);
-  if (shading) targets.color = passes::addComposite(graph, frame, targets.color, targets.depth);
-  if (objectCount) {
-    auto& copy = graph.addPass("counters-readback", graph::QueueClass::Graphics, graph::PassKind::Transfer);
-    copy.read(frame.counters, graph::Access::TransferSrc);
-    readback = copy.write(readback, graph::Access::TransferDst);
-    copy.execute([counters = frame.counters, readback](PassContext& ctx) {
-      const VkBufferCopy region{0, 0, sizeof(ShadeCounters)};
-      vkCmdCopyBuffer(ctx.cmd(), ctx.buffer(counters).handle(), ctx.buffer(readback).handle(), 1, &region);
-    });
-  }
-  if (passes::hasAlphaMode(forwardView, scene::AlphaMode::Blend))
-    targets.color = passes::addAlphaBlend(graph, forwardView, in.cameraPosition, targets);
-  if (shading && settings_.view == DebugView::Occupancy)
-    targets.color = passes::addOccupancyView(graph, frame, sheetRegionOrigin_, sheetRegionSize_);
-  if (shading && settings_.view == DebugView::Sheet) targets.color = passes::addSheetView(graph, frame);
-  const bool passthrough = settings_.view != DebugView::Final;  // debug colours as they are
-  // Plugins' passes on the HDR colour, in the order they were registered.
-  for (const auto& post : in.view.materials.postPasses()) targets.color = post.declare(graph, targets.color);
-  const auto exposure = passes::addExposure(graph, targets.color);
-  return passes::addTonemap(graph, targets.color, exposure, in.output, passthrough);
+  readbackHandle_ = graph.importBuffer("shade counters readback", {.size = sizeof(ShadeCounters)}, {},
+                                       {graph::Layout::Undefined, graph::PipelineStage::AllCommands, graph::AccessFlag::None});
+  in.executor.bindBuffer(readbackHandle_, readback_);
 }
 
-void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, render::DecoupledFrame& frame,
-                                      const plugin::Registry& materials, const LayerHistory::Declared& history) {
+namespace {
+struct ShadelResource {
+  const char* name;
+  graph::ResourceHandle render::DecoupledFrame::*handle;
+};
+constexpr ShadelResource kShadelResources[] = {{"shadel.remap", &render::DecoupledFrame::remap},
+                                               {"shadel.counters", &render::DecoupledFrame::counters},
+                                               {"shadel.work", &render::DecoupledFrame::work},
+                                               {"shadel.args", &render::DecoupledFrame::args},
+                                               {"shadel.shaded", &render::DecoupledFrame::shadedColor}};
+}  // namespace
+
+render::DecoupledFrame& DecoupledShading::frame(render::FrameContext& ctx) {
+  if (!frame_) throw plugin::FrameError("pass '" + ctx.passName() + "': decoupled shading was not prepared this frame");
+  for (const auto& r : kShadelResources)
+    if (ctx.has(r.name)) (*frame_).*r.handle = ctx.read(r.name);
+  frame_->view.frameImages = ctx.resources();  // what layers' frameInputs sample
+  return *frame_;
+}
+
+void DecoupledShading::publish(render::FrameContext& ctx, std::initializer_list<const char*> resources) {
+  for (const char* name : resources)
+    for (const auto& r : kShadelResources)
+      if (std::string_view(r.name) == name) ctx.write(name, (*frame_).*r.handle);
+}
+
+void DecoupledShading::addCountersReadback(graph::RenderGraph& graph) {
+  auto& copy = graph.addPass("counters-readback", graph::QueueClass::Graphics, graph::PassKind::Transfer);
+  copy.read(frame_->counters, graph::Access::TransferSrc);
+  readbackHandle_ = copy.write(readbackHandle_, graph::Access::TransferDst);
+  copy.execute([counters = frame_->counters, readback = readbackHandle_](PassContext& ctx) {
+    const VkBufferCopy region{0, 0, sizeof(ShadeCounters)};
+    vkCmdCopyBuffer(ctx.cmd(), ctx.buffer(counters).handle(), ctx.buffer(readback).handle(), 1, &region);
+  });
+}
+
+void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, const plugin::Registry& materials) {
+  render::DecoupledFrame& frame = *frame_;
+  const LayerHistory::Declared& history = declaredHistory_;
   // The current version of each intermediate layer's own image.
   std::map<std::string, graph::ResourceHandle> images;
   for (const auto& name : layerPlan_.images) {
@@ -270,6 +282,8 @@ void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, render::Decoupl
       const auto& layer = materials.layer(planned.layer);
       passes::LayerShadeStep step{&layer, planned.objects, planned.final ? frame.shadedColor : images.at(layer.name)};
       for (const auto& read : layer.reads) step.inputs.push_back(images.at(read.layer));
+      for (const auto& input : layer.frameInputs)
+        step.frameInputs.push_back(render::frameInputImage(frame.view.frameImages, layer, input));
       if (layer.persistent) {
         step.history = history.layers.at(layer.name).history;
         const auto& persistent = layerPlan_.persistent;

@@ -1,18 +1,20 @@
 #pragma once
-// The decoupled-shading recipe (Baker & Jarzynski 2022) on the render graph:
-// z-prepass, shadel-clear, shadel-mark, shadel-allocate, work-aggregate and
-// layer-shade (async compute), forward objects, composite, the forward tail
-// (blend, exposure, tonemap) and the readback of the shade counters that
-// drives the global shade-space adjuster. Owns what lives across frames: the
+// Decoupled shading (Baker & Jarzynski 2022): what its passes (registered by
+// decoupled_package.cpp) share within a frame and keep across frames. Each
+// frame, prepare() gives shadel space to objects newly switched to decoupled
+// and takes it back from those switched away, runs the global shade-space
+// adjuster on the last frame's counters, takes this frame's decoupled draws
+// from the forward list, and declares the frame's shadel resources. Owns the
 // virtual shadel space, the remap table, the triangle-ID maps and the tables
 // the passes read.
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
 
 #include <shadelgraph/gpu/buffer.hpp>
 #include <shadelgraph/render/decoupled_frame.hpp>
-#include <shadelgraph/render/frame_recipe.hpp>
+#include <shadelgraph/render/frame_context.hpp>
 #include <shadelgraph/shadel/shadel_space.hpp>
 #include <shadelgraph/shadel/shadel_storage.hpp>
 
@@ -67,22 +69,41 @@ struct DecoupledStats {
 
 class DecoupledShading {
  public:
+  // `choices`: per scene instance, whether it can be shaded decoupled (its chart).
   DecoupledShading(std::vector<ShadingChoice> choices, DecoupledSettings settings = {});
   ~DecoupledShading();
 
-  render::FrameRecipe recipe();
-  graph::ResourceHandle declare(graph::RenderGraph& graph, const render::FrameInputs& inputs);
+  // Once per frame, from any decoupled pass's prepare step.
+  void prepare(render::FrameContext& ctx);
+  // Does this frame shade objects decoupled / has it allocated objects at all?
+  bool shading() const { return !frameObjects_.empty(); }
+  bool hasObjects() const { return allocatedObjects_ > 0; }
+  bool needsSupport() const { return layerPlan_.needsSupport; }
+  // This frame's shared state, its resources synchronised with the frame
+  // resources `shadel.*` (a user's pass may have given them new versions).
+  render::DecoupledFrame& frame(render::FrameContext& ctx);
+  // Publishes the frame's current versions of these `shadel.*` resources.
+  void publish(render::FrameContext& ctx, std::initializer_list<const char*> resources);
+  // One layer-shade pass per depth of the frame's layer plan.
+  void addLayerPasses(graph::RenderGraph& graph, const plugin::Registry& materials);
+  void addCountersReadback(graph::RenderGraph& graph);
+  const DecoupledSettings& settings() const { return settings_; }
+  glm::uvec2 sheetRegionOrigin() const { return sheetRegionOrigin_; }
+  glm::uvec2 sheetRegionSize() const { return sheetRegionSize_; }
+
   // Reads the counters of the last executed frame (call after it completed).
   DecoupledStats stats() const;
   const std::vector<ShadingChoice>& choices() const { return choices_; }
+  // Why an object is not shaded decoupled (empty while it is allocated).
+  std::string forwardReason(uint32_t instance) const;
 
  private:
-  void initialize(const render::FrameInputs& inputs);
-  // This frame's decoupled objects (frameDraws_, frameObjects_, frameMaterials_) and forward draws.
-  void selectFrameObjects(const render::FrameInputs& inputs);
-  // One layer-shade pass per depth of the frame's layer plan.
-  void addLayerPasses(graph::RenderGraph& graph, render::DecoupledFrame& frame, const plugin::Registry& materials,
-                      const LayerHistory::Declared& history);
+  void createTables(gpu::Device& device);
+  // Gives shadel space to draws whose object now asks for decoupled, releases the rest.
+  void syncObjects(const render::FrameContext& ctx);
+  // This frame's decoupled objects (frameDraws_, frameObjects_, frameMaterials_), taken from ctx's forward draws.
+  void selectFrameObjects(render::FrameContext& ctx);
+  void uploadTables(gpu::Device& device);
 
   std::vector<ShadingChoice> choices_;
   DecoupledSettings settings_;
@@ -90,25 +111,37 @@ class DecoupledShading {
   float bias_ = 0.0f;
   float lastFrameBias_ = 0.0f;
   uint64_t frames_ = 0;
-  bool initialized_ = false;
-  // Static: every decoupled object's draw (by object index) and whether its
-  // mode is auto; the draws always forward; every draw's world bounding sphere.
-  std::vector<uint32_t> decoupledDraws_, forwardDraws_;
+  uint64_t preparedFrame_ = ~0ull;
+  // Per draw (a decoupled object's index is its draw's): its shadel space and
+  // tables, while its object is decoupled.
+  struct ObjectSlot {
+    uint32_t instance = 0;
+    bool allocated = false;
+    std::string reason;  // why not, when it asked to be
+    DecoupledObject record{};
+  };
+  std::vector<ObjectSlot> slots_;
+  uint32_t allocatedObjects_ = 0;
+  std::vector<uint32_t> identity_;  // draw index -> object index (the same)
   std::vector<glm::vec4> drawSpheres_;
-  std::vector<bool> objectAutomatic_;
-  std::vector<std::string> objectMaterials_;  // by object: its material (runs decoupled)
-  // This frame: the objects shaded decoupled (draws, ids, materials), and the forward draws.
-  std::vector<uint32_t> frameDraws_, frameObjects_, frameForwardDraws_;
+  std::map<int, std::pair<shadel::DetailLevels, uint32_t>> idMaps_;  // by mesh: its levels and ID-map offset
+  std::vector<uint32_t> idTexels_;
+  bool tablesDirty_ = true;
+  // This frame: the objects shaded decoupled (draws = ids, materials).
+  std::vector<uint32_t> frameObjects_;
   std::vector<std::string> frameMaterials_;
   LayerPlan layerPlan_;
   LayerHistory history_;
+  LayerHistory::Declared declaredHistory_;
+  std::optional<render::DecoupledFrame> frame_;
+  graph::ResourceHandle readbackHandle_;
   std::unique_ptr<shadel::ShadelSpace> space_;
   uint32_t ownedEntryCount_ = 0;
   shadel::StorageLayout storage_;
   uint64_t idMapBytes_ = 0;
   glm::uvec2 sheetRegionOrigin_{0}, sheetRegionSize_{1};  // allocated part of the sheet, in chunks
   uint64_t remapBytes_ = 0;
-  gpu::Buffer params_, objects_, shadelInstances_, levelRects_, ownedEntries_, idMaps_, readback_;
+  gpu::Buffer params_, objects_, shadelInstances_, levelRects_, ownedEntries_, idMapBuffer_, readback_;
 };
 
 }  // namespace sg::plugins

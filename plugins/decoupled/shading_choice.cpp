@@ -14,13 +14,12 @@ std::vector<ShadingChoice> chooseShading(scene::Scene& scene, std::optional<scen
   std::vector<ShadingChoice> choices;
   std::map<int, scene::ChartVerdict> verdicts;  // by mesh, after any automatic chart
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
-    const auto& instance = scene.instances[i];
-    const auto mode = override.value_or(instance.shading);
+    auto& instance = scene.instances[i];
+    if (override) instance.shading = *override;  // the renderer starts from the instances' modes
+    const auto mode = instance.shading;
     ShadingChoice choice{.instance = i, .automatic = mode == scene::ShadingMode::Auto};
     auto& mesh = scene.meshes[size_t(instance.mesh)];
-    if (mode == scene::ShadingMode::Forward) {
-      choice.reason = "forward by request";
-    } else if (mesh.primitives.size() != 1) {
+    if (mesh.primitives.size() != 1) {
       choice.reason = std::to_string(mesh.primitives.size()) + " primitives (decoupled shading takes single-primitive meshes so far)";
     } else if (scene.materials[size_t(mesh.primitives[0].material)].alphaMode != scene::AlphaMode::Opaque) {
       choice.reason = "alpha-masked or blended material (decoupled shading takes opaque materials so far)";
@@ -44,12 +43,14 @@ std::vector<ShadingChoice> chooseShading(scene::Scene& scene, std::optional<scen
         it = verdicts.emplace(instance.mesh, verdict).first;
       }
       const auto& verdict = it->second;
-      choice.decoupled = verdict.unique;
+      choice.eligible = verdict.unique;
+      choice.decoupled = verdict.unique && mode != scene::ShadingMode::Forward;
       choice.uvSet = verdict.uvSet;
       choice.tileOffset = verdict.tileOffset;
       choice.reason = verdict.unique ? (verdict.reason.empty() ? "unique TEXCOORD_" + std::to_string(verdict.uvSet)
                                                                : verdict.reason)
                                      : "no unique chart: " + verdict.reason;
+      if (mode == scene::ShadingMode::Forward && verdict.unique) choice.reason = "forward by request";
     }
     choices.push_back(std::move(choice));
   }

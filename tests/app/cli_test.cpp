@@ -417,9 +417,11 @@ TEST(Cli, UnknownMaterialIsNamedWithTheKnownOnes) {
   EXPECT_NE(r.output.find("gltf-pbr"), std::string::npos) << r.output;
 }
 
-TEST(Cli, PluginPostPassRunsInTheFrame) {
-  const auto plan = planOf(std::string("--plugin ") + SG_PLUGIN_GOOD);
+TEST(Cli, PluginPassRunsInThePluginsFrameOnly) {
+  const auto plan = planOf(std::string("--plugin ") + SG_PLUGIN_GOOD + " --frame-graph test-frame");
   EXPECT_TRUE(plan.kept.count("test-post"));
+  const auto plain = planOf(std::string("--plugin ") + SG_PLUGIN_GOOD);
+  EXPECT_FALSE(plain.kept.count("test-post")) << "a registered pass runs only in frames that name it";
 }
 
 // A layer whose GLSL does not compile: the plugin, the author's own file and

@@ -7,9 +7,9 @@
 #include <memory>
 #include <optional>
 
-#include <builtin_materials.hpp>
+#include <builtin_plugins.hpp>
 #include <builtin_shaders.hpp>
-#include <decoupled/decoupled_shading.hpp>
+#include <decoupled/decoupled_package.hpp>
 #include <shadelgraph/gpu/device.hpp>
 #include <shadelgraph/render/renderer.hpp>
 
@@ -20,13 +20,15 @@ namespace sg::test {
 // A scene rendered through the decoupled recipe with every object in `mode`.
 class Session {
  public:
-  Session(scene::Scene s, scene::ShadingMode mode, plugins::DecoupledSettings settings = {},
-          const plugin::Registry& materials = materials::builtinMaterials())
+  // `mode`: every object's mode; empty: each object's own (scene::Instance::shading).
+  Session(scene::Scene s, std::optional<scene::ShadingMode> mode, plugins::DecoupledSettings settings = {},
+          const plugin::Registry& registry = plugins::builtinRegistry(), const std::string& frame = "decoupled")
       : scene_(std::move(s)), context_(validatedOptions()) {
-    shading_ = std::make_unique<plugins::DecoupledShading>(plugins::chooseShading(scene_, mode), settings);
     device_ = std::make_unique<gpu::Device>(context_);
     device_->shaders().add(gpu::builtinShaders());
-    renderer_ = std::make_unique<render::Renderer>(*device_, scene_, shading_->recipe(), materials);
+    auto made = plugins::makeDecoupledRenderer(*device_, scene_, registry, mode, settings, frame);
+    shading_ = std::move(made.shading);
+    renderer_ = std::move(made.renderer);
   }
   ~Session() {
     renderer_.reset();
@@ -43,11 +45,12 @@ class Session {
   plugins::DecoupledStats stats() const { return shading_->stats(); }
   const gpu::Device& device() const { return *device_; }
   const scene::Scene& scene() const { return scene_; }
+  render::Renderer& renderer() { return *renderer_; }
 
  private:
   scene::Scene scene_;
   gpu::Context context_;
-  std::unique_ptr<plugins::DecoupledShading> shading_;
+  std::shared_ptr<plugins::DecoupledShading> shading_;
   std::unique_ptr<gpu::Device> device_;
   std::unique_ptr<render::Renderer> renderer_;
 };

@@ -175,3 +175,54 @@ TEST(DecoupledAdjuster, SettlesUnderPressureWithoutGarbage) {
 
 }  // namespace
 }  // namespace sg::test
+
+namespace sg::test {
+namespace {
+
+// Per-object mode at run time: the gold sphere and the torus swap between
+// decoupled and forward every frame for 20 frames. Every frame: no composite
+// miss, no validation message (the session fails on any), and the image of
+// the frame equals a render made directly in that frame's modes (a fresh
+// session whose objects start in them). The rest of the courtyard stays
+// forward; a fixed bias keeps the adjuster out of the comparison.
+TEST(DecoupledModes, ObjectsSwappedEveryFrameRenderAsIfBornInThoseModes) {
+  const plugins::DecoupledSettings settings{.storageChunks = 8192, .fixedBias = 0.0f};
+  auto scene = scene::makeDefaultScene(128);
+  uint32_t sphere = 0, torus = 0;
+  for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+    auto& instance = scene.instances[i];
+    instance.shading = scene::ShadingMode::Forward;
+    if (instance.name == "gold sphere") sphere = i;
+    if (instance.name == "torus") torus = i;
+  }
+  ASSERT_NE(sphere, torus);
+  auto modes = [&](bool sphereDecoupled) {
+    auto s = scene;
+    s.instances[sphere].shading = sphereDecoupled ? scene::ShadingMode::Decoupled : scene::ShadingMode::Forward;
+    s.instances[torus].shading = sphereDecoupled ? scene::ShadingMode::Forward : scene::ShadingMode::Decoupled;
+    return s;
+  };
+  constexpr uint32_t kSize = 96;
+  gpu::HostImage reference[2];
+  for (int sphereDecoupled = 0; sphereDecoupled < 2; ++sphereDecoupled) {
+    Session direct(modes(sphereDecoupled != 0), std::nullopt, settings);
+    reference[sphereDecoupled] = direct.render(kSize);
+    ASSERT_EQ(direct.stats().objects, 1u);
+  }
+  Session swapping(modes(true), std::nullopt, settings);
+  for (int frame = 0; frame < 20; ++frame) {
+    const bool sphereDecoupled = frame % 2 == 0;
+    swapping.renderer().setObjectMode(sphere, sphereDecoupled ? scene::ShadingMode::Decoupled : scene::ShadingMode::Forward);
+    swapping.renderer().setObjectMode(torus, sphereDecoupled ? scene::ShadingMode::Forward : scene::ShadingMode::Decoupled);
+    const auto image = swapping.render(kSize);
+    const auto stats = swapping.stats();
+    EXPECT_EQ(stats.objects, 1u) << "frame " << frame;
+    EXPECT_EQ(stats.counters.compositeMisses, 0u) << "frame " << frame;
+    EXPECT_EQ(stats.counters.overflowChunks, 0u) << "frame " << frame;
+    const auto diff = image::compareRgba8(reference[sphereDecoupled ? 1 : 0].rgba8, image.rgba8);
+    EXPECT_LE(diff.maxAbs, 1) << "frame " << frame << ": PSNR " << diff.psnr << " dB against the direct render";
+  }
+}
+
+}  // namespace
+}  // namespace sg::test

@@ -212,7 +212,7 @@ TEST(MaterialLayers, LayerTexturesAreBoundInBothPaths) {
                                                            "  return textureGrad(tint, s.uv0, s.uv0Dx, s.uv0Dy);\n"
                                                            "}\n";
   plugin::Registry registry;
-  materials::registerBuiltinMaterials(registry);
+  plugins::registerBuiltins(registry);
   registry.beginPlugin("test");
   registry.addShaderDirectory(dir.path());
   registry.addLayer({.name = "tinted", .source = "tinted/tinted.glsl", .function = "tinted",
@@ -230,7 +230,7 @@ TEST(MaterialLayers, LayerTexturesAreBoundInBothPaths) {
 
 TEST(MaterialLayers, MissingLayerTextureIsAClearError) {
   plugin::Registry registry;
-  materials::registerBuiltinMaterials(registry);
+  plugins::registerBuiltins(registry);
   registry.beginPlugin("test");
   registry.addLayer({.name = "lost", .source = "x.glsl", .function = "f",
                      .textures = {{.name = "gone", .file = "/nonexistent/gone.png"}}});

@@ -11,8 +11,7 @@
 #include <filesystem>
 
 #include <builtin_shaders.hpp>
-#include <builtin_materials.hpp>
-#include <forward/forward_recipe.hpp>
+#include <builtin_plugins.hpp>
 #include <shadelgraph/gpu/device.hpp>
 #include <shadelgraph/image/png.hpp>
 #include <shadelgraph/render/renderer.hpp>
@@ -37,7 +36,8 @@ gpu::HostImage renderScene(const scene::Scene& s) {
   {
     gpu::Device device(context);
     device.shaders().add(gpu::builtinShaders());
-    render::Renderer renderer(device, s, plugins::forwardRecipe, materials::builtinMaterials());
+    const auto& registry = plugins::builtinRegistry();
+    render::Renderer renderer(device, s, registry, plugin::resolveFrame(registry.frame("forward"), registry));
     image = renderer.render({.width = 256, .height = 256}).image;
   }
   for (const auto& m : context.validationLog().messages()) ADD_FAILURE() << "validation: " << m.text;

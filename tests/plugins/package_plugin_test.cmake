@@ -91,4 +91,59 @@ foreach(mode decoupled forward)
     message(FATAL_ERROR "${image} is the plain render: the plugin's material was not used")
   endif()
 endforeach()
-message(STATUS "installed package, out-of-tree plugin build and plugin load: OK")
+# 5. The out-of-tree pass plugin: a depth outline after tonemap, in its own
+# frame ("outlined": the decoupled frame plus the pass). Built against the
+# installed package only; in both shading modes its image differs from the
+# same frame without it, and the pass is in the compiled graph.
+set(outline_build ${WORK_DIR}/build-outline)
+set(outline ${outline_build}/libsg_example_outline.so)
+run("configuring plugins/example-outline" COMMAND ${CMAKE_COMMAND}
+  -S ${SG_SOURCE_DIR}/plugins/example-outline -B ${outline_build} -G "${GENERATOR}"
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_PREFIX_PATH=${prefix})
+run("building plugins/example-outline" COMMAND ${CMAKE_COMMAND} --build ${outline_build})
+run("shadelgraph graph --frame-graph outlined" COMMAND ${sg} graph --size 64x64 --plugin ${outline} --frame-graph outlined)
+if(NOT run_stdout MATCHES "outline")
+  message(FATAL_ERROR "the outlined frame's graph has no outline pass:\n${run_stdout}")
+endif()
+foreach(mode decoupled forward)
+  set(plain ${WORK_DIR}/plain-${mode}.png)
+  set(outlined ${WORK_DIR}/outlined-${mode}.png)
+  run("shadelgraph render (${mode})" COMMAND ${sg} render --size 128x128 --mode ${mode} -o ${plain})
+  run("shadelgraph render --frame-graph outlined (${mode})" COMMAND ${sg} render --size 128x128 --mode ${mode}
+    --plugin ${outline} --frame-graph outlined -o ${outlined})
+  file(SHA256 ${plain} plain_hash)
+  file(SHA256 ${outlined} outlined_hash)
+  if(plain_hash STREQUAL outlined_hash)
+    message(FATAL_ERROR "${outlined} equals ${plain}: the outline pass drew nothing")
+  endif()
+endforeach()
+# 6. The out-of-tree plugin whose pass output a layer samples: ssao writes
+# ao.image before shading; the material example-ao-pbr's layer ao-darken
+# samples it in both variants. In both modes its image differs from the same
+# frame with the plain glTF material; without the ssao pass in the frame, the
+# layer's missing input is one line naming the layer and the resource.
+set(ssao_build ${WORK_DIR}/build-ssao)
+set(ssao ${ssao_build}/libsg_example_ssao.so)
+run("configuring plugins/example-ssao" COMMAND ${CMAKE_COMMAND}
+  -S ${SG_SOURCE_DIR}/plugins/example-ssao -B ${ssao_build} -G "${GENERATOR}"
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_PREFIX_PATH=${prefix})
+run("building plugins/example-ssao" COMMAND ${CMAKE_COMMAND} --build ${ssao_build})
+foreach(mode decoupled forward)
+  set(plain ${WORK_DIR}/ssao-plain-${mode}.png)
+  set(darkened ${WORK_DIR}/ssao-ao-${mode}.png)
+  run("shadelgraph render --frame-graph ssao (${mode})" COMMAND ${sg} render --size 128x128 --mode ${mode}
+    --plugin ${ssao} --frame-graph ssao -o ${plain})
+  run("shadelgraph render --frame-graph ssao --material example-ao-pbr (${mode})" COMMAND ${sg} render --size 128x128
+    --mode ${mode} --plugin ${ssao} --frame-graph ssao --material example-ao-pbr -o ${darkened})
+  file(SHA256 ${plain} plain_hash)
+  file(SHA256 ${darkened} darkened_hash)
+  if(plain_hash STREQUAL darkened_hash)
+    message(FATAL_ERROR "${darkened} equals ${plain}: the layer did not sample ao.image")
+  endif()
+endforeach()
+execute_process(COMMAND ${sg} render --size 64x64 --plugin ${ssao} --material example-ao-pbr -o ${WORK_DIR}/x.png
+  RESULT_VARIABLE code ERROR_VARIABLE err OUTPUT_QUIET)
+if(NOT code EQUAL 1 OR NOT err MATCHES "material layer 'ao-darken' \\(plugin 'example-ssao'\\) samples frame resource 'ao.image'")
+  message(FATAL_ERROR "a frame without the ssao pass should fail naming the layer and ao.image (${code}):\n${err}")
+endif()
+message(STATUS "installed package, out-of-tree plugin builds and plugin loads: OK")

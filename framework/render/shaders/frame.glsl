@@ -24,4 +24,11 @@ layout(set = 0, binding = 0, std140) uniform Frame {
   Light lights[SG_MAX_LIGHTS];
 } frame;
 
+// Where a world position lands in this frame's output, in [0, 1]^2 (texture
+// coordinates of screen-space frame resources such as an AO image).
+vec2 sgScreenUv(vec3 worldPosition) {
+  vec4 clip = frame.viewProjection * vec4(worldPosition, 1.0);
+  return clip.xy / clip.w * 0.5 + 0.5;
+}
+
 #endif

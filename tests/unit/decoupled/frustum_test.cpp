@@ -2,9 +2,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include <decoupled/frustum.hpp>
+#include <shadelgraph/render/frustum.hpp>
 
-namespace sg::plugins {
+namespace sg::render {
 namespace {
 
 // A camera at the origin looking down -Z, Vulkan depth range.
@@ -23,4 +23,4 @@ TEST(Frustum, InsideOutsideAndStraddling) {
 }
 
 }  // namespace
-}  // namespace sg::plugins
+}  // namespace sg::render

@@ -67,19 +67,14 @@ TEST(PluginLoader, GoodPluginRegistersItsLayerMaterialAndPass) {
   EXPECT_EQ(registry.currentPlugin(), "built-in");
 }
 
-TEST(PluginLoader, PostPassDeclaresIntoTheHostsGraph) {
+TEST(PluginLoader, PluginPassAndFrameAreRegisteredUnderThePluginsName) {
   Registry registry;
   loadPlugin(SG_PLUGIN_GOOD, registry);
-  ASSERT_EQ(registry.postPasses().size(), 1u);
-  graph::RenderGraph graph;
-  const auto color = graph.createImage(
-      "hdr", graph::ImageDesc{.format = graph::Format::RGBA16F, .size = graph::Size::absolute(8, 8)});
-  // The plugin's code calls RenderGraph::addPass: with one framework library
-  // in the process, the pass lands in this graph's declaration.
-  EXPECT_EQ(registry.postPasses()[0].declare(graph, color), color);
-  ASSERT_EQ(graph.passCount(), 1u);
-  EXPECT_EQ(graph.passName(graph::PassId{0}), "test-post");
-  EXPECT_EQ(registry.postPasses()[0].plugin, "test-good");
+  ASSERT_TRUE(registry.hasPass("test-post"));
+  EXPECT_EQ(registry.pass("test-post").plugin, "test-good");
+  EXPECT_EQ(registry.pass("test-post").reads, std::vector<std::string>{"scene.hdr"});
+  ASSERT_TRUE(registry.hasFrame("test-frame"));
+  EXPECT_EQ(registry.frame("test-frame").base, "decoupled");
 }
 
 TEST(PluginLoader, MissingFileIsNamed) {

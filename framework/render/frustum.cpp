@@ -1,6 +1,6 @@
-#include "frustum.hpp"
+#include <shadelgraph/render/frustum.hpp>
 
-namespace sg::plugins {
+namespace sg::render {
 
 bool sphereInFrustum(const glm::mat4& m, const glm::vec4& sphere) {
   // Gribb & Hartmann: the planes are sums of the matrix's rows.
@@ -15,4 +15,4 @@ bool sphereInFrustum(const glm::mat4& m, const glm::vec4& sphere) {
   return true;
 }
 
-}  // namespace sg::plugins
+}  // namespace sg::render

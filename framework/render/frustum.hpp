@@ -3,8 +3,8 @@
 // frustum of a world-to-clip matrix (Vulkan clip space, depth 0..w)?
 #include <glm/glm.hpp>
 
-namespace sg::plugins {
+namespace sg::render {
 
 bool sphereInFrustum(const glm::mat4& viewProjection, const glm::vec4& sphere);
 
-}  // namespace sg::plugins
+}  // namespace sg::render

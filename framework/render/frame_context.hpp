@@ -1,0 +1,97 @@
+#pragma once
+// What a pass plugin gets while its frame is declared: the graph, the scene
+// and camera, the visible draws split by how they are shaded this frame, the
+// pass's parameters, the named frame resources, and per-renderer state that a
+// package keeps across frames (e.g. decoupled shading's shadel space).
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include <shadelgraph/gpu/device.hpp>
+#include <shadelgraph/gpu/graph_executor.hpp>
+#include <shadelgraph/graph/render_graph.hpp>
+#include <shadelgraph/plugin/frame_description.hpp>
+#include <shadelgraph/render/scene_view.hpp>
+#include <shadelgraph/scene/scene.hpp>
+
+namespace sg::render {
+
+// The camera and output of one frame.
+struct FrameInputs {
+  const scene::Scene& scene;
+  gpu::Device& device;
+  gpu::GraphExecutor& executor;  // to bind a package's own persistent and imported resources
+  const std::vector<scene::ShadingMode>& objectModes;  // per scene instance: its requested mode this frame
+  uint64_t frameNumber = 0;
+  glm::vec3 cameraPosition{0.0f};
+  // Pixels an object of size 1 covers at distance 1 (perspective); 0 for orthographic.
+  float pixelsPerUnitAtUnitDistance = 0.0f;
+  glm::mat4 viewProjection{1.0f};  // world to clip (Vulkan depth 0..1), for culling
+  uint32_t width = 0, height = 0;
+};
+
+// Indices into GpuScene::draws() of the draws inside the view frustum. All
+// start forward; a package that shades some decoupled moves them over in its
+// passes' prepare step.
+struct FrameDraws {
+  std::vector<uint32_t> forward, decoupled;
+};
+
+class FrameContext {
+ public:
+  FrameContext(graph::RenderGraph& graph, const FrameInputs& inputs, const SceneView& allDraws,
+               std::map<std::string, std::shared_ptr<void>>& states);
+
+  graph::RenderGraph& graph() { return graph_; }
+  const FrameInputs& inputs() const { return inputs_; }
+  const GpuScene& gpuScene() const { return all_.scene; }
+  const plugin::Registry& registry() const { return all_.materials; }
+  FrameDraws& draws() { return draws_; }
+  // Forward and decoupled draws together, in draw order (for depth-only passes).
+  std::span<const uint32_t> visibleDraws();
+  // A scene view over some of this frame's draws (the span must outlive the frame's declaration).
+  SceneView view(std::span<const uint32_t> draws) const;
+
+  // The frame resource's current version; throws naming the pass when no pass wrote it.
+  graph::ResourceHandle read(const std::string& resource) const;
+  bool has(const std::string& resource) const { return resources_.count(resource) != 0; }
+  const std::map<std::string, graph::ResourceHandle>& resources() const { return resources_; }
+  // Publishes a new version of a frame resource the pass declared it writes.
+  void write(const std::string& resource, graph::ResourceHandle handle);
+
+  // The running pass and its parameters (defaults merged with the frame's values).
+  const std::string& passName() const;
+  const nlohmann::json& parameters() const;
+  template <class T>
+  T parameter(const std::string& name) const {
+    return parameters().at(name).get<T>();
+  }
+  // The HDR image holds debug colours: tone mapping shows them unchanged.
+  bool debugColors = false;
+
+  // Per-renderer state a package provided (Renderer::provideState); throws when absent.
+  template <class T>
+  T& state(const std::string& key) {
+    return *static_cast<T*>(stateOrThrow(key));
+  }
+
+  void setPass(const plugin::ResolvedPass* pass) { pass_ = pass; }
+
+ private:
+  void* stateOrThrow(const std::string& key) const;
+
+  graph::RenderGraph& graph_;
+  const FrameInputs& inputs_;
+  const SceneView& all_;
+  std::map<std::string, std::shared_ptr<void>>& states_;
+  FrameDraws draws_;
+  std::vector<uint32_t> visible_;
+  std::map<std::string, graph::ResourceHandle> resources_;
+  const plugin::ResolvedPass* pass_ = nullptr;
+};
+
+}  // namespace sg::render
