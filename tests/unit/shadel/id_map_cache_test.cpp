@@ -105,7 +105,10 @@ TEST_P(CorruptCacheFile, IsIgnoredAndRebuilt) {
   EXPECT_EQ(again.stats().diskHits, 1u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Damage, CorruptCacheFile, ::testing::Range(0, 5));
+INSTANTIATE_TEST_SUITE_P(Damage, CorruptCacheFile, ::testing::Range(0, 5), [](const auto& info) {
+  static const char* const kNames[] = {"FlippedBit", "Truncated", "NotOurFormat", "Empty", "OtherVersion"};
+  return std::string(kNames[info.param]);
+});
 
 TEST(IdMapCache, EmptyDirectoryDisablesCachingAndUnwritableDirectoryStillBakes) {
   Fixture f;
