@@ -20,7 +20,7 @@ std::vector<std::string> messages(const LayoutReport& report) {
   return out;
 }
 
-class MadeUpTree : public ::testing::Test {
+class IncludeScan : public ::testing::Test {
  protected:
   void SetUp() override {
     dir.write("framework/graph/pass.hpp", "#pragma once\n");
@@ -36,7 +36,7 @@ class MadeUpTree : public ::testing::Test {
   TempDir dir;
 };
 
-TEST_F(MadeUpTree, AllowedIncludesPass) {
+TEST_F(IncludeScan, AllowedIncludesPass) {
   dir.write("framework/graph/pass.cpp",
             "#include <shadelgraph/graph/pass.hpp>\n#include \"pass.hpp\"\n#include <vector>\n#include <glm/glm.hpp>\n");
   const LayoutReport report = checkLayout(dir.path());
@@ -47,21 +47,21 @@ TEST_F(MadeUpTree, AllowedIncludesPass) {
   EXPECT_EQ(report.projectIncludes, 6u);
 }
 
-TEST_F(MadeUpTree, QuotedIncludeThroughAnIncludeRootIsAPass) {
+TEST_F(IncludeScan, QuotedIncludeThroughAnIncludeRootIsAPass) {
   dir.write("framework/graph/pass.cpp", "#include <vector>\n#include \"forward/forward.hpp\"\n");
   EXPECT_THAT(messages(checkLayout(dir.path())),
               ElementsAre("framework/graph/pass.cpp:2 includes \"forward/forward.hpp\" "
                           "(floor framework may not include floor passes)"));
 }
 
-TEST_F(MadeUpTree, GlslIncludeOfAPluginFromAPassIsAViolation) {
+TEST_F(IncludeScan, GlslIncludeOfAPluginFromAPassIsAViolation) {
   dir.write("passes/forward/forward.vert", "#version 460\n  #  include <plugins/decoupled/shaders/decoupled.glsl>\n");
   EXPECT_THAT(messages(checkLayout(dir.path())),
               ElementsAre("passes/forward/forward.vert:2 includes <plugins/decoupled/shaders/decoupled.glsl> "
                           "(floor passes may not include floor plugins)"));
 }
 
-TEST_F(MadeUpTree, GeneratedGlslInACppStringLiteralCounts) {
+TEST_F(IncludeScan, GeneratedGlslInACppStringLiteralCounts) {
   dir.write("framework/render/variants.cpp",
             "out << \"#version 460\\n\"\n"
             "    << \"#include <passes/forward/forward.frag>\\n\";\n"
@@ -74,21 +74,21 @@ TEST_F(MadeUpTree, GeneratedGlslInACppStringLiteralCounts) {
                           "(floor framework may not include floor materials)"));
 }
 
-TEST_F(MadeUpTree, SiblingFloorsMayNotIncludeEachOther) {
+TEST_F(IncludeScan, SiblingFloorsMayNotIncludeEachOther) {
   dir.write("materials/gltf-pbr/material.glsl", "#include \"surface.glsl\"\n#include <passes/forward/forward.frag>\n");
   EXPECT_THAT(messages(checkLayout(dir.path())),
               ElementsAre("materials/gltf-pbr/material.glsl:2 includes <passes/forward/forward.frag> "
                           "(floor materials may not include floor passes)"));
 }
 
-TEST_F(MadeUpTree, RelativeIncludeThatClimbsIntoAnotherFloorIsJudgedByWhereItLands) {
+TEST_F(IncludeScan, RelativeIncludeThatClimbsIntoAnotherFloorIsJudgedByWhereItLands) {
   dir.write("framework/render/x.cpp", "#include \"../../plugins/forward/forward_recipe.hpp\"\n");
   EXPECT_THAT(messages(checkLayout(dir.path())),
               ElementsAre("framework/render/x.cpp:1 includes \"../../plugins/forward/forward_recipe.hpp\" "
                           "(floor framework may not include floor plugins)"));
 }
 
-TEST_F(MadeUpTree, ProjectIncludeThatResolvesToNothingIsReported) {
+TEST_F(IncludeScan, ProjectIncludeThatResolvesToNothingIsReported) {
   dir.write("framework/graph/pass.cpp", "#include \"gone.hpp\"\n#include <forward/gone.hpp>\n#include <CLI/CLI.hpp>\n");
   const LayoutReport report = checkLayout(dir.path());
   ASSERT_EQ(report.unresolved.size(), 2u);
@@ -96,7 +96,7 @@ TEST_F(MadeUpTree, ProjectIncludeThatResolvesToNothingIsReported) {
   EXPECT_EQ(report.unresolved[1].written(), "<forward/gone.hpp>");
 }
 
-TEST_F(MadeUpTree, CommentsAndPlainTextAreNotIncludes) {
+TEST_F(IncludeScan, CommentsAndPlainTextAreNotIncludes) {
   dir.write("framework/graph/pass.cpp", "// the variant #includes it\nint includeCount = 0;  // #include nothing\n");
   EXPECT_EQ(checkLayout(dir.path()).projectIncludes, 4u);  // the made-up tree's own four
 }
