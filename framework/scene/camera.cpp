@@ -18,9 +18,14 @@ glm::mat4 Camera::view() const {
 }
 
 glm::mat4 Camera::projectionMatrix(float viewportAspect) const {
-  if (projection == Projection::Orthographic)
-    return glm::orthoRH_ZO(-xmag, xmag, -ymag, ymag, znear, zfar.value_or(znear + 1000.0f));
-  const float aspect = aspectRatio.value_or(viewportAspect);
+  // The viewport's aspect always wins over the camera's own (glTF `aspectRatio`,
+  // `xmag`): the vertical extent is kept and the horizontal one follows the
+  // output, so a camera authored for 1:1 shows more, not a stretched image, at 16:9.
+  const float aspect = viewportAspect;
+  if (projection == Projection::Orthographic) {
+    const float halfWidth = ymag * aspect;
+    return glm::orthoRH_ZO(-halfWidth, halfWidth, -ymag, ymag, znear, zfar.value_or(znear + 1000.0f));
+  }
   if (zfar) return glm::perspectiveRH_ZO(yfov, aspect, znear, *zfar);
   // Infinite far plane with [0, 1] depth: perspectiveRH_ZO in the limit far -> infinity.
   const float f = 1.0f / std::tan(yfov * 0.5f);

@@ -15,8 +15,8 @@ struct Camera {
   std::string name;
   Projection projection = Projection::Perspective;
   float yfov = 0.8f;                 // perspective: vertical field of view, radians
-  std::optional<float> aspectRatio;  // perspective: absent = use the viewport's
-  float xmag = 1.0f;                 // orthographic: half width
+  std::optional<float> aspectRatio;  // perspective: as authored; projections use the viewport's
+  float xmag = 1.0f;                 // orthographic: half width as authored; projections use ymag × aspect
   float ymag = 1.0f;                 // orthographic: half height
   float znear = 0.1f;
   std::optional<float> zfar;  // absent = infinite (perspective only)
@@ -27,8 +27,9 @@ struct Camera {
   // nodes should have none, but files have it).
   glm::mat4 view() const;
   // Right-handed, clip depth in [0, 1] (near -> 0), clip +Y up: a Vulkan
-  // caller flips Y in the viewport. Uses aspectRatio when given, else
-  // `viewportAspect`.
+  // caller flips Y in the viewport. Keeps the vertical field of view (ymag)
+  // and takes the width from `viewportAspect`, never from aspectRatio/xmag:
+  // an output of another shape sees more or less sideways, never stretched.
   glm::mat4 projectionMatrix(float viewportAspect) const;
 };
 

@@ -268,5 +268,29 @@ TEST(Camera, ProjectionConventions) {
   EXPECT_NEAR(near.z / near.w, 0.0f, kEps);
 }
 
+// glTF cameras carry an aspectRatio (or xmag) for the shape they were authored
+// at; an output of another shape must not stretch the image: the vertical
+// extent is kept and the horizontal one follows the viewport.
+TEST(Camera, ViewportAspectWinsOverTheCamerasOwn) {
+  Camera camera;
+  camera.yfov = std::numbers::pi_v<float> / 2;
+  camera.aspectRatio = 1.0f;
+  camera.znear = 1.0f;
+  camera.zfar = 10.0f;
+  const auto ndc = [&](float viewportAspect, glm::vec3 p) {
+    const glm::vec4 clip = camera.projectionMatrix(viewportAspect) * glm::vec4(p, 1.0f);
+    return glm::vec3(clip) / clip.w;
+  };
+  EXPECT_NEAR(ndc(2.0f, {0, 1, -1}).y, 1.0f, kEps) << "vertical field of view kept";
+  EXPECT_NEAR(ndc(2.0f, {2, 0, -1}).x, 1.0f, kEps) << "width from the viewport, not aspectRatio 1";
+  EXPECT_NEAR(ndc(0.5f, {0.5f, 0, -1}).x, 1.0f, kEps) << "narrower viewports too";
+
+  camera.projection = Projection::Orthographic;
+  camera.xmag = 1.0f;
+  camera.ymag = 1.5f;
+  EXPECT_NEAR(ndc(2.0f, {0, 1.5f, -5}).y, 1.0f, kEps) << "ymag kept";
+  EXPECT_NEAR(ndc(2.0f, {3.0f, 0, -5}).x, 1.0f, kEps) << "half width ymag x aspect, not xmag";
+}
+
 }  // namespace
 }  // namespace sg::scene

@@ -105,7 +105,12 @@ TEST_P(CorruptCacheFile, IsIgnoredAndRebuilt) {
   EXPECT_EQ(again.stats().diskHits, 1u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Damage, CorruptCacheFile, ::testing::Range(0, 5));
+// The damage each parameter does, in the switch's order.
+std::string damageName(const ::testing::TestParamInfo<int>& info) {
+  static const char* const kNames[] = {"FlippedBit", "Truncated", "NotOurFormat", "Empty", "OtherVersion"};
+  return kNames[info.param];
+}
+INSTANTIATE_TEST_SUITE_P(Damage, CorruptCacheFile, ::testing::Range(0, 5), damageName);
 
 TEST(IdMapCache, EmptyDirectoryDisablesCachingAndUnwritableDirectoryStillBakes) {
   Fixture f;
