@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <initializer_list>
 #include <string>
@@ -56,10 +57,10 @@ class ShapeChecker {
     objects(json, "samplers", [&](const Json& sampler, const std::string& path) {
       // The schema allows any integer for these GL enums (forward compatibility):
       // unknown values get a warning where they are converted.
-      optionalUint(sampler, "magFilter", path);
-      optionalUint(sampler, "minFilter", path);
-      optionalUint(sampler, "wrapS", path);
-      optionalUint(sampler, "wrapT", path);
+      optionalInt32(sampler, "magFilter", path);
+      optionalInt32(sampler, "minFilter", path);
+      optionalInt32(sampler, "wrapS", path);
+      optionalInt32(sampler, "wrapT", path);
     });
     objects(json, "cameras", [&](const Json& camera, const std::string& path) { this->camera(camera, path); });
     objects(json, "skins", [&](const Json& skin, const std::string& path) {
@@ -193,6 +194,12 @@ class ShapeChecker {
     if (!isInteger(value) || (value.type() == Json::value_t::number_integer && value.get<int64_t>() < 0))
       fail(path, "an integer >= 0", value);
   }
+  // Values tinygltf keeps in an int (enums, texCoord, sparse offsets): 2^32 + 9729 would
+  // become a valid 9729. Indices need no such check: they are compared with array sizes.
+  static void int32(const Json& value, const std::string& path) {
+    uint(value, path);
+    if (value.get<uint64_t>() > INT32_MAX) fail(path, "an integer in [0, 2147483647]", value);
+  }
   // Counts and byte lengths the schema requires to be >= 1 (VALUE_NOT_IN_RANGE).
   static void positive(const Json& value, const std::string& path) {
     uint(value, path);
@@ -214,6 +221,7 @@ class ShapeChecker {
   void requireUint(const Json& o, const char* key, const std::string& path) { required(o, key, path, uint); }
   void optionalUint(const Json& o, const char* key, const std::string& path) { optional(o, key, path, uint); }
   void requirePositive(const Json& o, const char* key, const std::string& path) { required(o, key, path, positive); }
+  void optionalInt32(const Json& o, const char* key, const std::string& path) { optional(o, key, path, int32); }
   void optionalNumbers(const Json& o, const char* key, const std::string& path, size_t count) {
     optional(o, key, path, [count](const Json& value, const std::string& p) { numbers(value, p, count); });
   }
@@ -271,7 +279,7 @@ class ShapeChecker {
       });
       optionalIndex(primitive, "indices", p);
       optionalIndex(primitive, "material", p);
-      optionalUint(primitive, "mode", p);
+      optionalInt32(primitive, "mode", p);
       objects(primitive, "targets", [](const Json& target, const std::string& targetPath) {
         for (const auto& [name, value] : target.items()) uint(value, join(targetPath, name));
       }, p);
@@ -294,14 +302,15 @@ class ShapeChecker {
     optionalNumbers(accessor, "min", path, 0);
     optionalObject(accessor, "sparse", path, [&](const Json& sparse, const std::string& p) {
       requirePositive(sparse, "count", p);
+      optionalInt32(sparse, "count", p);
       requireObject(sparse, "indices", p, [&](const Json& indices, const std::string& ip) {
         requireIndex(indices, "bufferView", ip);
-        optionalUint(indices, "byteOffset", ip);
+        optionalInt32(indices, "byteOffset", ip);
         required(indices, "componentType", ip, [](const Json& v, const std::string& cp) { oneOf(v, cp, {5121, 5123, 5125}); });
       });
       requireObject(sparse, "values", p, [&](const Json& values, const std::string& vp) {
         requireIndex(values, "bufferView", vp);
-        optionalUint(values, "byteOffset", vp);
+        optionalInt32(values, "byteOffset", vp);
       });
     });
   }
@@ -314,13 +323,13 @@ class ShapeChecker {
       if (!isInteger(v) || v.get<double>() < 4.0 || v.get<double>() > 252.0 || v.get<int64_t>() % 4 != 0)
         fail(p, "a multiple of 4 in [4, 252]", v);
     });
-    optionalUint(view, "target", path);
+    optionalInt32(view, "target", path);
   }
 
   void textureInfo(const Json& parent, const char* key, const std::string& path, const char* extraNumber = nullptr) {
     optionalObject(parent, key, path, [&](const Json& info, const std::string& p) {
       requireIndex(info, "index", p);
-      optionalUint(info, "texCoord", p);
+      optionalInt32(info, "texCoord", p);
       if (extraNumber) optionalNumber(info, extraNumber, p);
       if (const Json* extensions = member(info, "extensions"))
         optionalObject(*extensions, "KHR_texture_transform", join(p, "extensions"),
@@ -328,7 +337,7 @@ class ShapeChecker {
                          optionalNumbers(transform, "offset", tp, 2);
                          optionalNumber(transform, "rotation", tp);
                          optionalNumbers(transform, "scale", tp, 2);
-                         optionalUint(transform, "texCoord", tp);
+                         optionalInt32(transform, "texCoord", tp);
                        });
     });
   }

@@ -212,14 +212,17 @@ const Mutation kRanges[] = {
     {"SparseOffsetWrapsInt", "/accessors/0/sparse",
      R"({"count": 1, "indices": {"bufferView": 1, "byteOffset": 4294967294, "componentType": 5123},
          "values": {"bufferView": 0}})",
-     "/accessors/0/sparse/indices/byteOffset: 4294967294 is past the end of its bufferView"},
+     "/accessors/0/sparse/indices/byteOffset: expected an integer in [0, 2147483647], got the number 4294967294"},
+    {"SparseOffsetPastTheView", "/accessors/0/sparse",
+     R"({"count": 1, "indices": {"bufferView": 1, "byteOffset": 1000, "componentType": 5123}, "values": {"bufferView": 0}})",
+     "/accessors/0/sparse/indices/byteOffset: 1000 is past the end of its bufferView (6 bytes)"},
     {"SparseValuesTooLong", "/accessors/0/sparse",
      R"({"count": 3, "indices": {"bufferView": 1, "componentType": 5123}, "values": {"bufferView": 0, "byteOffset": 12}})",
      "/accessors/0/sparse/values: 3 elements of 12 bytes from offset 12 do not fit"},
     {"SparseIndicesCount2To31", "/accessors/0",
      R"({"componentType": 5126, "count": 3000000000, "type": "VEC3", "sparse": {"count": 2147483648,
          "indices": {"bufferView": 1, "componentType": 5125}, "values": {"bufferView": 0}}})",
-     "/accessors/0/count: 3000000000 elements without a bufferView"},
+     "/accessors/0/sparse/count: expected an integer in [0, 2147483647], got the number 2147483648"},
 };
 
 class ByteRange : public ::testing::TestWithParam<Mutation> {};
@@ -259,6 +262,11 @@ const Mutation kValidatorClasses[] = {
     {"CountWrittenAsFloat", "/accessors/0/count", "3.0",
      "/accessors/0/count: expected an integer >= 0 written without a fraction, got the number 3.0"},
     {"OffsetWrittenAsFloat", "/bufferViews/1/byteOffset", "36.0", "/bufferViews/1/byteOffset: expected an integer >= 0 written"},
+    // tinygltf keeps these in int: 2^32 + 1 would be TEXCOORD_1, 2^32 + 9729 a valid LINEAR filter.
+    {"TexCoord2To32Plus1", "/materials/0/normalTexture", R"({"index": 0, "texCoord": 4294967297})",
+     "/materials/0/normalTexture/texCoord: expected an integer in [0, 2147483647], got the number 4294967297"},
+    {"SamplerEnum2To32", "/samplers/0/magFilter", "4294977025", "/samplers/0/magFilter: expected an integer in [0, 2147483647]"},
+    {"PrimitiveMode2To32", "/meshes/0/primitives/0/mode", "4294967300", "/meshes/0/primitives/0/mode: expected an integer in"},
     {"MatrixWithTrs", "/nodes/1/matrix", "[1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,3,1]", "/nodes/1: has both a matrix and translation"},
     {"ShearedMatrix", "/nodes/0/matrix", "[1,0,0,0, 1,1,0,0, 0,0,1,0, 0,0,0,1]", "/nodes/0/matrix: is not decomposable"},
     {"ProjectiveMatrix", "/nodes/0/matrix", "[1,0,0,0.5, 0,1,0,0, 0,0,1,0, 0,0,0,1]", "last row is not 0, 0, 0, 1"},
