@@ -465,6 +465,19 @@ TEST(HostileInput, ErrorsQuoteAtMostAFewHundredCharacters) {
   }
 }
 
+// An accessor without a bufferView may hold up to 2^24 zeros; referenced by
+// many primitives, its reads would multiply the memory: capped.
+TEST(HostileInput, SharedAccessorsCannotMultiplyMemory) {
+  TempDir dir;
+  Json document = validDocument();
+  document["accessors"].push_back(Json::parse(R"({"componentType": 5126, "count": 1048576, "type": "VEC3",
+      "sparse": {"count": 1, "indices": {"bufferView": 1, "componentType": 5123}, "values": {"bufferView": 0}}})"));
+  Json& primitives = document["meshes"][0]["primitives"];
+  primitives = Json::array();
+  for (int i = 0; i < 64; ++i) primitives.push_back({{"attributes", {{"POSITION", 2}}}});
+  EXPECT_THAT(gltfError(writeGltf(dir, document)), HasSubstr("is one accessor shared by thousands of primitives?"));
+}
+
 TEST(HostileInput, ManyWarningsAreSummarized) {
   TempDir dir;
   Json document = validDocument();
