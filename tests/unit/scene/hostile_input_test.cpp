@@ -516,6 +516,11 @@ const SceneCase kSceneCases[] = {
     {"KeyPosition", R"({"objects": [], "cameraPaths": [{"type": "keys", "keys": [{"t": 0, "position": [0, 0, 3e38], "target": [0, 0, 0]}]}]})",
      "/cameraPaths/0/keys/0/position/2: 3e+38 is beyond +-1e18"},
     {"Number1e999", R"({"objects": [], "lights": [{"type": "point", "intensity": 1e999}]})", "invalid JSON"},
+    // Finite floats whose squared length overflows: normalizing gave a zero direction or rotation.
+    {"Direction3e38", R"({"objects": [], "lights": [{"type": "directional", "direction": [3e38, 0, 0]}]})",
+     "/lights/0/direction/0: 3e+38 is beyond +-1e18"},
+    {"Rotation3e38", R"({"objects": [{"gltf": "hostile.gltf", "rotation": [0, 3e38, 0, 1]}]})",
+     "/objects/0/rotation/1: 3e+38 is beyond +-1e18"},
     {"HostileGltf", R"({"objects": [{"gltf": "bad.gltf"}]})", "/objects/0/gltf: "},
     {"LongUnknownKey", R"({"objects": [{"gltf": "hostile.gltf", "LONGKEY": 1}]})", "unknown property 'kkkkk"},
 };
