@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -6,6 +7,7 @@
 
 #include <shadelgraph/scene/gltf_accessor.hpp>
 #include <shadelgraph/scene/gltf_mesh.hpp>
+#include <shadelgraph/scene/input_limits.hpp>
 #include <shadelgraph/scene/normals.hpp>
 #include <shadelgraph/scene/tangents.hpp>
 #include <shadelgraph/scene/triangulate.hpp>
@@ -38,7 +40,14 @@ std::string toText(const glm::vec<N, float>& v) {
 class PrimitiveBuilder {
  public:
   PrimitiveBuilder(const GltfContext& context, Scene& scene, int& defaultMaterial)
-      : context_(context), scene_(scene), defaultMaterial_(defaultMaterial) {}
+      : context_(context), scene_(scene), defaultMaterial_(defaultMaterial) {
+    // Every accessor is read once per primitive that uses it, so thousands of
+    // primitives sharing one large accessor would multiply the file's bytes:
+    // reads are capped at 8x the buffers' bytes plus 64 MiB.
+    uint64_t bufferBytes = 0;
+    for (const tinygltf::Buffer& buffer : context.model.buffers) bufferBytes += buffer.data.size();
+    readBudget_ = 8 * bufferBytes + (uint64_t{64} << 20);
+  }
 
   // nullopt: the primitive is skipped (with a warning).
   std::optional<Primitive> build(const tinygltf::Primitive& in, const std::string& where) {
@@ -95,6 +104,10 @@ class PrimitiveBuilder {
 
   // One warning per kind of repair, not one per primitive.
   void reportRepairs() {
+    if (!minMaxMismatches_.empty())
+      context_.warnings.push_back("accessor min/max differ from the data (ignored: bounds are computed): " +
+                                  minMaxMismatches_.front() +
+                                  (minMaxMismatches_.size() > 1 ? " and " + std::to_string(minMaxMismatches_.size() - 1) + " more" : ""));
     for (const auto& [what, primitives] : repairs_)
       context_.warnings.push_back(what + ": " + primitives.front() +
                                   (primitives.size() > 1 ? " and " + std::to_string(primitives.size() - 1) + " more" : ""));
@@ -102,6 +115,21 @@ class PrimitiveBuilder {
 
  private:
   [[noreturn]] void fail(const std::string& what) const { throw InvalidAsset(where_ + ": " + what); }
+
+  // Charged before reading: counts were checked against the bytes behind
+  // them (unbacked ones bounded), so count x element size cannot overflow.
+  PackedAccessor read(int index, const std::string& what) {
+    if (index >= 0 && static_cast<size_t>(index) < context_.model.accessors.size()) {
+      const tinygltf::Accessor& accessor = context_.model.accessors[static_cast<size_t>(index)];
+      const int elementSize = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(accessor.componentType)) *
+                              tinygltf::GetNumComponentsInType(static_cast<uint32_t>(accessor.type));
+      bytesRead_ += accessor.count * static_cast<uint64_t>(std::clamp(elementSize, 1, 64));
+    }
+    if (bytesRead_ > readBudget_)
+      fail("the primitives would read " + std::to_string(bytesRead_) + " bytes of accessors, more than 8 times the " +
+           "file's buffers plus 64 MiB (" + std::to_string(readBudget_) + "): is one accessor shared by thousands of primitives?");
+    return readAccessor(context_.model, index, what);
+  }
 
   void warnMissingTexCoords(const Primitive& primitive) {
     const Material& material = scene_.materials[static_cast<size_t>(primitive.material)];
@@ -123,19 +151,46 @@ class PrimitiveBuilder {
     const auto it = in_->attributes.find(name);
     if (it == in_->attributes.end()) return {};
     const std::string what = where_ + " " + name;
-    const PackedAccessor accessor = readAccessor(context_.model, it->second, what);
+    const PackedAccessor accessor = read(it->second, what);
     checkFormat(accessor, format, name, it->second);
     if (vertexCount && accessor.count != *vertexCount)
       fail(std::string(name) + " has " + std::to_string(accessor.count) + " elements, POSITION has " +
            std::to_string(*vertexCount));
     const std::vector<float> floats = toFloats(accessor);
     std::vector<glm::vec<N, float>> out(accessor.count);
+    const bool position = std::string_view(name) == "POSITION";
     for (size_t i = 0; i < accessor.count; ++i) {
       for (int c = 0; c < N; ++c) out[i][c] = floats[i * N + static_cast<size_t>(c)];
-      for (int c = 0; c < N; ++c)
+      for (int c = 0; c < N; ++c) {
         if (!std::isfinite(out[i][c])) fail(std::string(name) + " " + std::to_string(i) + " is not finite: " + toText(out[i]));
+        if (position && static_cast<double>(std::abs(out[i][c])) > kMaxCoordinate)
+          fail("POSITION " + std::to_string(i) + " " + toText(out[i]) +
+               " is beyond +-1e18, where squared lengths overflow 32-bit float");
+      }
     }
+    checkMinMax(context_.model.accessors[static_cast<size_t>(it->second)], floats, N, it->second);
     return out;
+  }
+
+  // ACCESSOR_MIN_MISMATCH / ACCESSOR_MAX_MISMATCH: a warning, not an error.
+  // The loader computes bounds from the data and never reads min/max, so a
+  // wrong declaration changes nothing that is drawn.
+  void checkMinMax(const tinygltf::Accessor& accessor, const std::vector<float>& floats, int components, int index) {
+    const auto n = static_cast<size_t>(components);
+    if (floats.empty() || accessor.normalized) return;  // normalized: min/max are in the stored integers
+    for (const auto& [declared, isMax] : {std::pair{&accessor.minValues, false}, std::pair{&accessor.maxValues, true}}) {
+      if (declared->size() != n) continue;
+      for (size_t c = 0; c < n; ++c) {
+        float actual = floats[c];
+        for (size_t i = c; i < floats.size(); i += n) actual = isMax ? std::max(actual, floats[i]) : std::min(actual, floats[i]);
+        const auto stated = static_cast<float>((*declared)[c]);
+        if (std::abs(actual - stated) > 1e-5f * std::max(1.0f, std::abs(actual))) {
+          minMaxMismatches_.push_back("/accessors/" + std::to_string(index) + "/" + (isMax ? "max/" : "min/") +
+                                      std::to_string(c));
+          break;
+        }
+      }
+    }
   }
 
   void checkFormat(const PackedAccessor& accessor, const AttributeFormat& format, const char* name, int index) const {
@@ -154,7 +209,7 @@ class PrimitiveBuilder {
   std::vector<glm::vec4> colors(size_t vertexCount) {
     const auto it = in_->attributes.find("COLOR_0");
     if (it == in_->attributes.end()) return {};
-    const PackedAccessor accessor = readAccessor(context_.model, it->second, where_ + " COLOR_0");
+    const PackedAccessor accessor = read(it->second, where_ + " COLOR_0");
     checkFormat(accessor, {{3, 4}, true}, "COLOR_0", it->second);
     if (accessor.count != vertexCount)
       fail("COLOR_0 has " + std::to_string(accessor.count) + " elements, POSITION has " + std::to_string(vertexCount));
@@ -172,7 +227,7 @@ class PrimitiveBuilder {
   std::vector<uint32_t> triangleList(int mode, size_t vertexCount) {
     std::vector<uint32_t> corners;
     if (in_->indices >= 0) {
-      const PackedAccessor accessor = readAccessor(context_.model, in_->indices, where_ + " indices");
+      const PackedAccessor accessor = read(in_->indices, where_ + " indices");
       const int type = accessor.componentType;
       if (accessor.components != 1 ||
           (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
@@ -183,7 +238,8 @@ class PrimitiveBuilder {
       for (size_t i = 0; i < corners.size(); ++i)
         if (corners[i] >= vertexCount)
           fail("index " + std::to_string(corners[i]) + " (indices[" + std::to_string(i) +
-               "]) is out of range: the primitive has " + std::to_string(vertexCount) + " vertices");
+               "]) is out of range: the primitive has " + std::to_string(vertexCount) + " vertices (/accessors/" +
+               std::to_string(in_->indices) + ", ACCESSOR_INDEX_OOB)");
     } else {
       corners.resize(vertexCount);
       std::iota(corners.begin(), corners.end(), 0u);
@@ -248,6 +304,9 @@ class PrimitiveBuilder {
   const tinygltf::Primitive* in_ = nullptr;
   std::string where_;
   std::map<std::string, std::vector<std::string>> repairs_;
+  std::vector<std::string> minMaxMismatches_;
+  uint64_t bytesRead_ = 0;
+  uint64_t readBudget_ = 0;
 };
 
 }  // namespace
