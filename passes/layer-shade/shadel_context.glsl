@@ -110,7 +110,8 @@ bool sgBeginShadel(out Surface s) {
   s.position = (o.world * vec4(v0.position * b.x + v1.position * b.y + v2.position * b.z, 1.0)).xyz;
   s.normal = normalize(normalMatrix * (v0.normal * b.x + v1.normal * b.y + v2.normal * b.z));
   vec4 t = v0.tangent * b.x + v1.tangent * b.y + v2.tangent * b.z;
-  s.tangent = vec4(mat3(o.world) * t.xyz, v0.tangent.w);
+  // A mirroring world matrix flips cross(normal, tangent): flip the handedness with it (as forward.vert).
+  s.tangent = vec4(mat3(o.world) * t.xyz, determinant(mat3(o.world)) < 0.0 ? -v0.tangent.w : v0.tangent.w);
   s.uv0 = v0.uv0 * b.x + v1.uv0 * b.y + v2.uv0 * b.z;
   s.uv1 = v0.uv1 * b.x + v1.uv1 * b.y + v2.uv1 * b.z;
   s.color = v0.color * b.x + v1.color * b.y + v2.color * b.z;
