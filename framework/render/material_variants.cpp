@@ -98,6 +98,7 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
   undefineParameters(out, layer);
   out << "shared uint sgReusedCount, sgComputedCount;\n"
       << "void main() {\n"
+      << "  if (!sgWorkGroupInList()) return;  // the surplus of a dispatch's last row\n"
       << "  Surface s;\n"
       << "  bool onSurface = sgBeginShadel(s);\n"
       << "  vec4 value = onSurface ? " << layer.function << "(s) : vec4(0.0);\n"

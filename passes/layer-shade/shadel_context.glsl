@@ -68,11 +68,17 @@ vec3 sgBarycentrics(vec2 p, vec2 a, vec2 b, vec2 c) {
 
 vec2 sgShadingUv(SgVertex v, SgDecoupledObject o) { return (o.shadingUvSet == 1u ? v.uv1 : v.uv0) - o.tileOffset; }
 
+// This workgroup's place in the object's work list (one chunk each): dispatches
+// run in rows of up to 65,535 groups (work_offsets.comp), so the last row may
+// reach past the list's end; those groups do nothing (sgWorkGroupInList).
+uint sgWorkGroupIndex() { return gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x; }
+bool sgWorkGroupInList() { return sgWorkGroupIndex() < work[sgObjectChunksSlot(sgPush.objectIndex)]; }
+
 // Finds this invocation's shadel (sgShadel) and, if it lies on the object,
 // its surface point. False: write nothing meaningful (the layer gets vec4(0)).
 bool sgBeginShadel(out Surface s) {
   SgDecoupledObject o = objects[sgPush.objectIndex];
-  uint item = sgWorkItemSlot(work[sgObjectOffsetSlot(sgPush.objectIndex)] + gl_WorkGroupID.x);
+  uint item = sgWorkItemSlot(work[sgObjectOffsetSlot(sgPush.objectIndex)] + sgWorkGroupIndex());
   uint entryIndex = work[item], chunkIndex = work[item + 1u], level = work[item + 2u], physical = work[item + 3u];
   uint texelIndex = gl_LocalInvocationID.y * SG_CHUNK_SIZE + gl_LocalInvocationID.x;
   sgShadel.target = ivec2(sgStorageTexel(physical, texelIndex, params.storageWidthChunks));
