@@ -79,19 +79,21 @@ INSTANTIATE_TEST_SUITE_P(Biases, BiasExtremes,
                          ::testing::Values(BiasCase{"-2", -2.0f, {32.0, 2.5}}, BiasCase{"+6", 6.0f, {24.0, 8.5}}),
                          [](const auto& testInfo) { return testInfo.param.bias < 0 ? std::string("Minus2") : std::string("Plus6"); });
 
-// A plane whose level 0 is 4096 shadels a side (the largest, from the triangle
-// term: 2M triangles would be needed; a 4096-texel texture gives it directly)
-// spans the 2560x1440 frame at about a shadel a pixel: one object's layer-shade
-// needs more chunks (one workgroup each) than a dispatch dimension allows.
+// A 16:9 plane whose level 0 is 2048 shadels a side (from its 2048-texel
+// texture) just overfills the 2560x1440 view: about 1.4 shadels a pixel
+// vertically, so composite reads levels 0 and 1, 95% of each visible. That is
+// about 62,500 + 15,600 chunks for one object, one workgroup each: more than
+// one dispatch dimension allows.
 TEST(ShadeSpace, ScreenFillingObjectAt2560x1440ExceedsOneDispatchDimension) {
+  constexpr uint32_t kTexels = 2048;
   scene::Scene s;
   s.samplers.push_back({});
-  scene::Texture big{.name = "4096 checker", .width = 4096, .height = 4096};
-  big.pixels.resize(size_t(4096) * 4096 * 4);
-  for (uint32_t y = 0; y < 4096; ++y)
-    for (uint32_t x = 0; x < 4096; ++x) {
-      uint8_t* p = &big.pixels[(size_t(y) * 4096 + x) * 4];
-      const bool odd = ((x / 64) + (y / 64)) % 2;
+  scene::Texture big{.name = "big checker", .width = kTexels, .height = kTexels};
+  big.pixels.resize(size_t(kTexels) * kTexels * 4);
+  for (uint32_t y = 0; y < kTexels; ++y)
+    for (uint32_t x = 0; x < kTexels; ++x) {
+      uint8_t* p = &big.pixels[(size_t(y) * kTexels + x) * 4];
+      const bool odd = ((x / 32) + (y / 32)) % 2;
       p[0] = odd ? 200 : 60;
       p[1] = uint8_t(80 + (x * 97 + y * 31) % 64);
       p[2] = odd ? 70 : 180;
@@ -100,14 +102,13 @@ TEST(ShadeSpace, ScreenFillingObjectAt2560x1440ExceedsOneDispatchDimension) {
   s.textures.push_back(std::move(big));
   scene::Material m{.name = "big checker", .metallicFactor = 0.0f, .roughnessFactor = 0.7f};
   m.baseColorTexture.texture = 0;
-  placeMesh(s, scene::makePlane(16.0f, 16.0f, 4), addMaterial(s, m),
+  placeMesh(s, scene::makePlane(16.4f, 9.2f, 4), addMaterial(s, m),
             glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), {1.0f, 0.0f, 0.0f}));  // facing +Z
   s.lights.push_back({.name = "sun", .type = scene::LightType::Directional, .intensity = 2.5f,
                       .direction = glm::normalize(glm::vec3(-0.2f, -0.3f, -1.0f))});
-  // 10 of the 16 units across the view: 2560 of the 4096 shadels over 2560 pixels.
-  // Half the width over the distance is 5/9; times 1440/2560 vertically: 5/16.
-  const float yfov = 2.0f * std::atan(5.0f / 16.0f);
-  scene::Camera camera = cameraAt({0.0f, 0.0f, 9.0f}, {0.0f, 0.0f, 0.0f}, 0.1f, 100.0f, yfov);
+  // From 9 units: 9 units of height and 16 of width in view.
+  const scene::Camera camera =
+      cameraAt({0.0f, 0.0f, 9.0f}, {0.0f, 0.0f, 0.0f}, 0.1f, 100.0f, 2.0f * std::atan(0.5f));
   const BothPaths both = renderBothPaths(s, 2560, 1440, camera);
   const auto c = both.decoupled.stats.counters;
   std::printf("2560x1440: %u chunks allocated for one object (dispatch limit 65535), %u covered pixels\n",
