@@ -50,6 +50,7 @@ void PassContext::beginRendering(std::initializer_list<ColorTarget> colors, std:
   vkCmdSetViewport(cmd_, 0, 1, &viewport);
   vkCmdSetScissor(cmd_, 0, 1, &scissor);
   vkCmdSetCullMode(cmd_, VK_CULL_MODE_NONE);  // dynamic in every pipeline; draws may change it
+  vkCmdSetFrontFace(cmd_, VK_FRONT_FACE_COUNTER_CLOCKWISE);  // likewise (mirrored instances flip it)
 }
 
 void PassContext::bind(const gpu::Pipeline& pipeline, std::initializer_list<gpu::DescriptorWrite> writes) const {

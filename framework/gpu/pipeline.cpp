@@ -94,7 +94,7 @@ Pipeline::Pipeline(const Context& context, ShaderCompiler& compiler, const Pipel
   viewport.scissorCount = 1;
   VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
   raster.polygonMode = VK_POLYGON_MODE_FILL;
-  raster.frontFace = desc.frontFace;
+  raster.frontFace = desc.frontFace;  // ignored: front face is dynamic state (set per draw)
   raster.lineWidth = 1.0f;
   VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
   multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
@@ -119,10 +119,12 @@ Pipeline::Pipeline(const Context& context, ShaderCompiler& compiler, const Pipel
   VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
   blend.attachmentCount = static_cast<uint32_t>(blends.size());
   blend.pAttachments = blends.data();
-  // Cull mode is dynamic so one pipeline draws single- and double-sided materials.
-  VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR, VK_DYNAMIC_STATE_CULL_MODE};
+  // Cull mode is dynamic so one pipeline draws single- and double-sided
+  // materials; front face so it draws mirrored instances (negative determinant).
+  VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR, VK_DYNAMIC_STATE_CULL_MODE,
+                                    VK_DYNAMIC_STATE_FRONT_FACE};
   VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-  dynamic.dynamicStateCount = 3;
+  dynamic.dynamicStateCount = 4;
   dynamic.pDynamicStates = dynamicStates;
   VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
   rendering.colorAttachmentCount = static_cast<uint32_t>(desc.colorFormats.size());

@@ -42,6 +42,10 @@ const char* kAccessorMacros =
     "#define sgLayer(name) SG_LAYER_CALL(name, ivec2(0))\n"
     "#define sgLayerAt(name, offset) SG_LAYER_CALL(name, offset)\n";
 
+bool isHalfFloat(graph::Format format) {
+  return format == graph::Format::R16F || format == graph::Format::RG16F || format == graph::Format::RGBA16F;
+}
+
 }  // namespace
 
 plugin::PluginError layerCompileError(const gpu::ShaderCompileError& error, const gpu::ShaderLibrary& library,
@@ -133,10 +137,14 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
   undefineParameters(out, layer);
   out << "shared uint sgReusedCount, sgComputedCount;\n"
       << "void main() {\n"
+      << "  if (!sgWorkGroupInList()) return;  // the surplus of a dispatch's last row\n"
       << "  Surface s;\n"
       << "  bool onSurface = sgBeginShadel(s);\n"
       << "  vec4 value = onSurface ? " << layer.function << "(s) : vec4(0.0);\n"
-      << "  imageStore(sgLayerOutput, sgShadel.target, value);\n";
+      // Half floats overflow to Inf above 65,504 on some devices (lavapipe saturates): clamp, so
+      // composite's filter never weighs an Inf (Inf x 0 = NaN).
+      << "  imageStore(sgLayerOutput, sgShadel.target, "
+      << (isHalfFloat(layer.format) ? "clamp(value, -65504.0, 65504.0)" : "value") << ");\n";
   if (layer.persistent) {
     // One atomic per workgroup, not per shadel.
     out << "  if (gl_LocalInvocationIndex == 0u) { sgReusedCount = 0u; sgComputedCount = 0u; }\n"

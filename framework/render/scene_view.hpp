@@ -24,7 +24,8 @@ struct SceneView {
   std::map<std::string, graph::ResourceHandle> frameImages = {};
 };
 
-// Push constants and cull mode for one draw, then the indexed draw.
+// Push constants, cull mode and front face (clockwise when the world matrix
+// mirrors) for one draw, then the indexed draw.
 void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const DrawItem& draw, uint32_t objectId);
 
 }  // namespace sg::render

@@ -17,7 +17,9 @@ void main() {
   mat3 normalMatrix = transpose(inverse(mat3(object.model)));
   outPosition = world.xyz;
   outNormal = normalMatrix * inNormal;
-  outTangent = vec4(mat3(object.model) * inTangent.xyz, inTangent.w);
+  // A mirroring model matrix flips cross(normal, tangent): flip the handedness with it.
+  float handedness = determinant(mat3(object.model)) < 0.0 ? -1.0 : 1.0;
+  outTangent = vec4(mat3(object.model) * inTangent.xyz, inTangent.w * handedness);
   outUv0 = inUv0;
   outUv1 = inUv1;
   outColor = inColor;

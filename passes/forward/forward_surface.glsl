@@ -51,6 +51,7 @@ bool sgPrevious(out vec4 value) {
 
 // The stack's result as the pass wants it: alpha-tested, premultiplied for blending.
 void sgWriteForward(vec4 shaded) {
+  shaded.rgb = min(shaded.rgb, vec3(65504.0));  // the HDR target's half-float maximum, not Inf
   if (material.flags.x == SG_ALPHA_MASK && shaded.a < material.params.w) discard;
   if (material.flags.x == SG_ALPHA_BLEND)
     outColor = vec4(shaded.rgb * shaded.a, shaded.a);  // premultiplied

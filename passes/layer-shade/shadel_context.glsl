@@ -68,11 +68,17 @@ vec3 sgBarycentrics(vec2 p, vec2 a, vec2 b, vec2 c) {
 
 vec2 sgShadingUv(SgVertex v, SgDecoupledObject o) { return (o.shadingUvSet == 1u ? v.uv1 : v.uv0) - o.tileOffset; }
 
+// This workgroup's place in the object's work list (one chunk each): dispatches
+// run in rows of up to 65,535 groups (work_offsets.comp), so the last row may
+// reach past the list's end; those groups do nothing (sgWorkGroupInList).
+uint sgWorkGroupIndex() { return gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x; }
+bool sgWorkGroupInList() { return sgWorkGroupIndex() < work[sgObjectChunksSlot(sgPush.objectIndex)]; }
+
 // Finds this invocation's shadel (sgShadel) and, if it lies on the object,
 // its surface point. False: write nothing meaningful (the layer gets vec4(0)).
 bool sgBeginShadel(out Surface s) {
   SgDecoupledObject o = objects[sgPush.objectIndex];
-  uint item = sgWorkItemSlot(work[sgObjectOffsetSlot(sgPush.objectIndex)] + gl_WorkGroupID.x);
+  uint item = sgWorkItemSlot(work[sgObjectOffsetSlot(sgPush.objectIndex)] + sgWorkGroupIndex());
   uint entryIndex = work[item], chunkIndex = work[item + 1u], level = work[item + 2u], physical = work[item + 3u];
   uint texelIndex = gl_LocalInvocationID.y * SG_CHUNK_SIZE + gl_LocalInvocationID.x;
   sgShadel.target = ivec2(sgStorageTexel(physical, texelIndex, params.storageWidthChunks));
@@ -110,7 +116,8 @@ bool sgBeginShadel(out Surface s) {
   s.position = (o.world * vec4(v0.position * b.x + v1.position * b.y + v2.position * b.z, 1.0)).xyz;
   s.normal = normalize(normalMatrix * (v0.normal * b.x + v1.normal * b.y + v2.normal * b.z));
   vec4 t = v0.tangent * b.x + v1.tangent * b.y + v2.tangent * b.z;
-  s.tangent = vec4(mat3(o.world) * t.xyz, v0.tangent.w);
+  // A mirroring world matrix flips cross(normal, tangent): flip the handedness with it (as forward.vert).
+  s.tangent = vec4(mat3(o.world) * t.xyz, determinant(mat3(o.world)) < 0.0 ? -v0.tangent.w : v0.tangent.w);
   s.uv0 = v0.uv0 * b.x + v1.uv0 * b.y + v2.uv0 * b.z;
   s.uv1 = v0.uv1 * b.x + v1.uv1 * b.y + v2.uv1 * b.z;
   s.color = v0.color * b.x + v1.color * b.y + v2.color * b.z;

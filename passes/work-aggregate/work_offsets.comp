@@ -2,11 +2,14 @@
 // Per object: where its work list starts (a prefix sum of the chunk counts)
 // and its VkDispatchIndirectCommand, which every layer of its material
 // dispatches (they shade the same chunks). Objects with nothing visible get
-// {0, 1, 1}. One invocation: object counts are small.
+// {0, 1, 1}. One invocation: object counts are small. A dispatch dimension
+// holds at most 65,535 workgroups (the guaranteed maxComputeWorkGroupCount), so
+// a longer list runs as rows of that many; the last row's surplus groups exit.
 #include <plugins/decoupled/shaders/decoupled.glsl>
 #include <plugins/decoupled/shaders/work.glsl>
 
 layout(local_size_x = 1) in;
+const uint kMaxGroupsPerRow = 65535u;
 layout(set = 0, binding = 9, std430) writeonly buffer IndirectArgs { uint args[]; };
 
 void main() {
@@ -14,8 +17,8 @@ void main() {
   for (uint o = 0u; o < params.objectCount; ++o) {
     uint chunks = work[sgObjectChunksSlot(o)];
     work[sgObjectOffsetSlot(o)] = offset;
-    args[3u * o] = chunks;
-    args[3u * o + 1u] = 1u;
+    args[3u * o] = min(chunks, kMaxGroupsPerRow);
+    args[3u * o + 1u] = max(1u, (chunks + kMaxGroupsPerRow - 1u) / kMaxGroupsPerRow);
     args[3u * o + 2u] = 1u;
     offset += chunks;
   }

@@ -1,0 +1,58 @@
+#include "hdr_capture.hpp"
+
+#include <glm/gtc/packing.hpp>
+
+#include <shadelgraph/gpu/barriers.hpp>
+#include <shadelgraph/gpu/pass_context.hpp>
+#include <shadelgraph/graph/render_graph.hpp>
+
+namespace sg::test {
+
+void HdrCapture::registerIn(plugin::Registry& registry) {
+  registry.beginPlugin("stability-test");
+  // The capture is the only reader of the version it copies (readers on several
+  // queues would share one General layout, which exposure's and tonemap's
+  // descriptors do not expect): exposure and tonemap get a copy.
+  registry.addPostPass({.name = "hdr-capture", .declare = [this](graph::RenderGraph& graph, graph::ResourceHandle color) {
+                          auto copy = graph.createImage("hdr (captured)", {.format = graph::Format::RGBA16F});
+                          auto& pass = graph.addPass("hdr-capture", graph::QueueClass::Graphics, graph::PassKind::Transfer);
+                          pass.read(color, graph::Access::TransferSrc);
+                          copy = pass.write(copy, graph::Access::TransferDst);
+                          pass.execute([this, color, copy](PassContext& ctx) { record(ctx, ctx.image(color), ctx.image(copy)); });
+                          return copy;
+                        }});
+}
+
+void HdrCapture::record(PassContext& ctx, const gpu::Image& hdr, const gpu::Image& copy) {
+  width_ = hdr.desc().width;
+  height_ = hdr.desc().height;
+  const VkDeviceSize bytes = VkDeviceSize(width_) * height_ * 8;  // RGBA16F
+  if (!buffer_ || buffer_.size() < bytes)
+    buffer_ = gpu::Buffer(device_->context(), device_->memory(),
+                          {bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryLocation::Readback, "hdr capture",
+                           "readback"});
+  // Last frame's copy and host read are done (frames are waited for).
+  gpu::memoryBarrier(ctx.cmd(), {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+                     {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
+  const VkImageSubresourceLayers layers{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  VkBufferImageCopy region{};
+  region.imageSubresource = layers;
+  region.imageExtent = {width_, height_, 1};
+  vkCmdCopyImageToBuffer(ctx.cmd(), hdr.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer_.handle(), 1, &region);
+  VkImageCopy same{};
+  same.srcSubresource = same.dstSubresource = layers;
+  same.extent = {width_, height_, 1};
+  vkCmdCopyImage(ctx.cmd(), hdr.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, copy.handle(),
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &same);
+  gpu::memoryBarrier(ctx.cmd(), {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+                     {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT});
+}
+
+std::vector<glm::vec4> HdrCapture::pixels() const {
+  std::vector<glm::vec4> out(size_t(width_) * height_);
+  const auto* halves = reinterpret_cast<const uint64_t*>(buffer_.mapped());
+  for (size_t i = 0; i < out.size(); ++i) out[i] = glm::unpackHalf4x16(halves[i]);
+  return out;
+}
+
+}  // namespace sg::test

@@ -1,0 +1,66 @@
+#pragma once
+// A scene rendered forward or decoupled (the decoupled recipe, every object in
+// one mode) with validation on, any message failing the test, and each
+// frame's HDR colour read back next to its 8-bit output.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <optional>
+
+#include <builtin_materials.hpp>
+#include <builtin_shaders.hpp>
+#include <decoupled/decoupled_shading.hpp>
+#include <shadelgraph/gpu/device.hpp>
+#include <shadelgraph/render/renderer.hpp>
+
+#include "device_fixture.hpp"
+#include "hdr_capture.hpp"
+
+namespace sg::test {
+
+struct StabilityFrame {
+  gpu::HostImage ldr;            // the output, sRGB 8-bit
+  std::vector<glm::vec4> hdr;    // the HDR colour before exposure, same size
+  plugins::DecoupledStats stats;  // of this frame (decoupled objects only)
+};
+
+class StabilitySession {
+ public:
+  StabilitySession(scene::Scene s, scene::ShadingMode mode, plugins::DecoupledSettings settings = {})
+      : scene_(std::move(s)), context_(validatedOptions()) {
+    materials::registerBuiltinMaterials(registry_);
+    capture_.registerIn(registry_);
+    shading_ = std::make_unique<plugins::DecoupledShading>(plugins::chooseShading(scene_, mode), settings);
+    device_ = std::make_unique<gpu::Device>(context_);
+    device_->shaders().add(gpu::builtinShaders());
+    capture_.setDevice(*device_);
+    renderer_ = std::make_unique<render::Renderer>(*device_, scene_, shading_->recipe(), registry_);
+  }
+  ~StabilitySession() {
+    renderer_.reset();
+    shading_.reset();
+    capture_ = HdrCapture{};  // its buffer comes from the device's allocator
+    device_.reset();
+    for (const auto& m : context_.validationLog().messages()) ADD_FAILURE() << "validation: " << m.text;
+  }
+  StabilityFrame render(uint32_t width, uint32_t height, std::optional<scene::Camera> camera = {}) {
+    StabilityFrame f;
+    f.ldr = renderer_->render({.width = width, .height = height, .cameraOverride = camera}).image;
+    f.hdr = capture_.pixels();
+    f.stats = shading_->stats();
+    return f;
+  }
+  StabilityFrame render(uint32_t size, std::optional<scene::Camera> camera = {}) { return render(size, size, camera); }
+  const scene::Scene& scene() const { return scene_; }
+
+ private:
+  scene::Scene scene_;
+  plugin::Registry registry_;
+  HdrCapture capture_;
+  gpu::Context context_;
+  std::unique_ptr<plugins::DecoupledShading> shading_;
+  std::unique_ptr<gpu::Device> device_;
+  std::unique_ptr<render::Renderer> renderer_;
+};
+
+}  // namespace sg::test
