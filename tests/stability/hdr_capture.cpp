@@ -5,6 +5,7 @@
 #include <shadelgraph/gpu/barriers.hpp>
 #include <shadelgraph/gpu/pass_context.hpp>
 #include <shadelgraph/graph/render_graph.hpp>
+#include <shadelgraph/render/frame_context.hpp>
 
 namespace sg::test {
 
@@ -13,14 +14,22 @@ void HdrCapture::registerIn(plugin::Registry& registry) {
   // The capture is the only reader of the version it copies (readers on several
   // queues would share one General layout, which exposure's and tonemap's
   // descriptors do not expect): exposure and tonemap get a copy.
-  registry.addPostPass({.name = "hdr-capture", .declare = [this](graph::RenderGraph& graph, graph::ResourceHandle color) {
-                          auto copy = graph.createImage("hdr (captured)", {.format = graph::Format::RGBA16F});
-                          auto& pass = graph.addPass("hdr-capture", graph::QueueClass::Graphics, graph::PassKind::Transfer);
-                          pass.read(color, graph::Access::TransferSrc);
-                          copy = pass.write(copy, graph::Access::TransferDst);
-                          pass.execute([this, color, copy](PassContext& ctx) { record(ctx, ctx.image(color), ctx.image(copy)); });
-                          return copy;
-                        }});
+  registry.addPass({.name = "hdr-capture",
+                    .description = "copies the HDR colour to the host",
+                    .reads = {"scene.hdr"},
+                    .writes = {"scene.hdr"},
+                    .declare = [this](render::FrameContext& frame) {
+                      auto& graph = frame.graph();
+                      const auto color = frame.read("scene.hdr");
+                      auto copy = graph.createImage("hdr (captured)", {.format = graph::Format::RGBA16F});
+                      auto& pass = graph.addPass("hdr-capture", graph::QueueClass::Graphics, graph::PassKind::Transfer);
+                      pass.read(color, graph::Access::TransferSrc);
+                      copy = pass.write(copy, graph::Access::TransferDst);
+                      pass.execute([this, color, copy](PassContext& ctx) { record(ctx, ctx.image(color), ctx.image(copy)); });
+                      frame.write("scene.hdr", copy);
+                    }});
+  // The decoupled frame (which shades forward objects too) with the capture last before exposure.
+  registry.addFrame({.name = kHdrCapturedFrame, .base = "decoupled", .passes = {{.pass = "hdr-capture", .before = {"exposure"}}}});
 }
 
 void HdrCapture::record(PassContext& ctx, const gpu::Image& hdr, const gpu::Image& copy) {

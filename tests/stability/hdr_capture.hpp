@@ -1,7 +1,7 @@
 #pragma once
-// Reads the HDR colour back: a post pass (registered like a plugin's, so it
-// runs in the forward and the decoupled recipe alike, after shading and before
-// exposure) that copies the RGBA16F target into a host-visible buffer.
+// Reads the HDR colour back: a pass registered like a plugin's, in a frame
+// (kHdrCapturedFrame) that runs it after shading and before exposure, copying
+// the RGBA16F target into a host-visible buffer.
 #include <cstdint>
 #include <vector>
 
@@ -18,9 +18,11 @@ class PassContext;
 
 namespace sg::test {
 
+inline constexpr const char* kHdrCapturedFrame = "hdr-captured";
+
 class HdrCapture {
  public:
-  // Adds the capture pass to `registry`; the device is the one the frames run on.
+  // Adds the capture pass and kHdrCapturedFrame to `registry`; the device is the one the frames run on.
   void registerIn(plugin::Registry& registry);
   void setDevice(gpu::Device& device) { device_ = &device; }
   // The last frame's HDR colour, row by row (call after the frame completed).

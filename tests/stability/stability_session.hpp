@@ -1,5 +1,5 @@
 #pragma once
-// A scene rendered forward or decoupled (the decoupled recipe, every object in
+// A scene rendered forward or decoupled (the decoupled frame, every object in
 // one mode) with validation on, any message failing the test, and each
 // frame's HDR colour read back next to its 8-bit output.
 #include <gtest/gtest.h>
@@ -7,9 +7,9 @@
 #include <memory>
 #include <optional>
 
-#include <builtin_materials.hpp>
+#include <builtin_plugins.hpp>
 #include <builtin_shaders.hpp>
-#include <decoupled/decoupled_shading.hpp>
+#include <decoupled/decoupled_package.hpp>
 #include <shadelgraph/gpu/device.hpp>
 #include <shadelgraph/render/renderer.hpp>
 
@@ -28,13 +28,14 @@ class StabilitySession {
  public:
   StabilitySession(scene::Scene s, scene::ShadingMode mode, plugins::DecoupledSettings settings = {})
       : scene_(std::move(s)), context_(validatedOptions()) {
-    materials::registerBuiltinMaterials(registry_);
+    plugins::registerBuiltins(registry_);
     capture_.registerIn(registry_);
-    shading_ = std::make_unique<plugins::DecoupledShading>(plugins::chooseShading(scene_, mode), settings);
     device_ = std::make_unique<gpu::Device>(context_);
     device_->shaders().add(gpu::builtinShaders());
     capture_.setDevice(*device_);
-    renderer_ = std::make_unique<render::Renderer>(*device_, scene_, shading_->recipe(), registry_);
+    auto made = plugins::makeDecoupledRenderer(*device_, scene_, registry_, mode, settings, kHdrCapturedFrame);
+    shading_ = std::move(made.shading);
+    renderer_ = std::move(made.renderer);
   }
   ~StabilitySession() {
     renderer_.reset();
@@ -58,7 +59,7 @@ class StabilitySession {
   plugin::Registry registry_;
   HdrCapture capture_;
   gpu::Context context_;
-  std::unique_ptr<plugins::DecoupledShading> shading_;
+  std::shared_ptr<plugins::DecoupledShading> shading_;
   std::unique_ptr<gpu::Device> device_;
   std::unique_ptr<render::Renderer> renderer_;
 };
