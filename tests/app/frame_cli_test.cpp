@@ -1,0 +1,155 @@
+// Composing frames from the command line: `passes`, `--frame-graph` with a
+// registered name or a file, its one-line errors, and `--object-mode`.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+struct Run {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+// Runs the CLI with `args`; stdout and stderr apart.
+Run run(const std::string& args) {
+  const auto errFile = std::filesystem::temp_directory_path() / "sg-frame-cli-stderr.txt";
+  const std::string command = std::string(SG_CLI) + " " + args + " 2>" + errFile.string();
+  Run r;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buffer;
+  size_t n;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.out.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream in(errFile);
+  r.err.assign(std::istreambuf_iterator<char>(in), {});
+  return r;
+}
+
+std::filesystem::path writeFrame(const std::string& name, const std::string& json) {
+  const auto path = std::filesystem::temp_directory_path() / ("sg-frame-" + name + ".json");
+  std::ofstream(path) << json;
+  return path;
+}
+
+// The passes the compiled graph keeps.
+std::set<std::string> keptPasses(const std::string& args) {
+  const auto r = run("graph --json --size 96x64 " + args);
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  std::set<std::string> kept;
+  for (const auto& p : nlohmann::json::parse(r.out)["passes"])
+    if (!p["culled"].get<bool>()) kept.insert(p["name"].get<std::string>());
+  return kept;
+}
+
+TEST(FrameCli, PassesListsEveryRegisteredPassWithItsResourcesAndTheFrames) {
+  const auto r = run(std::string("passes --json --plugin ") + SG_PLUGIN_GOOD);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto json = nlohmann::json::parse(r.out);
+  std::map<std::string, nlohmann::json> passes;
+  for (const auto& p : json["passes"]) passes[p["name"].get<std::string>()] = p;
+  for (const char* name : {"z-prepass", "forward-opaque", "alpha-mask", "alpha-blend", "exposure", "tonemap",
+                           "shadel-clear", "shadel-mark", "support-expand", "shadel-allocate", "work-aggregate",
+                           "layer-shade", "composite", "counters-readback", "decoupled-debug-view", "test-post"})
+    EXPECT_TRUE(passes.count(name)) << name;
+  EXPECT_EQ(passes["composite"]["reads"], nlohmann::json({"scene.hdr", "scene.depth", "shadel.shaded", "shadel.remap",
+                                                          "shadel.counters"}));
+  EXPECT_EQ(passes["composite"]["parameters"][0]["name"], "filter");
+  EXPECT_EQ(passes["exposure"]["queue"], "AsyncCompute");
+  EXPECT_EQ(passes["test-post"]["plugin"], "test-good");
+  EXPECT_EQ(passes["tonemap"]["plugin"], "built-in");
+  EXPECT_EQ(json["frames"]["forward"],
+            nlohmann::json({"z-prepass", "forward-opaque", "alpha-mask", "alpha-blend", "exposure", "tonemap"}));
+  const auto& plugged = json["frames"]["test-frame"];
+  ASSERT_TRUE(plugged.is_array());
+  EXPECT_EQ(plugged[plugged.size() - 3], "test-post") << "before exposure: " << plugged.dump();
+}
+
+TEST(FrameCli, TheForwardFrameHoldsNoDecoupledPass) {
+  const auto kept = keptPasses("--mode decoupled --frame-graph forward");
+  EXPECT_TRUE(kept.count("forward-opaque"));
+  for (const auto& name : kept) EXPECT_EQ(name.rfind("shadel-", 0), std::string::npos) << name;
+  EXPECT_FALSE(kept.count("composite"));
+}
+
+TEST(FrameCli, AFrameFileEditsARegisteredFrame) {
+  // The plugin's pass after alpha-blend in the forward frame, exposure's
+  // neighbour removed: graph and render both take the file.
+  const auto file = writeFrame("edited", R"({"name": "edited", "base": "forward",
+      "passes": [{"pass": "test-post", "after": "alpha-blend"}], "remove": ["alpha-mask"]})");
+  const auto kept = keptPasses(std::string("--plugin ") + SG_PLUGIN_GOOD + " --frame-graph " + file.string());
+  EXPECT_TRUE(kept.count("test-post"));
+  const auto png = std::filesystem::temp_directory_path() / "sg-frame-edited.png";
+  const auto r = run(std::string("render --size 64x64 --plugin ") + SG_PLUGIN_GOOD + " --frame-graph " + file.string() +
+                     " -o " + png.string());
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(png));
+}
+
+// Each broken frame: exit 1 and exactly one line naming the frame, the pass and the resource.
+TEST(FrameCli, ABrokenFrameFailsWithOneLineNamingPassAndResource) {
+  struct Case {
+    const char* json;
+    const char* expected;
+  };
+  const Case cases[] = {
+      {R"({"name": "f", "passes": ["z-prepass", "tonemap"]})",
+       "frame 'f' (%s): pass 'tonemap' reads 'scene.hdr', which no pass of the frame writes"},
+      {R"({"name": "f", "base": "forward", "passes": ["bloom"]})", "frame 'f' (%s): unknown pass 'bloom'"},
+      {R"({"name": "f", "passes": ["z-prepass", "forward-opaque", "tonemap", "exposure"]})",
+       "frame 'f' (%s): pass 'tonemap' reads 'scene.exposure', which only 'exposure' writes, after it"},
+      {R"({"name": "f", "base": "forward", "passes": [{"pass": "test-post", "after": "tonemap", "before": "exposure"}]})",
+       "frame 'f' (%s): after/before constraints (and the resources they read) form a cycle"},
+  };
+  int i = 0;
+  for (const auto& c : cases) {
+    const auto file = writeFrame("broken-" + std::to_string(i++), c.json);
+    char expected[512];
+    std::snprintf(expected, sizeof expected, c.expected, file.string().c_str());
+    const auto r = run(std::string("render --size 32x32 --plugin ") + SG_PLUGIN_GOOD + " --frame-graph " +
+                       file.string() + " -o /dev/null");
+    EXPECT_EQ(r.exitCode, 1) << c.json;
+    const std::string line = r.err.substr(r.err.find("shadelgraph: error:"));
+    EXPECT_NE(line.find(expected), std::string::npos) << line;
+    EXPECT_EQ(std::count(line.begin(), line.end(), '\n'), 1) << line;
+  }
+  const auto r = run("graph --frame-graph no-such-frame");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("no such file, and no frame of that name (known: decoupled, forward)"), std::string::npos)
+      << r.err;
+}
+
+TEST(FrameCli, ObjectModeSetsOneObjectOverTheGlobalMode) {
+  const auto stats = std::filesystem::temp_directory_path() / "sg-frame-object-mode.json";
+  auto r = run("render --size 96x64 --frames 1 --mode decoupled --object-mode \"gold sphere=forward\" -o /dev/null --stats " +
+               stats.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto s = nlohmann::json::parse(std::ifstream(stats));
+  const auto all = s["objects_forward"].get<int>() + s["objects_decoupled"].get<int>();
+  EXPECT_EQ(s["objects_forward"], 1) << "only the gold sphere";
+  r = run("render --size 96x64 --frames 1 --mode forward --object-mode torus=decoupled -o /dev/null --stats " +
+          stats.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  s = nlohmann::json::parse(std::ifstream(stats));
+  EXPECT_EQ(s["objects_decoupled"], 1) << "only the torus";
+  EXPECT_EQ(s["objects_forward"].get<int>() + s["objects_decoupled"].get<int>(), all);
+  r = run("graph --object-mode dragon=forward");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("--object-mode dragon=forward: the scene has no object 'dragon'"), std::string::npos) << r.err;
+  r = run("graph --object-mode torus=sideways");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("expected NAME=forward|decoupled|auto"), std::string::npos) << r.err;
+}
+
+}  // namespace
