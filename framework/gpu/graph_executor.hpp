@@ -72,11 +72,17 @@ class GraphExecutor {
   };
   Transient& transientFor(graph::ResourceId id, const graph::PlannedResource& planned);
   void placeTransients(const graph::CompiledPlan& plan);
+  // The `index`-th command buffer of queue `q` this frame, begun for one submit.
+  VkCommandBuffer beginCommandBuffer(uint32_t q, uint32_t index);
   void recordBarriers(VkCommandBuffer cmd, const graph::CompiledPlan& plan,
                       const std::vector<const graph::Barrier*>& barriers) const;
 
   Device& device_;
+  // Reset at the start of each frame (the last one has been waited for). Its
+  // command buffers are allocated once, as batches first need them, and
+  // re-recorded every frame: a buffer allocated per frame would never return.
   VkCommandPool commandPools_[graph::kQueueClassCount] = {};  // one per logical queue's family
+  std::vector<VkCommandBuffer> commandBuffers_[graph::kQueueClassCount];
   VkSemaphore timelines_[graph::kQueueClassCount] = {};
   uint64_t timelineBase_[graph::kQueueClassCount] = {};
   GpuTimer timer_;
