@@ -49,7 +49,7 @@ void SoakReport::add(uint32_t index, const gpu::FrameTimings& timings) {
   gpuMs_.clear();
   char line[128];
   std::snprintf(line, sizeof line, "%u,%.2f,%.4f,%.4f\n", row.frame, mib(row.rss), row.frameMs, row.gpuMs);
-  out_ << line;
+  out_ << line << std::flush;  // a long run can be watched, and a full disk fails early
   if (!out_) throw std::runtime_error(path_ + ": cannot write soak report (" + std::strerror(errno) + ")");
   rows_.push_back(row);
 }
