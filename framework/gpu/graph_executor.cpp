@@ -136,6 +136,12 @@ const Buffer& GraphExecutor::buffer(graph::ResourceId id) const {
   throw GpuError("render graph: no buffer is bound to resource #" + std::to_string(id.index));
 }
 
+size_t GraphExecutor::commandBufferCount() const {
+  size_t count = 0;
+  for (const auto& buffers : commandBuffers_) count += buffers.size();
+  return count;
+}
+
 VkCommandBuffer GraphExecutor::beginCommandBuffer(uint32_t q, uint32_t index) {
   auto& buffers = commandBuffers_[q];
   if (index >= buffers.size()) {

@@ -58,6 +58,10 @@ class GraphExecutor {
   // on: exact per-pass times; off: passes may overlap, only the frame time is exact).
   void setExactPassTimes(bool exact) { exactPassTimes_ = exact; }
 
+  // Command buffers allocated so far, all queues: as many as the largest
+  // frame's batches, not growing with the number of frames.
+  size_t commandBufferCount() const;
+
   // Bytes of device memory the transients of the last executed plan occupy.
   uint64_t transientBytes() const { return transientBytes_; }
   const Image& image(graph::ResourceId id) const;
