@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <thread>
 
 #include <nlohmann/json.hpp>
@@ -27,6 +28,8 @@
 #include "bench_graph.hpp"
 #include "bench_materials.hpp"
 #include "commands.hpp"
+#include "option_checks.hpp"
+#include "output_file.hpp"
 #include "scene_source.hpp"
 
 namespace sg::app {
@@ -79,7 +82,7 @@ nlohmann::json runPerSceneAndSize(
   for (const auto& scene : scenes.empty() ? std::vector<std::string>{""} : scenes)
     for (const auto& size : sizes) {
       uint32_t w = 0, h = 0;
-      parseSize(size, w, h);
+      parseSize("--sizes", size, w, h);
       runs.push_back(run(scene, w, h));
     }
   return runs;
@@ -249,7 +252,7 @@ nlohmann::json benchScene(gpu::Device& device, const std::string& scenePath, uin
 }
 
 void writeCsv(const std::filesystem::path& file, const nlohmann::json& runs) {
-  std::ofstream csv(file);
+  std::ostringstream csv;
   csv << "scene,width,height,config,decoupled,filter,bias,frame_ms_median,shadels_per_pixel,shade_memory_bytes,"
          "flip_mean,psnr,flicker,flicker_reference,flicker_excess\n";
   for (const auto& run : runs)
@@ -259,9 +262,26 @@ void writeCsv(const std::filesystem::path& file, const nlohmann::json& runs) {
           << (c["bias"].is_null() ? std::string("") : c["bias"].dump()) << ',' << c["frame_ms_median"] << ','
           << c["shadels_per_pixel"] << ',' << c["shade_memory_bytes"] << ',' << c["flip_mean"] << ',' << c["psnr"]
           << ',' << c["flicker"] << ',' << c["flicker_reference"] << ',' << c["flicker_excess"] << '\n';
+  writeTextFile(file, "results", csv.str());
+}
+
+// Every option's value, before the device starts: no empty sweep, no reference beyond the size limit.
+void checkBenchArgs(const BenchArgs& args) {
+  requireInRange("--repetitions", args.repetitions, 1, 100000);
+  requireInRange("--flicker-frames", args.flickerFrames, 2, 10000);  // flicker is the change between frames
+  requireInRange("--reference-scale", args.referenceScale, 1, 8);
+  if (args.sizes.empty()) throw std::invalid_argument("--sizes: expected at least one WIDTHxHEIGHT");
+  for (const auto& size : args.sizes) {
+    uint32_t w = 0, h = 0;
+    parseSize("--sizes", size, w, h);
+    if (uint64_t(std::max(w, h)) * uint32_t(args.referenceScale) > kMaxOutputSide)
+      throw std::invalid_argument("--reference-scale " + std::to_string(args.referenceScale) + ": the reference of " +
+                                  size + " would exceed " + std::to_string(kMaxOutputSide) + " pixels a side");
+  }
 }
 
 void runBench(const BenchArgs& args) {
+  checkBenchArgs(args);
   const std::filesystem::path out = args.out;
   std::filesystem::create_directories(out);
   gpu::Context context;
@@ -280,11 +300,11 @@ void runBench(const BenchArgs& args) {
   });
   if (args.shimmer) {
     uint32_t w = 0, h = 0;
-    parseSize(args.sizes.front(), w, h);
+    parseSize("--sizes", args.sizes.front(), w, h);
     runs.push_back(benchScene(device, "", w, h, args, out, shimmerCamera(), "shimmer"));
   }
   const nlohmann::json results{{"machine", machineJson(context)}, {"runs", runs}};
-  std::ofstream(out / "results.json") << results.dump(2) << "\n";
+  writeTextFile(out / "results.json", "results", results.dump(2) + "\n");
   writeCsv(out / "results.csv", runs);
   std::printf("%-10s %-9s %-22s %9s %8s %8s %7s %9s\n", "scene", "size", "config", "frame ms", "shd/px", "FLIP",
               "PSNR", "flicker+");
@@ -323,10 +343,10 @@ void addBenchCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("bench", "Measure what accuracy costs in time: configurations side by side");
   cmd->add_option("scenes", args.scenes, "scenes (default: the built-in scene)");
   cmd->add_option("--out", args.out, "output directory")->capture_default_str();
-  cmd->add_option("--sizes", args.sizes, "output sizes, e.g. 640x360 1280x720")->capture_default_str();
-  cmd->add_option("--repetitions", args.repetitions, "timed frames per configuration")->capture_default_str();
-  cmd->add_option("--flicker-frames", args.flickerFrames, "frames along the sub-pixel camera path")->capture_default_str();
-  cmd->add_option("--reference-scale", args.referenceScale, "reference samples per pixel side")->capture_default_str();
+  cmd->add_option("--sizes", args.sizes, "output sizes, e.g. 640x360 1280x720 (each side 1 to " + std::to_string(kMaxOutputSide) + ")")->capture_default_str();
+  cmd->add_option("--repetitions", args.repetitions, "timed frames per configuration, 1 or more")->capture_default_str();
+  cmd->add_option("--flicker-frames", args.flickerFrames, "frames along the sub-pixel camera path, 2 or more")->capture_default_str();
+  cmd->add_option("--reference-scale", args.referenceScale, "reference samples per pixel side, 1 to 8")->capture_default_str();
   auto* shimmer = cmd->add_flag("--shimmer", args.shimmer, "add the shimmer case (default scene's gold sphere, close up)");
   cmd->add_option("--materials", args.materials,
                   "instead of the configuration sweep: for each of these materials (comma-separated, e.g. "

@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -22,6 +22,7 @@
 #include <synthetic_graph.hpp>
 
 #include "bench_materials.hpp"
+#include "output_file.hpp"
 
 namespace sg::app {
 namespace {
@@ -154,8 +155,8 @@ void runGraphBench(const GraphBenchArgs& args, const std::filesystem::path& out)
                                {"sizes", sizes},
                                {"ratios", ratios},
                                {"targets", targets}};
-  std::ofstream(out / "graph.json") << results.dump(2) << "\n";
-  std::ofstream csv(out / "graph.csv");
+  writeTextFile(out / "graph.json", "results", results.dump(2) + "\n");
+  std::ostringstream csv;
   csv << "passes,kept_passes_mean,mode,median_us,p10_us,p90_us,per_pass_ns\n";
   for (const auto& s : sizes)
     for (const Mode mode : kModes) {
@@ -163,6 +164,7 @@ void runGraphBench(const GraphBenchArgs& args, const std::filesystem::path& out)
       csv << s["passes"] << ',' << s["kept_passes_mean"] << ',' << modeName(mode) << ',' << m["median_us"] << ','
           << m["p10_us"] << ',' << m["p90_us"] << ',' << m["per_pass_ns"] << '\n';
     }
+  writeTextFile(out / "graph.csv", "results", csv.str());
 
   std::printf("declare + compile, medians of %u rounds x %u distinct graphs per size, sizes alternated\n", args.repetitions,
               args.graphs);

@@ -10,7 +10,7 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <map>
 #include <memory>
 
@@ -21,6 +21,7 @@
 #include <shadelgraph/image/metrics.hpp>
 #include <shadelgraph/render/renderer.hpp>
 
+#include "output_file.hpp"
 #include "scene_source.hpp"
 
 namespace sg::app {
@@ -221,7 +222,7 @@ nlohmann::json benchMaterials(gpu::Device& device, const std::string& scenePath,
 }
 
 void writeCsv(const std::filesystem::path& file, const nlohmann::json& runs) {
-  std::ofstream csv(file);
+  std::ostringstream csv;
   csv << "scene,width,height,material,path,material_run,frame_ms_median,gpu_ms_median,layer_shade_ms,"
          "layer_shade_2_ms,layer_shade_3_ms,support_expand_ms,layer_dispatches,history_bytes,transient_bytes,"
          "shade_memory_bytes,flip_mean,psnr,first_frame_layer_shade_ms,cold_layer_shade_ms,steady_layer_shade_ms\n";
@@ -239,6 +240,7 @@ void writeCsv(const std::filesystem::path& file, const nlohmann::json& runs) {
           << (p.is_null() ? "" : p["cold"]["layer_shade_ms_median"].dump()) << ','
           << (p.is_null() ? "" : p["steady"]["layer_shade_ms_median"].dump()) << '\n';
     }
+  writeTextFile(file, "results", csv.str());
 }
 
 void printTable(const nlohmann::json& runs) {
@@ -289,7 +291,7 @@ void runMaterialBench(gpu::Context& context, gpu::Device& device, const Material
         return benchMaterials(device, scene, w, h, args, out);
       });
   const nlohmann::json results{{"machine", machineJson(context)}, {"runs", runs}};
-  std::ofstream(out / "materials.json") << results.dump(2) << "\n";
+  writeTextFile(out / "materials.json", "results", results.dump(2) + "\n");
   writeCsv(out / "materials.csv", runs);
   printTable(runs);
   std::printf("wrote %s/materials.json, materials.csv and images\n", out.c_str());

@@ -7,7 +7,7 @@
 
 #include "app_session.hpp"
 #include "commands.hpp"
-#include "scene_source.hpp"
+#include "option_checks.hpp"
 
 namespace sg::app {
 
@@ -23,7 +23,8 @@ void addGraphCommand(CLI::App& app) {
   static Args args;
   auto* cmd = app.add_subcommand("graph", "Print the compiled render graph of the frame 'render' would run");
   cmd->add_option("scene", args.scene, "a .gltf/.glb/.json scene (default: the built-in scene)");
-  cmd->add_option("--size", args.size, "WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--size", args.size, "WIDTHxHEIGHT, each side 1 to " + std::to_string(kMaxOutputSide))
+      ->capture_default_str();
   cmd->add_option("--mode", args.mode, "shading of every object: forward, decoupled, auto (default: each object's own)")
       ->check(CLI::IsMember({"forward", "decoupled", "auto"}));
   auto* dot = cmd->add_flag("--dot", args.dot, "Graphviz DOT");
@@ -33,7 +34,7 @@ void addGraphCommand(CLI::App& app) {
   addFrameOptions(*cmd, args.frame);
   cmd->callback([] {
     render::RenderSettings settings;
-    parseSize(args.size, settings.width, settings.height);
+    parseSize("--size", args.size, settings.width, settings.height);
     settings.aliasing = !args.noAliasing;
     AppSession session(args.scene, args.mode, {}, args.materials, args.frame);
     const auto plan = session.renderer->plan(settings);

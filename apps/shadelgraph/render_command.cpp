@@ -2,18 +2,23 @@
 // render graph, a per-pass timing table, optional stats JSON and Chrome trace.
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
+#include <limits>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
 #include <shadelgraph/gpu/chrome_trace.hpp>
 #include <shadelgraph/image/png.hpp>
+#include <shadelgraph/shadel/shadel_storage.hpp>
 
 #include "app_session.hpp"
 #include "commands.hpp"
+#include "option_checks.hpp"
+#include "output_file.hpp"
 #include "scene_source.hpp"
+#include "soak_report.hpp"
 
 namespace sg::app {
 namespace {
@@ -22,17 +27,19 @@ struct RenderArgs {
   std::string scene;
   std::string output = "out/render.png";
   std::string size = "1280x720";
-  int camera = -1;
-  int frame = -1;
+  std::optional<int> camera;  // empty: the scene's first, else framing
+  std::optional<int> frame;   // a camera-path frame instead of a camera
   int path = 0;
   std::string mode;  // empty: each object's own mode (glTF extras, scene file; default auto)
   std::string view = "final";
   int filter = 2;
-  float bias = -1.0f;  // < 0: the adjuster
+  std::optional<double> bias;  // empty: the adjuster decides
   double storage = 2.0;
   std::string stats;
   std::string trace;
   int frames = 2;
+  std::string soakReport;
+  int soakEvery = 100;
   bool noAliasing = false;
   MaterialArgs materials;
   FrameArgs frameGraph;
@@ -99,10 +106,7 @@ void writeStats(const std::string& path, const AppSession& session, const render
                        {"layers", d.layers},
                        {"layer_reuse", layerReuse},
                        {"device", session.context->deviceName()}};
-  if (std::filesystem::path(path).has_parent_path()) std::filesystem::create_directories(std::filesystem::path(path).parent_path());
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot write stats");
-  out << stats.dump(2) << "\n";
+  writeTextFile(path, "stats", stats.dump(2) + "\n");
 }
 
 // The camera at frame `frame` (30 per second) of the scene file's camera path `path`.
@@ -121,12 +125,36 @@ scene::Camera pathCamera(const AppSession& session, int path, int frame) {
   return camera;
 }
 
+// Option limits, named in --help and in the errors.
+constexpr double kMinStorage = shadel::kMinStorageFactor, kMaxStorage = 64.0;
+constexpr double kMaxAbsBias = 8.0;
+constexpr int kMaxFrames = 100'000'000;
+
+// Every option's value, before the scene is loaded or the device started.
+void checkRenderArgs(const RenderArgs& args) {
+  constexpr int kIntMax = std::numeric_limits<int>::max();
+  if (args.camera) requireInRange("--camera", *args.camera, 0, kIntMax);
+  if (args.frame) requireInRange("--frame", *args.frame, 0, kIntMax);
+  requireInRange("--path", args.path, 0, kIntMax);
+  requireInRange("--frames", args.frames, 1, kMaxFrames);
+  requireInRange("--soak-every", args.soakEvery, 1, kIntMax);
+  requireFiniteInRange("--storage", args.storage, kMinStorage, kMaxStorage);
+  if (args.bias) requireFiniteInRange("--bias", *args.bias, -kMaxAbsBias, kMaxAbsBias);
+}
+
+// The scene's camera `index`, named as the option that asked for it.
+void checkCameraIndex(const AppSession& session, int index) {
+  if (size_t(index) >= session.scene.cameras.size())
+    throw std::invalid_argument("--camera " + std::to_string(index) + ": the scene has " +
+                                std::to_string(session.scene.cameras.size()) + " camera(s)");
+}
+
 void runRender(const RenderArgs& args) {
+  checkRenderArgs(args);
   render::RenderSettings settings;
-  parseSize(args.size, settings.width, settings.height);
-  settings.camera = args.camera;
+  parseSize("--size", args.size, settings.width, settings.height);
+  if (args.camera) settings.camera = *args.camera;
   settings.aliasing = !args.noAliasing;
-  if (args.frames < 1) throw std::invalid_argument("--frames must be at least 1");
 
   plugins::DecoupledSettings decoupled{.storageFactor = args.storage, .filter = args.filter};
   const std::map<std::string, plugins::DebugView> views{{"final", plugins::DebugView::Final},
@@ -134,15 +162,21 @@ void runRender(const RenderArgs& args) {
                                                         {"occupancy", plugins::DebugView::Occupancy},
                                                         {"sheet", plugins::DebugView::Sheet}};
   decoupled.view = views.at(args.view);
-  if (args.bias >= 0.0f) decoupled.fixedBias = args.bias;
+  if (args.bias) decoupled.fixedBias = float(*args.bias);
   AppSession session(args.scene, args.mode, decoupled, args.materials, args.frameGraph);
+  if (args.camera) checkCameraIndex(session, *args.camera);
   for (const auto& choice : session.decoupled->choices())
     if (!choice.decoupled && args.mode == "decoupled")
       std::printf("forward: %s (%s)\n", session.scene.instances[choice.instance].name.c_str(), choice.reason.c_str());
-  if (args.frame >= 0) settings.cameraOverride = pathCamera(session, args.path, args.frame);
+  if (args.frame) settings.cameraOverride = pathCamera(session, args.path, *args.frame);
+  std::optional<SoakReport> soak;
+  if (!args.soakReport.empty()) soak.emplace(args.soakReport, uint32_t(args.soakEvery), uint32_t(args.frames));
   // The first frame pays for pipeline creation; report the last one.
   render::FrameResult frame;
-  for (int i = 0; i < args.frames; ++i) frame = session.renderer->render(settings);
+  for (int i = 0; i < args.frames; ++i) {
+    frame = session.renderer->render(settings);
+    if (soak) soak->add(uint32_t(i), frame.timings);
+  }
   image::writePng(args.output, frame.image.width, frame.image.height, frame.image.rgba8.data());
   const auto memory = session.device->memory().totals();
   printTable(frame.timings, frame.transientBytes, memory);
@@ -156,6 +190,7 @@ void runRender(const RenderArgs& args) {
                 double(d.bias), d.counters.chunksMarked, d.counters.chunksAllocated, d.capacityChunks,
                 d.counters.overflowChunks, d.counters.compositeMisses,
                 d.counters.coveredPixels ? 64.0 * d.counters.chunksAllocated / d.counters.coveredPixels : 0.0);
+  if (soak) soak->finish();
   if (!args.stats.empty()) writeStats(args.stats, session, frame, memory);
   if (!args.trace.empty()) {
     std::vector<gpu::TraceEvent> events;
@@ -177,9 +212,16 @@ void addRenderCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("render", "Render one frame of a scene to a PNG");
   cmd->add_option("scene", args.scene, "a .gltf/.glb/.json scene (default: the built-in scene)");
   cmd->add_option("-o,--output", args.output, "PNG to write")->capture_default_str();
-  cmd->add_option("--size", args.size, "WIDTHxHEIGHT")->capture_default_str();
-  auto* camera = cmd->add_option("--camera", args.camera, "camera index of the scene (default: its first, else framing)");
-  cmd->add_option("--frame", args.frame, "frame along a camera path of the scene file (30 per second)")->excludes(camera);
+  cmd->add_option("--size", args.size,
+                  "WIDTHxHEIGHT, each side 1 to " + std::to_string(kMaxOutputSide))
+      ->capture_default_str();
+  auto* camera = cmd->add_option_function<int>(
+      "--camera", [](const int& index) { args.camera = index; },
+      "camera index of the scene, 0 or more (default: its first, else framing)");
+  cmd->add_option_function<int>(
+         "--frame", [](const int& frame) { args.frame = frame; },
+         "frame along a camera path of the scene file (30 per second), 0 or more")
+      ->excludes(camera);
   cmd->add_option("--path", args.path, "which camera path --frame follows")->capture_default_str();
   cmd->add_option("--mode", args.mode, "shading of every object: forward, decoupled, auto (default: each object's own)")
       ->check(CLI::IsMember({"forward", "decoupled", "auto"}));
@@ -189,11 +231,20 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--view", args.view, "final, or a debug view of decoupled shading: level, occupancy, sheet")
       ->check(CLI::IsMember({"final", "level", "occupancy", "sheet"}))
       ->capture_default_str();
-  cmd->add_option("--bias", args.bias, "fixed global level bias (default: the shade-space adjuster decides)");
-  cmd->add_option("--storage", args.storage, "shade storage in shadels per output pixel")->capture_default_str();
+  cmd->add_option_function<double>(
+      "--bias", [](const double& bias) { args.bias = bias; },
+      "fixed global level bias, -8 to 8; below 0 finer shadels, above 0 coarser (default: the shade-space adjuster "
+      "decides)");
+  cmd->add_option("--storage", args.storage, "shade storage in shadels per output pixel, 1.25 to 64")
+      ->capture_default_str();
   cmd->add_option("--stats", args.stats, "write frame statistics as JSON");
   cmd->add_option("--trace", args.trace, "write per-pass timings as a Chrome trace (Perfetto)");
   cmd->add_option("--frames", args.frames, "frames to render; the last is reported")->capture_default_str();
+  cmd->add_option("--soak-report", args.soakReport,
+                  "write CSV rows (frame, rss_mib, frame_ms, gpu_ms: resident memory, and median frame times since the "
+                  "last row) every --soak-every frames, and print RSS and frame time after warm-up (the first tenth "
+                  "of --frames) against the end");
+  cmd->add_option("--soak-every", args.soakEvery, "frames per --soak-report row")->capture_default_str();
   cmd->add_flag("--no-aliasing", args.noAliasing, "give every transient its own memory");
   addMaterialOptions(*cmd, args.materials);
   addFrameOptions(*cmd, args.frameGraph);

@@ -16,7 +16,5 @@ struct LoadedScene {
 };
 
 LoadedScene loadSceneArgument(const std::string& path);
-// "1280x720" -> width, height; throws CLI::ValidationError-like std::invalid_argument.
-void parseSize(const std::string& text, uint32_t& width, uint32_t& height);
 
 }  // namespace sg::app

@@ -1,5 +1,7 @@
 #include <shadelgraph/gpu/chrome_trace.hpp>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <stdexcept>
@@ -24,9 +26,15 @@ std::string toChromeTrace(const std::vector<TraceEvent>& events) {
 
 void writeChromeTrace(const std::filesystem::path& file, const std::vector<TraceEvent>& events) {
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  errno = 0;
   std::ofstream out(file);
-  if (!out) throw std::runtime_error(file.string() + ": cannot write trace");
-  out << toChromeTrace(events);
+  if (out) out << toChromeTrace(events);
+  // A full disk shows when the buffered bytes are written: check after flush and close.
+  if (out) out.flush();
+  if (out.is_open()) out.close();
+  if (out.fail())
+    throw std::runtime_error(file.string() + ": cannot write trace (" + (errno ? std::strerror(errno) : "write failed") +
+                             ")");
 }
 
 }  // namespace sg::gpu

@@ -136,6 +136,29 @@ const Buffer& GraphExecutor::buffer(graph::ResourceId id) const {
   throw GpuError("render graph: no buffer is bound to resource #" + std::to_string(id.index));
 }
 
+size_t GraphExecutor::commandBufferCount() const {
+  size_t count = 0;
+  for (const auto& buffers : commandBuffers_) count += buffers.size();
+  return count;
+}
+
+VkCommandBuffer GraphExecutor::beginCommandBuffer(uint32_t q, uint32_t index) {
+  auto& buffers = commandBuffers_[q];
+  if (index >= buffers.size()) {
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = commandPools_[q];
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    SG_VK(vkAllocateCommandBuffers(device_.context().device(), &alloc, &cmd));
+    buffers.push_back(cmd);
+  }
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  SG_VK(vkBeginCommandBuffer(buffers[index], &begin));
+  return buffers[index];
+}
+
 void GraphExecutor::recordBarriers(VkCommandBuffer cmd, const graph::CompiledPlan& plan,
                                    const std::vector<const graph::Barrier*>& barriers) const {
   if (barriers.empty()) return;
@@ -187,10 +210,11 @@ FrameTimings GraphExecutor::execute(const graph::RenderGraph& graph, const graph
   FrameTimings timings;
   std::vector<uint32_t> scopes;  // timer scope per entry of timings.passes
   uint64_t lastSignal[graph::kQueueClassCount] = {};
+  uint32_t usedBuffers[graph::kQueueClassCount] = {};
   for (uint32_t b = 0; b < plan.batches.size(); ++b) {
     const graph::Batch& batch = plan.batches[b];
     const uint32_t q = graph::queueIndex(batch.queue);
-    VkCommandBuffer cmd = beginOneTimeCommands(vk, commandPools_[q]);
+    VkCommandBuffer cmd = beginCommandBuffer(q, usedBuffers[q]++);
     for (graph::PassId id : plan.passesOf(batch)) {
       const graph::PlannedPass& planned = plan.passes[id.index];
       std::vector<const graph::Barrier*> before;

@@ -58,6 +58,10 @@ class GraphExecutor {
   // on: exact per-pass times; off: passes may overlap, only the frame time is exact).
   void setExactPassTimes(bool exact) { exactPassTimes_ = exact; }
 
+  // Command buffers allocated so far, all queues: as many as the largest
+  // frame's batches, not growing with the number of frames.
+  size_t commandBufferCount() const;
+
   // Bytes of device memory the transients of the last executed plan occupy.
   uint64_t transientBytes() const { return transientBytes_; }
   const Image& image(graph::ResourceId id) const;
@@ -72,11 +76,17 @@ class GraphExecutor {
   };
   Transient& transientFor(graph::ResourceId id, const graph::PlannedResource& planned);
   void placeTransients(const graph::CompiledPlan& plan);
+  // The `index`-th command buffer of queue `q` this frame, begun for one submit.
+  VkCommandBuffer beginCommandBuffer(uint32_t q, uint32_t index);
   void recordBarriers(VkCommandBuffer cmd, const graph::CompiledPlan& plan,
                       const std::vector<const graph::Barrier*>& barriers) const;
 
   Device& device_;
+  // Reset at the start of each frame (the last one has been waited for). Its
+  // command buffers are allocated once, as batches first need them, and
+  // re-recorded every frame: a buffer allocated per frame would never return.
   VkCommandPool commandPools_[graph::kQueueClassCount] = {};  // one per logical queue's family
+  std::vector<VkCommandBuffer> commandBuffers_[graph::kQueueClassCount];
   VkSemaphore timelines_[graph::kQueueClassCount] = {};
   uint64_t timelineBase_[graph::kQueueClassCount] = {};
   GpuTimer timer_;

@@ -1,5 +1,8 @@
 #include <shadelgraph/image/png.hpp>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <stdexcept>
 
 #include <stb_image.h>
@@ -7,10 +10,29 @@
 
 namespace sg::image {
 
+namespace {
+
+// stb hands the encoded PNG over in pieces; a failed fwrite is remembered.
+void appendToFile(void* context, void* data, int size) {
+  auto* file = static_cast<FILE*>(context);
+  if (size > 0) std::fwrite(data, 1, size_t(size), file);
+}
+
+}  // namespace
+
 void writePng(const std::filesystem::path& path, uint32_t width, uint32_t height, const uint8_t* rgba) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  if (!stbi_write_png(path.c_str(), int(width), int(height), 4, rgba, int(width * 4)))
-    throw std::runtime_error(path.string() + ": cannot write PNG");
+  auto fail = [&](const char* reason) { throw std::runtime_error(path.string() + ": cannot write PNG (" + reason + ")"); };
+  errno = 0;
+  FILE* file = std::fopen(path.c_str(), "wb");
+  if (!file) fail(std::strerror(errno));
+  const int encoded = stbi_write_png_to_func(appendToFile, file, int(width), int(height), 4, rgba, int(width * 4));
+  // A full disk shows only when the buffered bytes are written: at fflush or fclose.
+  const bool written = encoded && std::fflush(file) == 0 && !std::ferror(file);
+  const int error = errno;
+  const bool closed = std::fclose(file) == 0;
+  if (!encoded) fail("encoding failed");
+  if (!written || !closed) fail(std::strerror(error ? error : errno ? errno : EIO));
 }
 
 Rgba8Image readPng(const std::filesystem::path& path) {

@@ -56,8 +56,8 @@ scene::Camera Renderer::camera(const RenderSettings& settings) const {
   if (settings.cameraOverride) return *settings.cameraOverride;
   if (settings.camera >= 0) {
     if (size_t(settings.camera) >= scene_.cameras.size())
-      throw gpu::GpuError("--camera " + std::to_string(settings.camera) + ": the scene has " +
-                          std::to_string(scene_.cameras.size()) + " camera(s)");
+      throw std::out_of_range("camera index " + std::to_string(settings.camera) + ": the scene has " +
+                              std::to_string(scene_.cameras.size()) + " camera(s)");
     return scene_.cameras[size_t(settings.camera)];
   }
   if (!scene_.cameras.empty()) return scene_.cameras.front();

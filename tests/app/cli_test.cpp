@@ -15,27 +15,15 @@
 
 #include <shadelgraph/image/png.hpp>
 
+#include "cli_run.hpp"
 #include "test_support.hpp"
 
 namespace {
 
-struct Run {
-  int exitCode = -1;
-  std::string output;  // stdout and stderr
-};
+using Run = sg::test::CliRun;
 
-// stderr: where the command's stderr goes (merged into the output by default).
-Run run(const std::string& args, const std::string& stderrTo = "&1") {
-  const std::string command = std::string(SG_CLI) + " " + args + " 2>" + stderrTo;
-  Run r;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buffer;
-  size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+Run run(const std::string& args, const std::string& stderrTo = "&1", const std::string& redirect = "") {
+  return sg::test::runCli(args, stderrTo, redirect);
 }
 
 std::filesystem::path tempDir() {
@@ -441,6 +429,123 @@ TEST(Cli, GraphDotIsAGraphvizDigraph) {
   auto r = run("graph --dot --size 64x64");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(r.output.rfind("digraph", 0), 0u) << r.output.substr(0, 200);
+}
+
+// A failing command says why in exactly one line and exits 1.
+void expectOneLineError(const Run& r, const std::string& mentions) {
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_EQ(r.output.rfind("shadelgraph: error: ", 0), 0u) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << "one line: " << r.output;
+  EXPECT_NE(r.output.find(mentions), std::string::npos) << mentions << " missing from: " << r.output;
+}
+
+struct BadCommand {
+  const char* name;
+  const char* args;
+  const char* mentions;  // what the one line must name
+};
+
+// Each is refused before a scene is loaded or a device started.
+const BadCommand kBadCommands[] = {
+    {"UnknownOption", "render --bogus", "--bogus"},
+    {"UnknownSubcommand", "frobnicate", "frobnicate"},
+    {"NoSubcommand", "", "subcommand"},
+    {"MissingValue", "render --size", "--size"},
+    {"CameraNotANumber", "render --camera abc", "--camera"},
+    {"FilterOutOfRange", "render --filter 7", "--filter"},
+    {"ModeNotAMember", "render --mode sideways", "--mode"},
+    {"SizeTrailingJunk", "render --size 64x64junk", "--size '64x64junk'"},
+    {"SizeWrapsPast32Bits", "render --size 4294967360x64", "--size '4294967360x64'"},
+    {"SizeZero", "render --size 0x64", "--size"},
+    {"SizeAboveLimit", "render --size 16385x64", "16384"},
+    {"SizeWithSign", "render --size +64x64", "--size"},
+    {"SizeWithSpace", "render --size '64x 64'", "--size"},
+    {"GraphSizeTrailingJunk", "graph --size 64x64junk", "--size"},
+    {"StorageNan", "render --storage nan", "--storage nan"},
+    {"StorageInf", "render --storage inf", "--storage inf"},
+    {"StorageHuge", "render --storage 1e30", "--storage 1e+30"},
+    {"StorageZero", "render --storage 0", "--storage 0"},
+    {"CameraNegative", "render --camera -5", "--camera -5"},
+    {"FrameNegative", "render --frame -5", "--frame -5"},
+    {"PathNegative", "render --frame 1 --path -1", "--path -1"},
+    {"BiasNan", "render --bias nan", "--bias nan"},
+    {"BiasInf", "render --bias inf", "--bias inf"},
+    {"BiasMinusInf", "render --bias=-inf", "--bias -inf"},
+    {"BiasHuge", "render --bias 1e30", "--bias"},
+    {"FramesZero", "render --frames 0", "--frames 0"},
+    {"SoakEveryZero", "render --soak-every 0", "--soak-every 0"},
+    {"BenchFlickerFramesZero", "bench --flicker-frames 0", "--flicker-frames 0"},
+    {"BenchFlickerFramesNegative", "bench --flicker-frames -3", "--flicker-frames -3"},
+    {"BenchRepetitionsZero", "bench --repetitions 0", "--repetitions 0"},
+    {"BenchReferenceScaleZero", "bench --reference-scale 0", "--reference-scale 0"},
+    {"BenchReferenceBeyondSizeLimit", "bench --sizes 8192x8192 --reference-scale 4", "--reference-scale 4"},
+    {"BenchSizesTrailingJunk", "bench --sizes 64x36junk", "--sizes '64x36junk'"},
+};
+
+// Readable in gtest's and ctest's listings: the command line, not the struct's bytes.
+void PrintTo(const BadCommand& c, std::ostream* os) { *os << "shadelgraph " << c.args; }
+
+class CliRejects : public testing::TestWithParam<BadCommand> {};
+
+TEST_P(CliRejects, WithOneLineAndExitCode1) { expectOneLineError(run(GetParam().args), GetParam().mentions); }
+
+INSTANTIATE_TEST_SUITE_P(BadOptions, CliRejects, testing::ValuesIn(kBadCommands),
+                         [](const testing::TestParamInfo<BadCommand>& param) { return std::string(param.param.name); });
+
+TEST(Cli, HelpStatesTheLimitsAndExits0) {
+  auto help = run("render --help");
+  EXPECT_EQ(help.exitCode, 0) << help.output;
+  for (const char* limit : {"16384", "-8 to 8", "1.25 to 64", "--soak-report"})
+    EXPECT_NE(help.output.find(limit), std::string::npos) << limit << " missing from:\n" << help.output;
+  auto benchHelp = run("bench --help");
+  EXPECT_EQ(benchHelp.exitCode, 0) << benchHelp.output;
+  EXPECT_NE(benchHelp.output.find("2 or more"), std::string::npos) << benchHelp.output;
+}
+
+TEST(Cli, CameraBeyondTheScenesCamerasIsNamedAsTheOption) {
+  expectOneLineError(run("render --size 32x32 --camera 3 -o " + (tempDir() / "camera.png").string()),
+                     "--camera 3: the scene has 1 camera(s)");  // the default scene's own
+}
+
+nlohmann::json statsOf(const std::string& args, const std::string& name) {
+  const auto stats = tempDir() / (name + ".json");
+  std::filesystem::remove(stats);
+  auto r = run("render --mode decoupled --size 96x64 --frames 1 --storage 16 -o " + (tempDir() / (name + ".png")).string() +
+               " --stats " + stats.string() + " " + args);
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(stats);
+  return nlohmann::json::parse(in);
+}
+
+// A negative bias is a fixed bias too (finer shadels), not the adjuster.
+TEST(Cli, NegativeBiasShadesFinerThanZero) {
+  const auto zero = statsOf("--bias 0", "bias-zero");
+  const auto finer = statsOf("--bias -1", "bias-minus-one");
+  ASSERT_TRUE(finer["global_bias"].is_number()) << finer["global_bias"];
+  EXPECT_EQ(finer["global_bias"].get<double>(), -1.0);
+  EXPECT_EQ(zero["global_bias"].get<double>(), 0.0);
+  // One level finer: up to 4x the shadels; at least twice as many on this scene.
+  EXPECT_GT(finer["shadels_marked"].get<double>(), 2.0 * zero["shadels_marked"].get<double>());
+  EXPECT_EQ(finer["composite_misses"], 0);
+}
+
+// Output that cannot be written fails the command with one line naming the
+// file (besides whatever was printed before, e.g. the timing table).
+TEST(Cli, WritingToAFullDiskFailsNamingThePath) {
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "/dev/full not present";
+  const std::string base = "render --size 32x32 --frames 1 ";
+  const std::string png = " -o " + (tempDir() / "full.png").string();
+  for (const std::string& args : {base + "-o /dev/full", base + png + " --stats /dev/full",
+                                  base + png + " --trace /dev/full", base + png + " --soak-report /dev/full --soak-every 1"}) {
+    auto r = run(args);
+    EXPECT_EQ(r.exitCode, 1) << args << ": " << r.output;
+    EXPECT_NE(r.output.find("shadelgraph: error: /dev/full: cannot write"), std::string::npos) << args << ": " << r.output;
+    EXPECT_EQ(r.output.find("shadelgraph: error:"), r.output.rfind("shadelgraph: error:")) << "one error: " << r.output;
+  }
+  // Stdout too: a plan that did not arrive is a failure.
+  auto plan = run("graph --size 32x32", "&1", " >/dev/full");
+  EXPECT_EQ(plan.exitCode, 1) << plan.output;
+  EXPECT_NE(plan.output.find("shadelgraph: error: stdout: write failed"), std::string::npos) << plan.output;
 }
 
 }  // namespace

@@ -220,5 +220,14 @@ TEST_F(GraphExecutorTest, SecondFrameReusesTransientsAndStaysClean) {
   EXPECT_EQ(first.transientBytes, second.transientBytes);
 }
 
+// Frames re-record the same command buffers: one per batch, however many frames run.
+TEST_F(GraphExecutorTest, FramesReuseTheirCommandBuffers) {
+  gpu::GraphExecutor executor(*device);
+  const Result first = run(executor, true);
+  ASSERT_EQ(executor.commandBufferCount(), first.plan.batches.size());
+  for (int frame = 0; frame < 20; ++frame) run(executor, true);
+  EXPECT_EQ(executor.commandBufferCount(), first.plan.batches.size());
+}
+
 }  // namespace
 }  // namespace sg::test
