@@ -1,8 +1,11 @@
 #include <algorithm>
 #include <cstring>
+#include <optional>
 
+#include <shadelgraph/scene/checked_math.hpp>
 #include <shadelgraph/scene/gltf_accessor.hpp>
 #include <shadelgraph/scene/gltf_context.hpp>
+#include <shadelgraph/scene/gltf_json_links.hpp>
 
 namespace sg::scene::detail {
 namespace {
@@ -38,22 +41,27 @@ const uint8_t* viewBytes(const tinygltf::Model& model, int viewIndex, const std:
   return model.buffers[static_cast<size_t>(view.buffer)].data.data() + view.byteOffset;  // range checked by checkBufferViews
 }
 
-// Copies `count` elements of `elementSize` bytes, `stride` apart, starting
-// `offset` bytes into bufferView `viewIndex`.
-void copyElements(const tinygltf::Model& model, int viewIndex, size_t offset, size_t count, size_t elementSize,
-                  size_t stride, uint8_t* out, const std::string& what) {
+// `count` elements of `elementSize` bytes, `stride` (>= elementSize) apart,
+// starting `offset` bytes into bufferView `viewIndex`, tightly packed. The
+// range is checked before anything is allocated, with overflow-checked
+// arithmetic, so a count in the file never allocates more than the bytes
+// that back it.
+std::vector<uint8_t> readElements(const tinygltf::Model& model, int viewIndex, size_t offset, size_t count,
+                                  size_t elementSize, size_t stride, const std::string& what) {
   const uint8_t* base = viewBytes(model, viewIndex, what);
   const size_t viewLength = model.bufferViews[static_cast<size_t>(viewIndex)].byteLength;
-  // count <= viewLength keeps the products below in range.
-  if (count > viewLength || offset + (count - 1) * stride + elementSize > viewLength)
+  const std::optional<uint64_t> end = elementsEnd(offset, count, elementSize, stride);
+  if (!end || *end > viewLength)
     throw InvalidAsset(what + ": reads bytes [" + std::to_string(offset) + ", " +
-                       std::to_string(offset + (count - 1) * stride + elementSize) + ") of bufferView " +
+                       (end ? std::to_string(*end) : std::string("beyond 2^64")) + ") of bufferView " +
                        std::to_string(viewIndex) + ", which has " + std::to_string(viewLength) + " bytes");
+  std::vector<uint8_t> out(count * elementSize);  // <= *end: stride >= elementSize
   if (stride == elementSize) {
-    std::memcpy(out, base + offset, count * elementSize);
-    return;
+    std::memcpy(out.data(), base + offset, out.size());
+  } else {
+    for (size_t i = 0; i < count; ++i) std::memcpy(out.data() + i * elementSize, base + offset + i * stride, elementSize);
   }
-  for (size_t i = 0; i < count; ++i) std::memcpy(out + i * elementSize, base + offset + i * stride, elementSize);
+  return out;
 }
 
 template <class T>
@@ -125,7 +133,6 @@ PackedAccessor readAccessor(const tinygltf::Model& model, int accessorIndex, con
   const size_t elementSize = size * static_cast<size_t>(result.components);
   if (result.count == 0) return result;
 
-  result.bytes.assign(result.count * elementSize, 0);  // zeros where a sparse accessor has no bufferView
   if (accessor.bufferView >= 0) {
     viewBytes(model, accessor.bufferView, where);  // range check
     const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(accessor.bufferView)];
@@ -133,14 +140,21 @@ PackedAccessor readAccessor(const tinygltf::Model& model, int accessorIndex, con
     if (stride < elementSize)
       throw InvalidAsset(where + ": byteStride " + std::to_string(stride) + " is smaller than its " +
                          std::to_string(elementSize) + "-byte elements");
-    copyElements(model, accessor.bufferView, accessor.byteOffset, result.count, elementSize, stride,
-                 result.bytes.data(), where);
+    result.bytes = readElements(model, accessor.bufferView, accessor.byteOffset, result.count, elementSize, stride, where);
   } else if (!accessor.sparse.isSparse) {
     throw InvalidAsset(where + ": has neither a bufferView nor sparse values");
+  } else {
+    // Nothing in the file backs these zeros: bounded (the JSON check names the limit).
+    if (result.count > kMaxUnbackedAccessorElements)
+      throw InvalidAsset(where + ": " + std::to_string(result.count) + " elements without a bufferView (at most " +
+                         std::to_string(kMaxUnbackedAccessorElements) + ")");
+    result.bytes.assign(result.count * elementSize, 0);
   }
 
   if (accessor.sparse.isSparse) {
-    const auto sparseCount = static_cast<size_t>(std::max(accessor.sparse.count, 0));
+    if (accessor.sparse.count < 0 || accessor.sparse.indices.byteOffset < 0 || accessor.sparse.values.byteOffset < 0)
+      throw InvalidAsset(where + ": sparse count and byte offsets must be >= 0");
+    const auto sparseCount = static_cast<size_t>(accessor.sparse.count);
     const int indexType = accessor.sparse.indices.componentType;
     const size_t indexSize = componentSize(indexType);
     if (indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
@@ -151,12 +165,12 @@ PackedAccessor readAccessor(const tinygltf::Model& model, int accessorIndex, con
       throw InvalidAsset(where + ": sparse count " + std::to_string(sparseCount) + " exceeds the accessor's count " +
                          std::to_string(result.count));
     if (sparseCount == 0) return result;
-    std::vector<uint8_t> indexBytes(sparseCount * indexSize);
-    std::vector<uint8_t> valueBytes(sparseCount * elementSize);
-    copyElements(model, accessor.sparse.indices.bufferView, static_cast<size_t>(accessor.sparse.indices.byteOffset),
-                 sparseCount, indexSize, indexSize, indexBytes.data(), where + " sparse indices");
-    copyElements(model, accessor.sparse.values.bufferView, static_cast<size_t>(accessor.sparse.values.byteOffset),
-                 sparseCount, elementSize, elementSize, valueBytes.data(), where + " sparse values");
+    const std::vector<uint8_t> indexBytes =
+        readElements(model, accessor.sparse.indices.bufferView, static_cast<size_t>(accessor.sparse.indices.byteOffset),
+                     sparseCount, indexSize, indexSize, where + " sparse indices");
+    const std::vector<uint8_t> valueBytes =
+        readElements(model, accessor.sparse.values.bufferView, static_cast<size_t>(accessor.sparse.values.byteOffset),
+                     sparseCount, elementSize, elementSize, where + " sparse values");
     for (size_t i = 0; i < sparseCount; ++i) {
       const uint8_t* at = indexBytes.data() + i * indexSize;
       const size_t target = indexSize == 1   ? load<uint8_t>(at)

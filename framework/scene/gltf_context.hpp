@@ -27,7 +27,7 @@ struct GltfContext {
 // "mesh 2 'Wheel'" / "mesh 2": how messages name an object.
 inline std::string describe(const char* kind, size_t index, const std::string& name) {
   std::string text = std::string(kind) + " " + std::to_string(index);
-  if (!name.empty()) text += " '" + name + "'";
+  if (!name.empty()) text += " '" + (name.size() <= 64 ? name : name.substr(0, 64) + "...") + "'";  // names may be huge
   return text;
 }
 

@@ -1,5 +1,7 @@
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <initializer_list>
 #include <string>
@@ -8,6 +10,8 @@
 
 #include <shadelgraph/scene/gltf_context.hpp>
 #include <shadelgraph/scene/gltf_json_check.hpp>
+#include <shadelgraph/scene/gltf_json_links.hpp>
+#include <shadelgraph/scene/input_limits.hpp>
 
 namespace sg::scene::detail {
 namespace {
@@ -15,8 +19,9 @@ namespace {
 using Json = nlohmann::json;
 
 // The subset of the glTF 2.0 JSON schema the loader depends on: types,
-// required properties and enums. References between objects are range-checked
-// later, where they are used.
+// required properties, enums and minimums. Paths are JSON pointers, as the
+// Khronos glTF-Validator names them ("/meshes/0/primitives"). References
+// between objects and byte ranges are checked next (gltf_json_links.cpp).
 class ShapeChecker {
  public:
   void root(const Json& json) {
@@ -37,7 +42,7 @@ class ShapeChecker {
     objects(json, "bufferViews", [&](const Json& view, const std::string& path) { bufferView(view, path); });
     objects(json, "buffers", [&](const Json& buffer, const std::string& path) {
       optionalString(buffer, "uri", path);
-      requireUint(buffer, "byteLength", path);
+      requirePositive(buffer, "byteLength", path);
     });
     objects(json, "materials", [&](const Json& material, const std::string& path) { this->material(material, path); });
     objects(json, "textures", [&](const Json& texture, const std::string& path) {
@@ -52,16 +57,29 @@ class ShapeChecker {
     objects(json, "samplers", [&](const Json& sampler, const std::string& path) {
       // The schema allows any integer for these GL enums (forward compatibility):
       // unknown values get a warning where they are converted.
-      optionalUint(sampler, "magFilter", path);
-      optionalUint(sampler, "minFilter", path);
-      optionalUint(sampler, "wrapS", path);
-      optionalUint(sampler, "wrapT", path);
+      optionalInt32(sampler, "magFilter", path);
+      optionalInt32(sampler, "minFilter", path);
+      optionalInt32(sampler, "wrapS", path);
+      optionalInt32(sampler, "wrapT", path);
     });
     objects(json, "cameras", [&](const Json& camera, const std::string& path) { this->camera(camera, path); });
-    objects(json, "skins", [](const Json&, const std::string&) {});
-    objects(json, "animations", [](const Json&, const std::string&) {});
+    objects(json, "skins", [&](const Json& skin, const std::string& path) {
+      optionalIndex(skin, "inverseBindMatrices", path);
+      optionalIndex(skin, "skeleton", path);
+      optionalIndexArray(skin, "joints", path);
+    });
+    objects(json, "animations", [&](const Json& animation, const std::string& path) {
+      objects(animation, "channels", [&](const Json& channel, const std::string& p) {
+        requireIndex(channel, "sampler", p);
+        optionalObject(channel, "target", p, [&](const Json& target, const std::string& tp) { optionalIndex(target, "node", tp); });
+      }, path);
+      objects(animation, "samplers", [&](const Json& sampler, const std::string& p) {
+        requireIndex(sampler, "input", p);
+        requireIndex(sampler, "output", p);
+      }, path);
+    });
     if (const Json* extensions = member(json, "extensions"))
-      optionalObject(*extensions, "KHR_lights_punctual", "extensions", [&](const Json& lights, const std::string& path) {
+      optionalObject(*extensions, "KHR_lights_punctual", "/extensions", [&](const Json& lights, const std::string& path) {
         objects(lights, "lights", [&](const Json& light, const std::string& lightPath) { this->light(light, lightPath); },
                 path);
       });
@@ -71,7 +89,7 @@ class ShapeChecker {
   using Visit = std::function<void(const Json&, const std::string&)>;
 
   [[noreturn]] static void fail(const std::string& path, const std::string& expected, const Json& got) {
-    throw InvalidAsset(path + ": expected " + expected + ", got " + describe(got));
+    throw InvalidAsset((path.empty() ? "the document" : path) + ": expected " + expected + ", got " + describe(got));
   }
 
   static std::string describe(const Json& value) {
@@ -79,7 +97,7 @@ class ShapeChecker {
       case Json::value_t::null: return "null";
       case Json::value_t::object: return "an object";
       case Json::value_t::array: return "an array";
-      case Json::value_t::string: return "the string " + value.dump();
+      case Json::value_t::string: return "the string " + capText(value.dump(), 80);
       case Json::value_t::boolean: return value.dump();
       case Json::value_t::number_integer:
       case Json::value_t::number_unsigned:
@@ -88,19 +106,24 @@ class ShapeChecker {
     }
   }
 
-  static std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+  // A JSON pointer one level down ("~" and "/" escaped as RFC 6901 says).
+  static std::string join(const std::string& path, const std::string& key) {
+    std::string escaped;
+    for (const char c : key) escaped += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+    return path + "/" + escaped;
+  }
 
   static const Json* member(const Json& object, const char* key) {
     const auto it = object.find(key);
     return it == object.end() ? nullptr : &*it;
   }
 
-  // JSON Schema counts 3.0 as an integer, and some exporters write that.
-  static bool isInteger(const Json& value) {
-    if (value.is_number_integer() || value.is_number_unsigned()) return true;
-    if (!value.is_number_float()) return false;
-    const double number = value.get<double>();
-    return std::isfinite(number) && number == std::floor(number);
+  // JSON Schema counts 3.0 as an integer, but tinygltf 2.7 does not: it
+  // rejects a required 3.0 and silently drops an optional one (a byteOffset
+  // of 8.0 reads from 0). So integers must be written without a fraction.
+  static bool isInteger(const Json& value) { return value.is_number_integer() || value.is_number_unsigned(); }
+  static bool isIntegralFloat(const Json& value) {
+    return value.is_number_float() && std::isfinite(value.get<double>()) && value.get<double>() == std::floor(value.get<double>());
   }
 
   // name, extensions (an object of objects), extras: on every glTF object.
@@ -121,7 +144,7 @@ class ShapeChecker {
     if (!array->is_array()) fail(path, "an array", *array);
     for (size_t i = 0; i < array->size(); ++i) {
       const Json& element = (*array)[i];
-      const std::string elementPath = path + "[" + std::to_string(i) + "]";
+      const std::string elementPath = path + "/" + std::to_string(i);
       if (!element.is_object()) fail(elementPath, "an object", element);
       property(element, elementPath);
       visit(element, elementPath);
@@ -159,18 +182,33 @@ class ShapeChecker {
   static void boolean(const Json& value, const std::string& path) {
     if (!value.is_boolean()) fail(path, "true or false", value);
   }
+  // Every number the loader reads becomes a 32-bit float: 1e39 is finite
+  // as a double and infinite after the conversion.
   static void number(const Json& value, const std::string& path) {
     if (!value.is_number()) fail(path, "a number", value);
+    if (!(std::abs(value.get<double>()) <= double{FLT_MAX})) fail(path, "a number within the range of a 32-bit float", value);
   }
   // glTF ids and counts: integers >= 0.
   static void uint(const Json& value, const std::string& path) {
-    if (!isInteger(value) || value.get<double>() < 0.0)
+    if (isIntegralFloat(value)) fail(path, "an integer >= 0 written without a fraction", value);
+    if (!isInteger(value) || (value.type() == Json::value_t::number_integer && value.get<int64_t>() < 0))
       fail(path, "an integer >= 0", value);
+  }
+  // Values tinygltf keeps in an int (enums, texCoord, sparse offsets): 2^32 + 9729 would
+  // become a valid 9729. Indices need no such check: they are compared with array sizes.
+  static void int32(const Json& value, const std::string& path) {
+    uint(value, path);
+    if (value.get<uint64_t>() > INT32_MAX) fail(path, "an integer in [0, 2147483647]", value);
+  }
+  // Counts and byte lengths the schema requires to be >= 1 (VALUE_NOT_IN_RANGE).
+  static void positive(const Json& value, const std::string& path) {
+    uint(value, path);
+    if (value.get<uint64_t>() == 0) fail(path, "an integer >= 1", value);
   }
   static void numbers(const Json& value, const std::string& path, size_t count) {
     if (!value.is_array() || (count && value.size() != count))
       fail(path, count ? "an array of " + std::to_string(count) + " numbers" : "an array of numbers", value);
-    for (size_t i = 0; i < value.size(); ++i) number(value[i], path + "[" + std::to_string(i) + "]");
+    for (size_t i = 0; i < value.size(); ++i) number(value[i], path + "/" + std::to_string(i));
   }
 
   void optionalString(const Json& o, const char* key, const std::string& path) { optional(o, key, path, string); }
@@ -182,19 +220,21 @@ class ShapeChecker {
   void requireIndex(const Json& o, const char* key, const std::string& path) { required(o, key, path, uint); }
   void requireUint(const Json& o, const char* key, const std::string& path) { required(o, key, path, uint); }
   void optionalUint(const Json& o, const char* key, const std::string& path) { optional(o, key, path, uint); }
+  void requirePositive(const Json& o, const char* key, const std::string& path) { required(o, key, path, positive); }
+  void optionalInt32(const Json& o, const char* key, const std::string& path) { optional(o, key, path, int32); }
   void optionalNumbers(const Json& o, const char* key, const std::string& path, size_t count) {
     optional(o, key, path, [count](const Json& value, const std::string& p) { numbers(value, p, count); });
   }
   void optionalIndexArray(const Json& o, const char* key, const std::string& path) {
     optional(o, key, path, [](const Json& value, const std::string& p) {
       if (!value.is_array()) fail(p, "an array of indices", value);
-      for (size_t i = 0; i < value.size(); ++i) uint(value[i], p + "[" + std::to_string(i) + "]");
+      for (size_t i = 0; i < value.size(); ++i) uint(value[i], p + "/" + std::to_string(i));
     });
   }
   void optionalStringArray(const Json& o, const char* key, const std::string& path) {
     optional(o, key, path, [](const Json& value, const std::string& p) {
       if (!value.is_array()) fail(p, "an array of strings", value);
-      for (size_t i = 0; i < value.size(); ++i) string(value[i], p + "[" + std::to_string(i) + "]");
+      for (size_t i = 0; i < value.size(); ++i) string(value[i], p + "/" + std::to_string(i));
     });
   }
   template <class T>
@@ -231,15 +271,15 @@ class ShapeChecker {
 
   void mesh(const Json& mesh, const std::string& path) {
     const Json* primitives = member(mesh, "primitives");
-    if (!primitives) throw InvalidAsset(path + ".primitives: required property is missing");
-    if (!primitives->is_array()) fail(path + ".primitives", "an array", *primitives);
+    if (!primitives) throw InvalidAsset(path + "/primitives: required property is missing");
+    if (!primitives->is_array()) fail(path + "/primitives", "an array", *primitives);
     objects(mesh, "primitives", [&](const Json& primitive, const std::string& p) {
       requireObject(primitive, "attributes", p, [&](const Json& attributes, const std::string& attributesPath) {
         for (const auto& [name, value] : attributes.items()) uint(value, join(attributesPath, name));
       });
       optionalIndex(primitive, "indices", p);
       optionalIndex(primitive, "material", p);
-      optionalUint(primitive, "mode", p);
+      optionalInt32(primitive, "mode", p);
       objects(primitive, "targets", [](const Json& target, const std::string& targetPath) {
         for (const auto& [name, value] : target.items()) uint(value, join(targetPath, name));
       }, p);
@@ -253,7 +293,7 @@ class ShapeChecker {
     required(accessor, "componentType", path,
              [](const Json& v, const std::string& p) { oneOf(v, p, {5120, 5121, 5122, 5123, 5125, 5126}); });
     optionalBool(accessor, "normalized", path);
-    requireUint(accessor, "count", path);
+    requirePositive(accessor, "count", path);
     required(accessor, "type", path, [](const Json& v, const std::string& p) {
       string(v, p);
       oneOf<std::string>(v, p, {"SCALAR", "VEC2", "VEC3", "VEC4", "MAT2", "MAT3", "MAT4"});
@@ -261,15 +301,16 @@ class ShapeChecker {
     optionalNumbers(accessor, "max", path, 0);
     optionalNumbers(accessor, "min", path, 0);
     optionalObject(accessor, "sparse", path, [&](const Json& sparse, const std::string& p) {
-      requireUint(sparse, "count", p);
+      requirePositive(sparse, "count", p);
+      optionalInt32(sparse, "count", p);
       requireObject(sparse, "indices", p, [&](const Json& indices, const std::string& ip) {
         requireIndex(indices, "bufferView", ip);
-        optionalUint(indices, "byteOffset", ip);
+        optionalInt32(indices, "byteOffset", ip);
         required(indices, "componentType", ip, [](const Json& v, const std::string& cp) { oneOf(v, cp, {5121, 5123, 5125}); });
       });
       requireObject(sparse, "values", p, [&](const Json& values, const std::string& vp) {
         requireIndex(values, "bufferView", vp);
-        optionalUint(values, "byteOffset", vp);
+        optionalInt32(values, "byteOffset", vp);
       });
     });
   }
@@ -277,18 +318,18 @@ class ShapeChecker {
   void bufferView(const Json& view, const std::string& path) {
     requireIndex(view, "buffer", path);
     optionalUint(view, "byteOffset", path);
-    requireUint(view, "byteLength", path);
+    requirePositive(view, "byteLength", path);
     optional(view, "byteStride", path, [](const Json& v, const std::string& p) {
-      if (!isInteger(v) || v.get<double>() < 4.0 || v.get<double>() > 252.0 || static_cast<int>(v.get<double>()) % 4 != 0)
+      if (!isInteger(v) || v.get<double>() < 4.0 || v.get<double>() > 252.0 || v.get<int64_t>() % 4 != 0)
         fail(p, "a multiple of 4 in [4, 252]", v);
     });
-    optionalUint(view, "target", path);
+    optionalInt32(view, "target", path);
   }
 
   void textureInfo(const Json& parent, const char* key, const std::string& path, const char* extraNumber = nullptr) {
     optionalObject(parent, key, path, [&](const Json& info, const std::string& p) {
       requireIndex(info, "index", p);
-      optionalUint(info, "texCoord", p);
+      optionalInt32(info, "texCoord", p);
       if (extraNumber) optionalNumber(info, extraNumber, p);
       if (const Json* extensions = member(info, "extensions"))
         optionalObject(*extensions, "KHR_texture_transform", join(p, "extensions"),
@@ -296,7 +337,7 @@ class ShapeChecker {
                          optionalNumbers(transform, "offset", tp, 2);
                          optionalNumber(transform, "rotation", tp);
                          optionalNumbers(transform, "scale", tp, 2);
-                         optionalUint(transform, "texCoord", tp);
+                         optionalInt32(transform, "texCoord", tp);
                        });
     });
   }
@@ -351,11 +392,12 @@ class ShapeChecker {
 }  // namespace
 
 void checkGltfJson(std::string_view json, std::span<const std::string_view> supportedExtensions) {
+  if (const auto error = jsonDepthError(json)) throw InvalidAsset(*error);
   Json document;
   try {
     document = Json::parse(json.begin(), json.end());
-  } catch (const Json::parse_error& error) {
-    throw InvalidAsset(std::string("invalid JSON: ") + error.what());
+  } catch (const Json::exception& error) {  // parse_error, and out_of_range for numbers such as 1e999
+    throw InvalidAsset("invalid JSON: " + capText(error.what()));
   }
   if (document.is_object())
     if (const auto required = document.find("extensionsRequired"); required != document.end() && required->is_array())
@@ -363,8 +405,9 @@ void checkGltfJson(std::string_view json, std::span<const std::string_view> supp
         if (name.is_string() &&
             std::find(supportedExtensions.begin(), supportedExtensions.end(), name.get<std::string>()) ==
                 supportedExtensions.end())
-          throw InvalidAsset("requires the unsupported extension " + name.get<std::string>());
+          throw InvalidAsset("requires the unsupported extension " + capText(name.get<std::string>(), 80));
   ShapeChecker().root(document);
+  checkGltfLinks(document);
 }
 
 }  // namespace sg::scene::detail

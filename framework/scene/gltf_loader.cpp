@@ -11,10 +11,12 @@
 #include <shadelgraph/scene/gltf_material.hpp>
 #include <shadelgraph/scene/gltf_mesh.hpp>
 #include <shadelgraph/scene/gltf_nodes.hpp>
+#include <shadelgraph/scene/input_limits.hpp>
 
 namespace sg::scene {
 namespace {
 
+using detail::capText;
 using detail::InvalidAsset;
 
 constexpr std::string_view kSupportedExtensions[] = {"KHR_texture_transform", "KHR_lights_punctual"};
@@ -31,15 +33,44 @@ std::vector<uint8_t> readFile(const std::filesystem::path& file) {
 
 bool isGlb(const std::vector<uint8_t>& bytes) { return bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0; }
 
-// A .glb's JSON chunk; empty when the container is malformed (tinygltf then
-// reports what is wrong with it).
+uint32_t readU32(const std::vector<uint8_t>& bytes, size_t offset) {
+  uint32_t value = 0;
+  std::memcpy(&value, bytes.data() + offset, 4);
+  return value;
+}
+
+// A .glb's JSON chunk, after checking the container as the glTF-Validator
+// does (tinygltf 2.7 accepts a wrong version, a header length that differs
+// from the file's and chunks that overrun or do not tile the file).
 std::string_view glbJson(const std::vector<uint8_t>& bytes) {
-  if (bytes.size() < 20) return {};
-  uint32_t length = 0, type = 0;
-  std::memcpy(&length, bytes.data() + 12, 4);
-  std::memcpy(&type, bytes.data() + 16, 4);
-  if (type != 0x4E4F534Au || length > bytes.size() - 20) return {};
-  return {reinterpret_cast<const char*>(bytes.data() + 20), length};
+  constexpr uint32_t kJson = 0x4E4F534Au, kBin = 0x004E4942u;
+  if (bytes.size() < 12) throw InvalidAsset("GLB: " + std::to_string(bytes.size()) + "-byte file is shorter than the 12-byte header (GLB_UNEXPECTED_END_OF_HEADER)");
+  if (const uint32_t version = readU32(bytes, 4); version != 2)
+    throw InvalidAsset("GLB: header version " + std::to_string(version) + ", expected 2 (GLB_INVALID_VERSION)");
+  if (const uint32_t length = readU32(bytes, 8); length != bytes.size())
+    throw InvalidAsset("GLB: header length " + std::to_string(length) + " differs from the file's " +
+                       std::to_string(bytes.size()) + " bytes (GLB_LENGTH_MISMATCH)");
+  std::string_view json;
+  size_t offset = 12;
+  for (int chunk = 0; offset < bytes.size(); ++chunk) {
+    const std::string name = "GLB chunk " + std::to_string(chunk);
+    if (bytes.size() - offset < 8)
+      throw InvalidAsset(name + ": " + std::to_string(bytes.size() - offset) + " bytes left for an 8-byte chunk header (GLB_UNEXPECTED_END_OF_CHUNK_HEADER)");
+    const uint32_t length = readU32(bytes, offset), type = readU32(bytes, offset + 4);
+    offset += 8;
+    if (length > bytes.size() - offset)
+      throw InvalidAsset(name + ": length " + std::to_string(length) + " runs past the end of the file (" +
+                         std::to_string(bytes.size() - offset) + " bytes left) (GLB_CHUNK_TOO_BIG)");
+    if (length % 4 != 0)
+      throw InvalidAsset(name + ": length " + std::to_string(length) + " is not a multiple of 4 (GLB_CHUNK_LENGTH_UNALIGNED)");
+    if (chunk == 0 && type != kJson) throw InvalidAsset(name + ": the first chunk must be JSON (GLB_UNEXPECTED_FIRST_CHUNK)");
+    if (chunk > 0 && type == kJson) throw InvalidAsset(name + ": a second JSON chunk (GLB_DUPLICATE_CHUNK)");
+    if (chunk > 1 && type == kBin) throw InvalidAsset(name + ": a BIN chunk must directly follow the JSON chunk (GLB_UNEXPECTED_BIN_CHUNK)");
+    if (chunk == 0) json = {reinterpret_cast<const char*>(bytes.data() + offset), length};
+    offset += length;
+  }
+  if (json.empty()) throw InvalidAsset("GLB: no JSON content (GLB_UNEXPECTED_END_OF_HEADER)");
+  return json;
 }
 
 // Image loader for tinygltf that keeps the encoded bytes: decoding happens
@@ -78,7 +109,7 @@ Scene load(const std::filesystem::path& file, const LoadOptions& options) {
   const bool binary = isGlb(bytes);
   const std::string_view json =
       binary ? glbJson(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-  if (!json.empty()) detail::checkGltfJson(json, kSupportedExtensions);
+  detail::checkGltfJson(json, kSupportedExtensions);
 
   tinygltf::TinyGLTF parser;
   parser.SetImageLoader(keepEncodedImage, nullptr);
@@ -90,7 +121,7 @@ Scene load(const std::filesystem::path& file, const LoadOptions& options) {
                          : parser.LoadASCIIFromString(&model, &error, &warning,
                                                       reinterpret_cast<const char*>(bytes.data()), size, baseDir);
   // tinygltf can report an error and still return true (e.g. a texture info without "index").
-  if (!ok || !error.empty()) throw InvalidAsset(error.empty() ? "tinygltf could not parse the file" : oneLine(error));
+  if (!ok || !error.empty()) throw InvalidAsset(error.empty() ? "tinygltf could not parse the file" : capText(oneLine(error), 400));
 
   Scene scene;
   if (!warning.empty()) scene.warnings.push_back(oneLine(warning));
@@ -100,6 +131,7 @@ Scene load(const std::filesystem::path& file, const LoadOptions& options) {
   detail::convertMaterials(context, scene);
   detail::convertMeshes(context, scene);
   detail::convertNodes(context, scene);
+  detail::capWarnings(scene.warnings);
   return scene;
 }
 
@@ -109,7 +141,7 @@ Scene loadGltf(const std::filesystem::path& file, const LoadOptions& options) {
   try {
     return load(file, options);
   } catch (const InvalidAsset& error) {
-    throw SceneError(file, error.what());
+    throw SceneError(file, detail::capText(error.what(), 1000));
   } catch (const std::bad_alloc&) {
     throw SceneError(file, "out of memory (is a count in the file absurdly large?)");
   } catch (const std::length_error& error) {

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -6,6 +7,7 @@
 
 #include <shadelgraph/scene/gltf_accessor.hpp>
 #include <shadelgraph/scene/gltf_mesh.hpp>
+#include <shadelgraph/scene/input_limits.hpp>
 #include <shadelgraph/scene/normals.hpp>
 #include <shadelgraph/scene/tangents.hpp>
 #include <shadelgraph/scene/triangulate.hpp>
@@ -95,6 +97,10 @@ class PrimitiveBuilder {
 
   // One warning per kind of repair, not one per primitive.
   void reportRepairs() {
+    if (!minMaxMismatches_.empty())
+      context_.warnings.push_back("accessor min/max differ from the data (ignored: bounds are computed): " +
+                                  minMaxMismatches_.front() +
+                                  (minMaxMismatches_.size() > 1 ? " and " + std::to_string(minMaxMismatches_.size() - 1) + " more" : ""));
     for (const auto& [what, primitives] : repairs_)
       context_.warnings.push_back(what + ": " + primitives.front() +
                                   (primitives.size() > 1 ? " and " + std::to_string(primitives.size() - 1) + " more" : ""));
@@ -130,12 +136,39 @@ class PrimitiveBuilder {
            std::to_string(*vertexCount));
     const std::vector<float> floats = toFloats(accessor);
     std::vector<glm::vec<N, float>> out(accessor.count);
+    const bool position = std::string_view(name) == "POSITION";
     for (size_t i = 0; i < accessor.count; ++i) {
       for (int c = 0; c < N; ++c) out[i][c] = floats[i * N + static_cast<size_t>(c)];
-      for (int c = 0; c < N; ++c)
+      for (int c = 0; c < N; ++c) {
         if (!std::isfinite(out[i][c])) fail(std::string(name) + " " + std::to_string(i) + " is not finite: " + toText(out[i]));
+        if (position && static_cast<double>(std::abs(out[i][c])) > kMaxCoordinate)
+          fail("POSITION " + std::to_string(i) + " " + toText(out[i]) +
+               " is beyond +-1e18, where squared lengths overflow 32-bit float");
+      }
     }
+    checkMinMax(context_.model.accessors[static_cast<size_t>(it->second)], floats, N, it->second);
     return out;
+  }
+
+  // ACCESSOR_MIN_MISMATCH / ACCESSOR_MAX_MISMATCH: a warning, not an error.
+  // The loader computes bounds from the data and never reads min/max, so a
+  // wrong declaration changes nothing that is drawn.
+  void checkMinMax(const tinygltf::Accessor& accessor, const std::vector<float>& floats, int components, int index) {
+    const auto n = static_cast<size_t>(components);
+    if (floats.empty() || accessor.normalized) return;  // normalized: min/max are in the stored integers
+    for (const auto& [declared, isMax] : {std::pair{&accessor.minValues, false}, std::pair{&accessor.maxValues, true}}) {
+      if (declared->size() != n) continue;
+      for (size_t c = 0; c < n; ++c) {
+        float actual = floats[c];
+        for (size_t i = c; i < floats.size(); i += n) actual = isMax ? std::max(actual, floats[i]) : std::min(actual, floats[i]);
+        const auto stated = static_cast<float>((*declared)[c]);
+        if (std::abs(actual - stated) > 1e-5f * std::max(1.0f, std::abs(actual))) {
+          minMaxMismatches_.push_back("/accessors/" + std::to_string(index) + "/" + (isMax ? "max/" : "min/") +
+                                      std::to_string(c));
+          break;
+        }
+      }
+    }
   }
 
   void checkFormat(const PackedAccessor& accessor, const AttributeFormat& format, const char* name, int index) const {
@@ -183,7 +216,8 @@ class PrimitiveBuilder {
       for (size_t i = 0; i < corners.size(); ++i)
         if (corners[i] >= vertexCount)
           fail("index " + std::to_string(corners[i]) + " (indices[" + std::to_string(i) +
-               "]) is out of range: the primitive has " + std::to_string(vertexCount) + " vertices");
+               "]) is out of range: the primitive has " + std::to_string(vertexCount) + " vertices (/accessors/" +
+               std::to_string(in_->indices) + ", ACCESSOR_INDEX_OOB)");
     } else {
       corners.resize(vertexCount);
       std::iota(corners.begin(), corners.end(), 0u);
@@ -248,6 +282,7 @@ class PrimitiveBuilder {
   const tinygltf::Primitive* in_ = nullptr;
   std::string where_;
   std::map<std::string, std::vector<std::string>> repairs_;
+  std::vector<std::string> minMaxMismatches_;
 };
 
 }  // namespace

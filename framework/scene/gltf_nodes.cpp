@@ -50,9 +50,18 @@ std::vector<int> parents(const tinygltf::Model& model) {
     if (n >= 0 && state[static_cast<size_t>(n)] == OnChain) {
       // chain[k + 1] is chain[k]'s parent and chain.back()'s parent is n:
       // name the cycle parent first, n -> chain.back() -> ... -> n.
+      // At most kShown nodes are named: a 50,000-node cycle would be a 700 KB line.
+      constexpr size_t kShown = 8;
       const auto first = static_cast<size_t>(std::find(chain.begin(), chain.end(), n) - chain.begin());
       std::string text = nodeName(model, n);
-      for (size_t k = chain.size() - 1; k > first; --k) text += " -> " + nodeName(model, chain[k]);
+      size_t shown = 1;
+      for (size_t k = chain.size() - 1; k > first; --k, ++shown) {
+        if (shown == kShown) {
+          text += " -> ... (" + std::to_string(k - first) + " more)";
+          break;
+        }
+        text += " -> " + nodeName(model, chain[k]);
+      }
       throw InvalidAsset("node hierarchy has a cycle: " + text + " -> " + nodeName(model, n));
     }
     for (int c : chain) state[static_cast<size_t>(c)] = Done;
@@ -105,6 +114,7 @@ Camera toCamera(const tinygltf::Camera& in, const std::string& name) {
     out.zfar = static_cast<float>(o.zfar);
     if (o.xmag == 0.0 || o.ymag == 0.0 || o.znear < 0.0 || !(o.zfar > o.znear))
       throw InvalidAsset(name + ": orthographic camera needs xmag, ymag != 0 and 0 <= znear < zfar");
+    if (!(out.zfar > out.znear)) throw InvalidAsset(name + ": orthographic zfar and znear are equal as 32-bit floats");
   } else {
     const tinygltf::PerspectiveCamera& p = in.perspective;
     out.projection = Projection::Perspective;
@@ -114,7 +124,18 @@ Camera toCamera(const tinygltf::Camera& in, const std::string& name) {
     if (p.zfar > 0.0) out.zfar = static_cast<float>(p.zfar);
     if (!(p.yfov > 0.0) || !(p.znear > 0.0) || (p.zfar > 0.0 && !(p.zfar > p.znear)) || p.aspectRatio < 0.0)
       throw InvalidAsset(name + ": perspective camera needs yfov > 0, znear > 0, zfar > znear, aspectRatio > 0");
+    // tan(yfov / 2) turns negative at pi: the image would be upside down or empty.
+    if (!(p.yfov < std::numbers::pi))
+      throw InvalidAsset(name + ": perspective yfov " + std::to_string(p.yfov) + " must be below pi");
+    if (out.zfar && !(*out.zfar > out.znear))
+      throw InvalidAsset(name + ": perspective zfar and znear are equal as 32-bit floats");
   }
+  // Finite inputs can still give a non-finite projection (zfar * znear overflows).
+  const glm::mat4 projection = out.projectionMatrix(1.0f);
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(projection[c][r]))
+        throw InvalidAsset(name + ": its znear, zfar, yfov, xmag, ymag give a non-finite projection matrix");
   return out;
 }
 
@@ -156,6 +177,10 @@ class NodeWalker {
       const tinygltf::Node& node = model_.nodes[static_cast<size_t>(pending.node)];
       const std::string name = nodeName(model_, pending.node);
       const glm::mat4 world = pending.parentWorld * localTransform(node, name);
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+          if (!std::isfinite(world[c][r]))
+            throw InvalidAsset(name + ": world transform (its own times its parents') is not finite");
       const ShadingMode shading = shadingFromExtras(node, name, context_.warnings).value_or(pending.shading);
       place(node, pending.node, name, world, shading);
       for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)

@@ -1,5 +1,7 @@
+#include <cfloat>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -9,80 +11,91 @@
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
+#include <shadelgraph/scene/input_limits.hpp>
 #include <shadelgraph/scene/scene_file.hpp>
 
 namespace sg::scene {
 namespace {
 
 using Json = nlohmann::json;
+using detail::capText;
+using detail::kMaxCoordinate;
 
-// Errors inside the file: a JSON path and what is wrong with it.
+// Errors inside the file: a JSON pointer and what is wrong with it.
 class FormatError : public std::runtime_error {
  public:
-  FormatError(const std::string& path, const std::string& what) : std::runtime_error(path + ": " + what) {}
+  FormatError(const std::string& path, const std::string& what)
+      : std::runtime_error((path.empty() ? "the document" : path) + ": " + what) {}
 };
 
 void allowOnly(const Json& object, const std::string& path, std::initializer_list<const char*> keys) {
   if (!object.is_object()) throw FormatError(path, "expected an object");
   const std::set<std::string> allowed(keys.begin(), keys.end());
   for (const auto& [key, value] : object.items())
-    if (!allowed.contains(key)) throw FormatError(path, "unknown property '" + key + "'");
+    if (!allowed.contains(key)) throw FormatError(path, "unknown property '" + capText(key, 80) + "'");
 }
 
-float number(const Json& object, const char* key, const std::string& path, float fallback) {
+// Numbers become 32-bit floats: 1e39 is finite as a double and infinite
+// after. Coordinates (`limit` kMaxCoordinate) stay where squared lengths are finite.
+float toFloat(const Json& value, const std::string& path, double limit) {
+  if (!value.is_number()) throw FormatError(path, "expected a number");
+  const double number = value.get<double>();
+  if (!(std::abs(number) <= double{FLT_MAX})) throw FormatError(path, value.dump() + " is outside the range of a 32-bit float");
+  if (std::abs(number) > limit)
+    throw FormatError(path, value.dump() + " is beyond +-1e18, where squared lengths overflow 32-bit float");
+  return static_cast<float>(number);
+}
+
+float number(const Json& object, const char* key, const std::string& path, float fallback, double limit = double{FLT_MAX}) {
   const auto it = object.find(key);
   if (it == object.end()) return fallback;
-  if (!it->is_number() || !std::isfinite(it->get<double>())) throw FormatError(path + "." + key, "expected a number");
-  return it->get<float>();
+  return toFloat(*it, path + "/" + key, limit);
 }
 
-float requiredNumber(const Json& object, const char* key, const std::string& path) {
-  if (!object.contains(key)) throw FormatError(path + "." + key, "required property is missing");
-  return number(object, key, path, 0.0f);
+float requiredNumber(const Json& object, const char* key, const std::string& path, double limit = double{FLT_MAX}) {
+  if (!object.contains(key)) throw FormatError(path + "/" + key, "required property is missing");
+  return number(object, key, path, 0.0f, limit);
 }
 
 template <int N>
-glm::vec<N, float> vector(const Json& object, const char* key, const std::string& path, glm::vec<N, float> fallback) {
+glm::vec<N, float> vector(const Json& object, const char* key, const std::string& path, glm::vec<N, float> fallback,
+                          double limit = double{FLT_MAX}) {
   const auto it = object.find(key);
   if (it == object.end()) return fallback;
-  const std::string where = path + "." + key;
+  const std::string where = path + "/" + key;
   if (!it->is_array() || it->size() != N) throw FormatError(where, "expected an array of " + std::to_string(N) + " numbers");
   glm::vec<N, float> out;
-  for (int i = 0; i < N; ++i) {
-    const Json& element = (*it)[static_cast<size_t>(i)];
-    if (!element.is_number() || !std::isfinite(element.get<double>())) throw FormatError(where, "expected numbers");
-    out[i] = element.get<float>();
-  }
+  for (int i = 0; i < N; ++i) out[i] = toFloat((*it)[static_cast<size_t>(i)], where + "/" + std::to_string(i), limit);
   return out;
 }
 
 template <int N>
-glm::vec<N, float> requiredVector(const Json& object, const char* key, const std::string& path) {
-  if (!object.contains(key)) throw FormatError(path + "." + key, "required property is missing");
-  return vector<N>(object, key, path, glm::vec<N, float>(0.0f));
+glm::vec<N, float> requiredVector(const Json& object, const char* key, const std::string& path, double limit = double{FLT_MAX}) {
+  if (!object.contains(key)) throw FormatError(path + "/" + key, "required property is missing");
+  return vector<N>(object, key, path, glm::vec<N, float>(0.0f), limit);
 }
 
 std::string text(const Json& object, const char* key, const std::string& path, const std::string& fallback) {
   const auto it = object.find(key);
   if (it == object.end()) return fallback;
-  if (!it->is_string()) throw FormatError(path + "." + key, "expected a string");
+  if (!it->is_string()) throw FormatError(path + "/" + key, "expected a string");
   return it->get<std::string>();
 }
 
 glm::vec3 direction(const Json& object, const std::string& path) {
   const glm::vec3 d = vector<3>(object, "direction", path, glm::vec3(0.0f, 0.0f, -1.0f));
-  if (!(glm::length(d) > 0.0f)) throw FormatError(path + ".direction", "must not be zero");
+  if (!(glm::length(d) > 0.0f)) throw FormatError(path + "/direction", "must not be zero (or is too long)");
   return glm::normalize(d);
 }
 
 glm::mat4 objectTransform(const Json& object, const std::string& path) {
-  const glm::vec3 translation = vector<3>(object, "translation", path, glm::vec3(0.0f));
+  const glm::vec3 translation = vector<3>(object, "translation", path, glm::vec3(0.0f), kMaxCoordinate);
   glm::quat rotation(1.0f, 0.0f, 0.0f, 0.0f);
   if (object.contains("rotation") && object.contains("rotationDegrees"))
     throw FormatError(path, "give rotation or rotationDegrees, not both");
   if (object.contains("rotation")) {
     const glm::vec4 q = vector<4>(object, "rotation", path, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-    if (!(glm::length(q) > 0.0f)) throw FormatError(path + ".rotation", "must not be zero");
+    if (!(glm::length(q) > 0.0f)) throw FormatError(path + "/rotation", "must not be zero (or is too long)");
     rotation = glm::normalize(glm::quat(q.w, q.x, q.y, q.z));
   } else if (object.contains("rotationDegrees")) {
     const glm::vec3 degrees = vector<3>(object, "rotationDegrees", path, glm::vec3(0.0f));
@@ -92,7 +105,8 @@ glm::mat4 objectTransform(const Json& object, const std::string& path) {
   }
   glm::vec3 scale(1.0f);
   if (const auto it = object.find("scale"); it != object.end())
-    scale = it->is_number() ? glm::vec3(number(object, "scale", path, 1.0f)) : vector<3>(object, "scale", path, scale);
+    scale = it->is_number() ? glm::vec3(number(object, "scale", path, 1.0f, kMaxCoordinate))
+                            : vector<3>(object, "scale", path, scale, kMaxCoordinate);
   return glm::translate(glm::mat4(1.0f), translation) * glm::mat4_cast(rotation) * glm::scale(glm::mat4(1.0f), scale);
 }
 
@@ -104,12 +118,12 @@ Light parseLight(const Json& json, const std::string& path) {
   if (type == "directional") light.type = LightType::Directional;
   else if (type == "point") light.type = LightType::Point;
   else if (type == "spot") light.type = LightType::Spot;
-  else throw FormatError(path + ".type", "expected \"directional\", \"point\" or \"spot\"");
+  else throw FormatError(path + "/type", "expected \"directional\", \"point\" or \"spot\"");
   light.name = text(json, "name", path, "");
   light.color = vector<3>(json, "color", path, glm::vec3(1.0f));
   light.intensity = number(json, "intensity", path, 1.0f);
-  light.range = number(json, "range", path, 0.0f);
-  light.position = vector<3>(json, "position", path, glm::vec3(0.0f));
+  light.range = number(json, "range", path, 0.0f, kMaxCoordinate);
+  light.position = vector<3>(json, "position", path, glm::vec3(0.0f), kMaxCoordinate);
   light.direction = direction(json, path);
   light.innerConeAngle = number(json, "innerConeAngle", path, 0.0f);
   light.outerConeAngle = number(json, "outerConeAngle", path, std::numbers::pi_v<float> / 4);
@@ -117,7 +131,7 @@ Light parseLight(const Json& json, const std::string& path) {
       !(light.innerConeAngle >= 0.0f && light.innerConeAngle < light.outerConeAngle &&
         light.outerConeAngle <= std::numbers::pi_v<float> / 2 + 1e-6f))
     throw FormatError(path, "spot cone angles need 0 <= innerConeAngle < outerConeAngle <= pi/2");
-  if (light.range < 0.0f) throw FormatError(path + ".range", "must be >= 0");
+  if (light.range < 0.0f) throw FormatError(path + "/range", "must be >= 0");
   return light;
 }
 
@@ -129,39 +143,39 @@ CameraPath parseCameraPath(const Json& json, const std::string& path, size_t ind
   if (type == "orbit") {
     allowOnly(json, path, {"type", "name", "center", "radius", "height", "seconds"});
     out.type = CameraPath::Type::Orbit;
-    out.center = vector<3>(json, "center", path, glm::vec3(0.0f));
-    out.radius = requiredNumber(json, "radius", path);
-    out.height = number(json, "height", path, 0.0f);
+    out.center = vector<3>(json, "center", path, glm::vec3(0.0f), kMaxCoordinate);
+    out.radius = requiredNumber(json, "radius", path, kMaxCoordinate);
+    out.height = number(json, "height", path, 0.0f, kMaxCoordinate);
     out.seconds = number(json, "seconds", path, 10.0f);
-    if (!(out.radius > 0.0f)) throw FormatError(path + ".radius", "must be > 0");
-    if (!(out.seconds > 0.0f)) throw FormatError(path + ".seconds", "must be > 0");
+    if (!(out.radius > 0.0f)) throw FormatError(path + "/radius", "must be > 0");
+    if (!(out.seconds > 0.0f)) throw FormatError(path + "/seconds", "must be > 0");
   } else if (type == "keys") {
     allowOnly(json, path, {"type", "name", "keys"});
     out.type = CameraPath::Type::Keys;
     const auto keys = json.find("keys");
     if (keys == json.end() || !keys->is_array() || keys->empty())
-      throw FormatError(path + ".keys", "expected an array of at least one key");
+      throw FormatError(path + "/keys", "expected an array of at least one key");
     for (size_t k = 0; k < keys->size(); ++k) {
-      const std::string keyPath = path + ".keys[" + std::to_string(k) + "]";
+      const std::string keyPath = path + "/keys/" + std::to_string(k);
       const Json& key = (*keys)[k];
       allowOnly(key, keyPath, {"t", "position", "target"});
-      CameraKey parsed{requiredNumber(key, "t", keyPath), requiredVector<3>(key, "position", keyPath),
-                       requiredVector<3>(key, "target", keyPath)};
+      CameraKey parsed{requiredNumber(key, "t", keyPath), requiredVector<3>(key, "position", keyPath, kMaxCoordinate),
+                       requiredVector<3>(key, "target", keyPath, kMaxCoordinate)};
       if (!out.keys.empty() && !(parsed.time > out.keys.back().time))
-        throw FormatError(keyPath + ".t", "key times must increase strictly");
+        throw FormatError(keyPath + "/t", "key times must increase strictly");
       if (parsed.position == parsed.target) throw FormatError(keyPath, "position and target are the same point");
       out.keys.push_back(parsed);
     }
   } else {
-    throw FormatError(path + ".type", "expected \"orbit\" or \"keys\"");
+    throw FormatError(path + "/type", "expected \"orbit\" or \"keys\"");
   }
   return out;
 }
 
 SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadOptions& options) {
-  allowOnly(root, "the document", {"objects", "lights", "cameraPaths"});
+  allowOnly(root, "", {"objects", "lights", "cameraPaths"});
   const auto objects = root.find("objects");
-  if (objects == root.end() || !objects->is_array()) throw FormatError("objects", "expected an array");
+  if (objects == root.end() || !objects->is_array()) throw FormatError("/objects", "expected an array");
 
   SceneFile result;
   // Each glTF file is loaded once and its meshes, materials and textures are
@@ -174,17 +188,17 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
   };
   std::map<std::filesystem::path, Placements> loaded;
   for (size_t i = 0; i < objects->size(); ++i) {
-    const std::string path = "objects[" + std::to_string(i) + "]";
+    const std::string path = "/objects/" + std::to_string(i);
     const Json& object = (*objects)[i];
     allowOnly(object, path, {"gltf", "name", "translation", "rotation", "rotationDegrees", "scale", "shading",
                                "material"});
     const std::string gltf = text(object, "gltf", path, "");
-    if (gltf.empty()) throw FormatError(path + ".gltf", "required property is missing");
+    if (gltf.empty()) throw FormatError(path + "/gltf", "required property is missing");
     const std::filesystem::path gltfPath = (file.parent_path() / gltf).lexically_normal();
     std::optional<ShadingMode> shading;
     if (object.contains("shading")) {
       shading = parseShadingMode(text(object, "shading", path, ""));
-      if (!shading) throw FormatError(path + ".shading", "expected \"auto\", \"decoupled\" or \"forward\"");
+      if (!shading) throw FormatError(path + "/shading", "expected \"auto\", \"decoupled\" or \"forward\"");
     }
     // Checked against the registered materials when the renderer starts (plugins may add them).
     const std::string material = text(object, "material", path, "");
@@ -197,7 +211,7 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
       try {
         scene = loadGltf(gltfPath, options);
       } catch (const SceneError& error) {
-        throw FormatError(path + ".gltf", error.what());
+        throw FormatError(path + "/gltf", error.what());
       }
       Placements placements{std::move(scene.instances), std::move(scene.lights), std::move(scene.cameras),
                             static_cast<int>(result.scene.meshes.size())};
@@ -223,14 +237,14 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
   }
 
   if (const auto lights = root.find("lights"); lights != root.end()) {
-    if (!lights->is_array()) throw FormatError("lights", "expected an array");
+    if (!lights->is_array()) throw FormatError("/lights", "expected an array");
     for (size_t i = 0; i < lights->size(); ++i)
-      result.scene.lights.push_back(parseLight((*lights)[i], "lights[" + std::to_string(i) + "]"));
+      result.scene.lights.push_back(parseLight((*lights)[i], "/lights/" + std::to_string(i)));
   }
   if (const auto paths = root.find("cameraPaths"); paths != root.end()) {
-    if (!paths->is_array()) throw FormatError("cameraPaths", "expected an array");
+    if (!paths->is_array()) throw FormatError("/cameraPaths", "expected an array");
     for (size_t i = 0; i < paths->size(); ++i)
-      result.cameraPaths.push_back(parseCameraPath((*paths)[i], "cameraPaths[" + std::to_string(i) + "]", i));
+      result.cameraPaths.push_back(parseCameraPath((*paths)[i], "/cameraPaths/" + std::to_string(i), i));
   }
   return result;
 }
@@ -238,17 +252,25 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
 }  // namespace
 
 SceneFile loadSceneFile(const std::filesystem::path& file, const LoadOptions& options) {
-  std::ifstream stream(file);
+  std::ifstream stream(file, std::ios::binary);
   if (!stream) throw SceneError(file, "cannot open the file");
+  const std::string text((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+  if (stream.bad()) throw SceneError(file, "cannot read the file");
+  // Bounded before the recursive parser sees it: deep nesting would overflow the stack.
+  if (const auto error = detail::jsonDepthError(text)) throw SceneError(file, *error);
   try {
-    const Json root = Json::parse(stream);
-    return parse(root, file, options);
+    const Json root = Json::parse(text);
+    SceneFile result = parse(root, file, options);
+    detail::capWarnings(result.scene.warnings);
+    return result;
   } catch (const Json::parse_error& error) {
-    throw SceneError(file, std::string("invalid JSON: ") + error.what());
-  } catch (const Json::exception& error) {
-    throw SceneError(file, error.what());
+    throw SceneError(file, "invalid JSON: " + capText(error.what()));
+  } catch (const Json::exception& error) {  // e.g. out_of_range for 1e999
+    throw SceneError(file, "invalid JSON: " + capText(error.what()));
   } catch (const FormatError& error) {
-    throw SceneError(file, error.what());
+    throw SceneError(file, capText(error.what(), 1000));
+  } catch (const std::bad_alloc&) {
+    throw SceneError(file, "out of memory");
   }
 }
 

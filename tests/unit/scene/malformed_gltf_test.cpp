@@ -56,15 +56,15 @@ const MalformedCase kAssimpCases[] = {
     {"RecursiveNodes/RecursiveNodes.gltf", "node hierarchy has a cycle: node 0 -> node 1 -> node 0"},
     // Also lacks its .bin; the type error is reported first.
     {"SchemaFailures/sceneWrongType.gltf", "scene: expected an integer >= 0, got the string \"hello\""},
-    {"wrongTypes/badArray.gltf", "meshes[0].primitives: expected an array, got an object"},
-    {"wrongTypes/badExtension.gltf", "baseColorTexture.extensions.KHR_texture_transform: expected an object"},
+    {"wrongTypes/badArray.gltf", "/meshes/0/primitives: expected an array, got an object"},
+    {"wrongTypes/badExtension.gltf", "baseColorTexture/extensions/KHR_texture_transform: expected an object"},
     // "scale": "not a number" in a normalTexture that also lacks its index.
-    {"wrongTypes/badNumber.gltf", "materials[0].normalTexture"},
-    {"wrongTypes/badObject.gltf", "materials[0].pbrMetallicRoughness: expected an object, got an array"},
-    {"wrongTypes/badString.gltf", "scenes[0].name: expected a string, got the number 42"},
-    {"wrongTypes/badUint.gltf", "baseColorTexture.index: expected an integer >= 0, got the number -1"},
+    {"wrongTypes/badNumber.gltf", "/materials/0/normalTexture"},
+    {"wrongTypes/badObject.gltf", "/materials/0/pbrMetallicRoughness: expected an object, got an array"},
+    {"wrongTypes/badString.gltf", "/scenes/0/name: expected a string, got the number 42"},
+    {"wrongTypes/badUint.gltf", "baseColorTexture/index: expected an integer >= 0, got the number -1"},
     // Not in the brief's list, also malformed:
-    {"IncorrectVertexArrays/Cube.gltf", "bufferView 2: bytes [504, 936) lie outside buffer 0 ('Cube.bin'), which has 514 bytes"},
+    {"IncorrectVertexArrays/Cube.gltf", "/bufferViews/2: bytes at offset 504, length 432 do not fit buffer 0's byteLength 514 (BUFFER_VIEW_TOO_LONG)"},
     {"TestNoRootNode/NoScene.gltf", "scene 0 does not exist"},
     {"draco/2CylinderEngine.gltf", "requires the unsupported extension KHR_draco_mesh_compression"},
     {"BoxTextured-glTF-techniqueWebGL/BoxTextured.gltf", "requires the unsupported extension KHR_technique_webgl"},
@@ -156,16 +156,16 @@ const SynthesizedCase kSynthesizedCases[] = {
     {"LongCycle", R"({"mesh": 0}, {"children": [2]}, {"children": [3]}, {"children": [1]})", "0", "",
      "cycle: node 1 -> node 2 -> node 3 -> node 1"},
     {"RootIsChild", R"({"children": [1]}, {"mesh": 0})", "0, 1", "", "lists node 1 as a root, but it is a child of node 0"},
-    {"MissingChild", R"({"children": [7]})", "0", "", "node 0: child 7 does not exist"},
-    {"MissingMesh", R"({"mesh": 3})", "0", "", "node 0: mesh 3 does not exist (the file has 1)"},
-    {"MissingSceneNode", R"({"mesh": 0})", "4", "", "scene 0: node 4 does not exist"},
-    {"MissingCamera", R"({"camera": 0})", "0", "", "node 0: camera 0 does not exist"},
-    {"MissingLight", R"({"extensions": {"KHR_lights_punctual": {"light": 2}}})", "0", "", "node 0: light 2 does not exist"},
+    {"MissingChild", R"({"children": [7]})", "0", "", "/nodes/0/children/0: node 7 does not exist (the file has 1)"},
+    {"MissingMesh", R"({"mesh": 3})", "0", "", "/nodes/0/mesh: mesh 3 does not exist (the file has 1)"},
+    {"MissingSceneNode", R"({"mesh": 0})", "4", "", "/scenes/0/nodes/0: node 4 does not exist"},
+    {"MissingCamera", R"({"camera": 0})", "0", "", "/nodes/0/camera: camera 0 does not exist"},
+    {"MissingLight", R"({"extensions": {"KHR_lights_punctual": {"light": 2}}})", "0", "", "/nodes/0/extensions/KHR_lights_punctual/light: light 2 does not exist"},
     {"BadCamera", R"({"camera": 0})", "0", R"(, "cameras": [{"type": "perspective", "perspective": {"yfov": 0, "znear": 0.1}}])",
      "camera 0: perspective camera needs yfov > 0"},
     {"UnsupportedRequiredExtension", R"({"mesh": 0})", "0", R"(, "extensionsRequired": ["KHR_mesh_quantization"])",
      "requires the unsupported extension KHR_mesh_quantization"},
-    {"NonFiniteMatrix", R"({"mesh": 0, "scale": [1, 1e39, 1]})", "0", "", "node 0: transform is not finite"},
+    {"NonFiniteMatrix", R"({"mesh": 0, "scale": [1, 1e39, 1]})", "0", "", "/nodes/0/scale/1: expected a number within the range of a 32-bit float, got the number 1e+39"},
 };
 
 class SynthesizedMalformed : public ::testing::TestWithParam<SynthesizedCase> {};
@@ -200,7 +200,7 @@ TEST(MalformedGltf, AccessorOutsideItsBufferView) {
   const auto file = writeAccessorGltf(dir, R"({"attributes": {"POSITION": 0}})",
                                       R"({"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3"})",
                                       R"({"buffer": 0, "byteLength": 36})", 36);
-  EXPECT_THAT(loadError(file), HasSubstr("mesh 0 'm' primitive 0 POSITION (accessor 0): reads bytes [0, 48) of bufferView 0, which has 36 bytes"));
+  EXPECT_THAT(loadError(file), HasSubstr("/accessors/0: 4 elements of 12 bytes from offset 0 do not fit its bufferView's 36 bytes (ACCESSOR_TOO_LONG)"));
 }
 
 TEST(MalformedGltf, BufferViewOutsideItsBuffer) {
@@ -208,7 +208,7 @@ TEST(MalformedGltf, BufferViewOutsideItsBuffer) {
   const auto file = writeAccessorGltf(dir, R"({"attributes": {"POSITION": 0}})",
                                       R"({"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"})",
                                       R"({"buffer": 0, "byteOffset": 8, "byteLength": 36})", 36);
-  EXPECT_THAT(loadError(file), HasSubstr("bufferView 0: bytes [8, 44) lie outside buffer 0"));
+  EXPECT_THAT(loadError(file), HasSubstr("/bufferViews/0: bytes at offset 8, length 36 do not fit buffer 0's byteLength 36 (BUFFER_VIEW_TOO_LONG)"));
 }
 
 TEST(MalformedGltf, StrideSmallerThanElement) {
@@ -251,7 +251,7 @@ TEST(MalformedGltf, WrongComponentTypes) {
     const auto file = writeAccessorGltf(dir, R"({"attributes": {"POSITION": 0}})",
                                         R"({"bufferView": 0, "componentType": 5124, "count": 3, "type": "VEC3"})",
                                         R"({"buffer": 0, "byteLength": 36})", 36);
-    EXPECT_THAT(loadError(file), HasSubstr("accessors[0].componentType: expected one of"));
+    EXPECT_THAT(loadError(file), HasSubstr("/accessors/0/componentType: expected one of"));
   }
 }
 
@@ -290,7 +290,7 @@ TEST(MalformedGltf, MissingMaterial) {
   const auto file = writeAccessorGltf(dir, R"({"attributes": {"POSITION": 0}, "material": 2})",
                                       R"({"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"})",
                                       R"({"buffer": 0, "byteLength": 36})", 36);
-  EXPECT_THAT(loadError(file), HasSubstr("mesh 0 'm' primitive 0: material 2 does not exist (the file has 0)"));
+  EXPECT_THAT(loadError(file), HasSubstr("/meshes/0/primitives/0/material: material 2 does not exist (the file has 0)"));
 }
 
 TEST(MalformedGltf, NanNormal) {

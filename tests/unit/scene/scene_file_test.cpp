@@ -122,25 +122,25 @@ TEST(SceneFile, Errors) {
   EXPECT_THAT(loadError(dir.path() / "absent.json"), HasSubstr("cannot open"));
   EXPECT_THAT(loadError(writeScene(dir, "{")), HasSubstr("invalid JSON"));
   EXPECT_THAT(loadError(writeScene(dir, R"({"objects": [{"gltf": "models/triangle.gltf", "shadng": "forward"}]})")),
-              HasSubstr("objects[0]: unknown property 'shadng'"));
+              HasSubstr("/objects/0: unknown property 'shadng'"));
   EXPECT_THAT(loadError(writeScene(dir, R"({"objects": [{"gltf": "models/triangle.gltf", "shading": "sometimes"}]})")),
-              HasSubstr("objects[0].shading: expected \"auto\", \"decoupled\" or \"forward\""));
+              HasSubstr("/objects/0/shading: expected \"auto\", \"decoupled\" or \"forward\""));
   EXPECT_THAT(loadError(writeScene(dir, R"({"objects": [{"gltf": "models/absent.gltf"}]})")),
-              HasSubstr("objects[0].gltf: "));
+              HasSubstr("/objects/0/gltf: "));
   EXPECT_THAT(loadError(writeScene(dir, R"({"objects": [{"gltf": "models/absent.gltf"}]})")), HasSubstr("no such file"));
   EXPECT_THAT(loadError(writeScene(dir, R"({"objects": [{"gltf": "models/triangle.gltf", "rotation": [0, 0, 0, 1],
                                                           "rotationDegrees": [0, 0, 0]}]})")),
               HasSubstr("not both"));
   EXPECT_THAT(loadError(writeScene(dir, R"({"objects": [], "cameraPaths": [{"type": "orbit"}]})")),
-              HasSubstr("cameraPaths[0].radius: required property is missing"));
+              HasSubstr("/cameraPaths/0/radius: required property is missing"));
   EXPECT_THAT(loadError(writeScene(dir, R"({"objects": [], "cameraPaths": [{"type": "keys", "keys": [
                  {"t": 1, "position": [0, 0, 1], "target": [0, 0, 0]}, {"t": 1, "position": [0, 0, 2], "target": [0, 0, 0]}]}]})")),
-              HasSubstr("cameraPaths[0].keys[1].t: key times must increase strictly"));
+              HasSubstr("/cameraPaths/0/keys/1/t: key times must increase strictly"));
   EXPECT_THAT(loadError(writeScene(dir, R"({"objects": [], "lights": [{"type": "area"}]})")),
-              HasSubstr("lights[0].type"));
+              HasSubstr("/lights/0/type"));
   EXPECT_THAT(loadError(writeScene(dir, R"({"objects": [{"gltf": "models/triangle.gltf", "scale": "big"}]})")),
-              HasSubstr("objects[0].scale"));
-  EXPECT_THAT(loadError(writeScene(dir, R"({"lights": []})")), HasSubstr("objects: expected an array"));
+              HasSubstr("/objects/0/scale"));
+  EXPECT_THAT(loadError(writeScene(dir, R"({"lights": []})")), HasSubstr("/objects: expected an array"));
 }
 
 TEST(CameraPath, OrbitGoesRoundItsCenter) {
