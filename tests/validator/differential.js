@@ -162,7 +162,7 @@ async function main() {
   });
 
   let agree = 0, mustRejectFiles = 0, mustRejectNamed = 0;
-  const failures = [], byCode = new Map(), validButRejected = new Map();
+  const failures = [], byCode = new Map(), validButRejected = new Map(), silent = new Map();
   for (const row of rows) {
     const l = row.loader;
     const lines = l.stderr.split('\n').filter((s) => s.startsWith('shadelgraph: error:'));
@@ -180,6 +180,15 @@ async function main() {
     if (row.issues.length === 0 && rejected) {
       const what = message.replace(/^shadelgraph: error: [^:]*: /, '').replace(/\d+/g, 'N').slice(0, 90);
       increment(validButRejected, what, 'rejected');
+    }
+    // Loaded despite errors outside the must-reject classes: fine with a warning
+    // that names the place, counted (not failed) without one.
+    if (!rejected && hostile.length === 0) {
+      for (const i of row.issues) {
+        if (skippedByLoader(i, l.warnings) || l.warnings.some((w) => namesPointer(w, i.pointer))) continue;
+        const where = (i.pointer || '(document)').replace(/\/\d+/g, '/N');
+        increment(silent, `${i.code} at ${where}`, 'accepted');
+      }
     }
     if (hostile.length > 0) {
       mustRejectFiles++;
@@ -204,6 +213,8 @@ async function main() {
     console.log(`  ${MUST_REJECT.has(code) || code.startsWith('GLB_') ? '*' : ' '} ${code}: ${e.files}, ${e.rejected}, ${e.accepted}`);
   console.log(`valid to the validator, rejected by the loader: ${[...validButRejected.values()].reduce((s, e) => s + e.files, 0)}`);
   for (const [what, e] of [...validButRejected].sort((a, b) => b[1].files - a[1].files)) console.log(`  ${e.files}: ${what}`);
+  console.log(`errors loaded without a warning that names them: ${[...silent.values()].reduce((s, e) => s + e.files, 0)}`);
+  for (const [what, e] of [...silent].sort((a, b) => b[1].files - a[1].files)) console.log(`  ${e.files}: ${what}`);
   if (reportPath) fs.writeFileSync(reportPath, JSON.stringify(rows, null, 1));
   for (const f of failures) console.log(`FAIL ${f}`);
   console.log(failures.length ? `${failures.length} failures` : 'no failures');
