@@ -1,3 +1,4 @@
+#include <cctype>
 #include <cmath>
 #include <string>
 
@@ -54,6 +55,25 @@ uint64_t elementSize(const Json& accessor) {
   return columns * column;
 }
 
+// A data: URI tinygltf can decode: base64, and only base64 characters after
+// the comma. tinygltf's own error quotes the whole URI (68 KB lines).
+void checkDataUri(const Json& holder, const std::string& path) {
+  const Json* uri = member(holder, "uri");
+  if (!uri || !uri->is_string()) return;
+  const std::string& text = uri->get_ref<const std::string&>();
+  if (!text.starts_with("data:")) return;
+  const size_t comma = text.find(',');
+  const bool base64 = comma != std::string::npos && comma >= 7 && text.compare(comma - 7, 7, ";base64") == 0;
+  size_t bad = std::string::npos;
+  if (base64)
+    for (size_t i = comma + 1; i < text.size() && bad == std::string::npos; ++i)
+      if (!std::isalnum(static_cast<unsigned char>(text[i])) && text[i] != '+' && text[i] != '/' && text[i] != '=') bad = i;
+  if (!base64 || bad != std::string::npos)
+    throw InvalidAsset(path + "/uri: " + (base64 ? "data: URI has a non-base64 character at " + std::to_string(bad)
+                                                 : std::string("data: URI is not base64")) +
+                       " (" + capText(text, 48) + ")");
+}
+
 class LinkChecker {
  public:
   explicit LinkChecker(const Json& root) : root_(root) {
@@ -72,7 +92,11 @@ class LinkChecker {
       reference(texture, "sampler", path, "samplers");
       reference(texture, "source", path, "images");
     });
-    each("images", [&](const Json& image, const std::string& path) { reference(image, "bufferView", path, "bufferViews"); });
+    each("images", [&](const Json& image, const std::string& path) {
+      reference(image, "bufferView", path, "bufferViews");
+      checkDataUri(image, path);
+    });
+    each("buffers", [&](const Json& buffer, const std::string& path) { checkDataUri(buffer, path); });
     each("materials", [&](const Json& material, const std::string& path) { this->material(material, path); });
     each("skins", [&](const Json& skin, const std::string& path) {
       reference(skin, "inverseBindMatrices", path, "accessors");

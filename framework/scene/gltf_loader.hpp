@@ -18,14 +18,19 @@
 // tangents.hpp), a triangle list whose length is not a multiple of 3 loses
 // its last vertices.
 //
-// Errors (SceneError, "<file>: <what>"): unreadable file, JSON type errors
-// (checked before tinygltf, which silently ignores many), tinygltf errors,
+// Errors (SceneError, "<file>: <what>", naming the JSON pointer where there
+// is one): JSON nested deeper than 256 levels, a GLB container that lies
+// about its version or lengths, unreadable file, JSON type errors
+// (checked before tinygltf, which silently ignores many), references and byte
+// ranges checked on the raw JSON (tinygltf keeps indices in int), numbers
+// outside float range, coordinates beyond 1e18, non-TRS matrices, tinygltf errors,
 // unsupported required extensions, indices or references out of range,
 // accessors outside their buffer, wrong accessor types, non-finite or
 // zero-length vertex data, node cycles and nodes with two parents, and any
 // image a material uses that is missing or cannot be decoded: tinygltf only
 // warns about those, but rendering the material without its texture would be
-// silently wrong.
+// silently wrong. Every decision and its glTF-Validator class:
+// docs/hostile-input.md.
 #include <filesystem>
 
 #include <shadelgraph/scene/scene.hpp>

@@ -40,7 +40,14 @@ std::string toText(const glm::vec<N, float>& v) {
 class PrimitiveBuilder {
  public:
   PrimitiveBuilder(const GltfContext& context, Scene& scene, int& defaultMaterial)
-      : context_(context), scene_(scene), defaultMaterial_(defaultMaterial) {}
+      : context_(context), scene_(scene), defaultMaterial_(defaultMaterial) {
+    // Every accessor is read once per primitive that uses it, so thousands of
+    // primitives sharing one large accessor would multiply the file's bytes:
+    // reads are capped at 8x the buffers' bytes plus 64 MiB.
+    uint64_t bufferBytes = 0;
+    for (const tinygltf::Buffer& buffer : context.model.buffers) bufferBytes += buffer.data.size();
+    readBudget_ = 8 * bufferBytes + (uint64_t{64} << 20);
+  }
 
   // nullopt: the primitive is skipped (with a warning).
   std::optional<Primitive> build(const tinygltf::Primitive& in, const std::string& where) {
@@ -109,6 +116,21 @@ class PrimitiveBuilder {
  private:
   [[noreturn]] void fail(const std::string& what) const { throw InvalidAsset(where_ + ": " + what); }
 
+  // Charged before reading: counts were checked against the bytes behind
+  // them (unbacked ones bounded), so count x element size cannot overflow.
+  PackedAccessor read(int index, const std::string& what) {
+    if (index >= 0 && static_cast<size_t>(index) < context_.model.accessors.size()) {
+      const tinygltf::Accessor& accessor = context_.model.accessors[static_cast<size_t>(index)];
+      const int elementSize = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(accessor.componentType)) *
+                              tinygltf::GetNumComponentsInType(static_cast<uint32_t>(accessor.type));
+      bytesRead_ += accessor.count * static_cast<uint64_t>(std::clamp(elementSize, 1, 64));
+    }
+    if (bytesRead_ > readBudget_)
+      fail("the primitives would read " + std::to_string(bytesRead_) + " bytes of accessors, more than 8 times the " +
+           "file's buffers plus 64 MiB (" + std::to_string(readBudget_) + "): is one accessor shared by thousands of primitives?");
+    return readAccessor(context_.model, index, what);
+  }
+
   void warnMissingTexCoords(const Primitive& primitive) {
     const Material& material = scene_.materials[static_cast<size_t>(primitive.material)];
     const std::pair<const char*, const TextureRef*> refs[] = {
@@ -129,7 +151,7 @@ class PrimitiveBuilder {
     const auto it = in_->attributes.find(name);
     if (it == in_->attributes.end()) return {};
     const std::string what = where_ + " " + name;
-    const PackedAccessor accessor = readAccessor(context_.model, it->second, what);
+    const PackedAccessor accessor = read(it->second, what);
     checkFormat(accessor, format, name, it->second);
     if (vertexCount && accessor.count != *vertexCount)
       fail(std::string(name) + " has " + std::to_string(accessor.count) + " elements, POSITION has " +
@@ -187,7 +209,7 @@ class PrimitiveBuilder {
   std::vector<glm::vec4> colors(size_t vertexCount) {
     const auto it = in_->attributes.find("COLOR_0");
     if (it == in_->attributes.end()) return {};
-    const PackedAccessor accessor = readAccessor(context_.model, it->second, where_ + " COLOR_0");
+    const PackedAccessor accessor = read(it->second, where_ + " COLOR_0");
     checkFormat(accessor, {{3, 4}, true}, "COLOR_0", it->second);
     if (accessor.count != vertexCount)
       fail("COLOR_0 has " + std::to_string(accessor.count) + " elements, POSITION has " + std::to_string(vertexCount));
@@ -205,7 +227,7 @@ class PrimitiveBuilder {
   std::vector<uint32_t> triangleList(int mode, size_t vertexCount) {
     std::vector<uint32_t> corners;
     if (in_->indices >= 0) {
-      const PackedAccessor accessor = readAccessor(context_.model, in_->indices, where_ + " indices");
+      const PackedAccessor accessor = read(in_->indices, where_ + " indices");
       const int type = accessor.componentType;
       if (accessor.components != 1 ||
           (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
@@ -283,6 +305,8 @@ class PrimitiveBuilder {
   std::string where_;
   std::map<std::string, std::vector<std::string>> repairs_;
   std::vector<std::string> minMaxMismatches_;
+  uint64_t bytesRead_ = 0;
+  uint64_t readBudget_ = 0;
 };
 
 }  // namespace
