@@ -5,6 +5,7 @@
 // and libFuzzer reports it, like a crash.
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 #include <shadelgraph/scene/gltf_loader.hpp>
 #include <shadelgraph/scene/uv_chart.hpp>
@@ -12,7 +13,8 @@
 #include "fuzz_scratch.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const auto path = sg::fuzz::writeInput("input.gltf", data, size);
+  const bool glb = size >= 4 && std::memcmp(data, "glTF", 4) == 0;
+  const auto path = sg::fuzz::writeInput(glb ? "input.glb" : "input.gltf", data, size);
   try {
     const sg::scene::Scene scene = sg::scene::loadGltf(path);
     // Touch what the renderer and inspect read, so bad sizes show up here.
