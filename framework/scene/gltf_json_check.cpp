@@ -106,11 +106,12 @@ class ShapeChecker {
     }
   }
 
-  // A JSON pointer one level down ("~" and "/" escaped as RFC 6901 says).
+  // A JSON pointer one level down ("~" and "/" escaped as RFC 6901 says);
+  // keys come from the file (extension and attribute names), so are capped.
   static std::string join(const std::string& path, const std::string& key) {
     std::string escaped;
     for (const char c : key) escaped += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
-    return path + "/" + escaped;
+    return path + "/" + capText(escaped, 64);
   }
 
   static const Json* member(const Json& object, const char* key) {

@@ -1,6 +1,7 @@
 #include <climits>
 #include <memory>
 #include <stdexcept>
+#include <string>
 
 #include <stb_image.h>
 
@@ -14,10 +15,14 @@ DecodedImage decodeImage(std::span<const uint8_t> bytes, bool headerOnly) {
   const int length = static_cast<int>(bytes.size());
   int width = 0, height = 0, channels = 0;
   DecodedImage image;
-  if (headerOnly) {
-    if (!stbi_info_from_memory(bytes.data(), length, &width, &height, &channels))
-      throw std::runtime_error(stbi_failure_reason());
-  } else {
+  if (!stbi_info_from_memory(bytes.data(), length, &width, &height, &channels))
+    throw std::runtime_error(stbi_failure_reason());
+  // The header is checked before decoding: a 100-byte file may claim
+  // 100000 x 100000 pixels, and stb_image would allocate what it claims.
+  if (width > kMaxImageSide || height > kMaxImageSide)
+    throw std::runtime_error("image is " + std::to_string(width) + "x" + std::to_string(height) + ", more than " +
+                             std::to_string(kMaxImageSide) + " pixels on a side");
+  if (!headerOnly) {
     std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
         stbi_load_from_memory(bytes.data(), length, &width, &height, &channels, STBI_rgb_alpha), stbi_image_free);
     if (!pixels) throw std::runtime_error(stbi_failure_reason());

@@ -83,7 +83,7 @@ std::string text(const Json& object, const char* key, const std::string& path, c
 }
 
 glm::vec3 direction(const Json& object, const std::string& path) {
-  const glm::vec3 d = vector<3>(object, "direction", path, glm::vec3(0.0f, 0.0f, -1.0f));
+  const glm::vec3 d = vector<3>(object, "direction", path, glm::vec3(0.0f, 0.0f, -1.0f), kMaxCoordinate);
   if (!(glm::length(d) > 0.0f)) throw FormatError(path + "/direction", "must not be zero (or is too long)");
   return glm::normalize(d);
 }
@@ -94,7 +94,7 @@ glm::mat4 objectTransform(const Json& object, const std::string& path) {
   if (object.contains("rotation") && object.contains("rotationDegrees"))
     throw FormatError(path, "give rotation or rotationDegrees, not both");
   if (object.contains("rotation")) {
-    const glm::vec4 q = vector<4>(object, "rotation", path, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    const glm::vec4 q = vector<4>(object, "rotation", path, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f), kMaxCoordinate);
     if (!(glm::length(q) > 0.0f)) throw FormatError(path + "/rotation", "must not be zero (or is too long)");
     rotation = glm::normalize(glm::quat(q.w, q.x, q.y, q.z));
   } else if (object.contains("rotationDegrees")) {

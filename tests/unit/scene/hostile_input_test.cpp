@@ -478,6 +478,22 @@ TEST(HostileInput, SharedAccessorsCannotMultiplyMemory) {
   EXPECT_THAT(gltfError(writeGltf(dir, document)), HasSubstr("is one accessor shared by thousands of primitives?"));
 }
 
+// A PNG header claiming 20000 x 10000 pixels (800 MB of RGBA; stb_image's
+// own limit is 1 GiB) in a 33-byte image: rejected from the header, before
+// stb_image allocates.
+TEST(HostileInput, ImageSizeIsCheckedBeforeDecoding) {
+  TempDir dir;
+  std::vector<uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R',
+                              0, 0, 0x4e, 0x20, 0, 0, 0x27, 0x10, 8, 6, 0, 0, 0, 0, 0, 0, 0};
+  dir.write("huge.png", png);
+  Json document = validDocument();
+  document["images"][0] = {{"uri", "huge.png"}};
+  document["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
+  const std::string message = gltfError(writeGltf(dir, document));
+  EXPECT_THAT(message, HasSubstr("image 'huge.png' (image 0), used by material 0 baseColorTexture, cannot be decoded: "
+                                 "image is 20000x10000, more than 16384 pixels on a side"));
+}
+
 TEST(HostileInput, ManyWarningsAreSummarized) {
   TempDir dir;
   Json document = validDocument();
@@ -516,6 +532,11 @@ const SceneCase kSceneCases[] = {
     {"KeyPosition", R"({"objects": [], "cameraPaths": [{"type": "keys", "keys": [{"t": 0, "position": [0, 0, 3e38], "target": [0, 0, 0]}]}]})",
      "/cameraPaths/0/keys/0/position/2: 3e+38 is beyond +-1e18"},
     {"Number1e999", R"({"objects": [], "lights": [{"type": "point", "intensity": 1e999}]})", "invalid JSON"},
+    // Finite floats whose squared length overflows: normalizing gave a zero direction or rotation.
+    {"Direction3e38", R"({"objects": [], "lights": [{"type": "directional", "direction": [3e38, 0, 0]}]})",
+     "/lights/0/direction/0: 3e+38 is beyond +-1e18"},
+    {"Rotation3e38", R"({"objects": [{"gltf": "hostile.gltf", "rotation": [0, 3e38, 0, 1]}]})",
+     "/objects/0/rotation/1: 3e+38 is beyond +-1e18"},
     {"HostileGltf", R"({"objects": [{"gltf": "bad.gltf"}]})", "/objects/0/gltf: "},
     {"LongUnknownKey", R"({"objects": [{"gltf": "hostile.gltf", "LONGKEY": 1}]})", "unknown property 'kkkkk"},
 };
