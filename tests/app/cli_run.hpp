@@ -5,6 +5,9 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 namespace sg::test {
@@ -31,6 +34,18 @@ inline CliRun runShell(const std::string& command) {
 // by default); redirect: appended last, e.g. " >/dev/full" to send stdout elsewhere.
 inline CliRun runCli(const std::string& args, const std::string& stderrTo = "&1", const std::string& redirect = "") {
   return runShell(std::string(SG_CLI) + " " + args + " 2>" + stderrTo + redirect);
+}
+
+struct CliOutputs {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+// shadelgraph `args` with stdout and stderr apart (stderr through `errFile`).
+inline CliOutputs runCliApart(const std::string& args, const std::filesystem::path& errFile) {
+  const CliRun r = runShell(std::string(SG_CLI) + " " + args + " 2>" + errFile.string());
+  std::ifstream in(errFile, std::ios::binary);
+  return {r.exitCode, r.output, std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>())};
 }
 
 }  // namespace sg::test

@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_run.hpp"
 #include "test_support.hpp"
 
 namespace {
@@ -25,25 +26,8 @@ namespace {
 using Json = nlohmann::json;
 using sg::test::TempDir;
 
-struct CliRun {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
-CliRun run(const std::string& args, const std::filesystem::path& errFile) {
-  const std::string command = std::string(SG_CLI) + " " + args + " 2>" + errFile.string();
-  CliRun r;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buffer;
-  size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.out.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(errFile, std::ios::binary);
-  r.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  return r;
+sg::test::CliOutputs run(const std::string& args, const std::filesystem::path& errFile) {
+  return sg::test::runCliApart(args, errFile);
 }
 
 std::vector<uint8_t> triangleBin() {
@@ -158,7 +142,7 @@ TEST_P(HostileCli, OneLineAndExit1) {
   const std::string args = command == "inspect" ? "inspect " + file.string()
                                                 : "render " + file.string() + " --size 16x16 --frames 1 -o " +
                                                       (dir.path() / "out.png").string();
-  const CliRun r = run(args, dir.path() / "stderr.txt");
+  const auto r = run(args, dir.path() / "stderr.txt");
   EXPECT_EQ(r.exitCode, 1) << r.err.substr(0, 500);
   ASSERT_FALSE(r.err.empty());
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "exactly one line: " << r.err.substr(0, 500);
@@ -247,7 +231,7 @@ TEST_P(StripsAndFans, DecoupledHasNoCompositeMisses) {
   TempDir dir;
   const auto file = writeTopology(dir, GetParam());
   const auto stats = dir.path() / "stats.json";
-  const CliRun r = run("render " + file.string() + " --mode decoupled --size 320x240 --frames 1 --stats " + stats.string() +
+  const auto r = run("render " + file.string() + " --mode decoupled --size 320x240 --frames 1 --stats " + stats.string() +
                            " -o " + (dir.path() / "out.png").string(),
                        dir.path() / "stderr.txt");
   ASSERT_EQ(r.exitCode, 0) << r.err;

@@ -95,12 +95,18 @@ endforeach()
 # frame ("outlined": the decoupled frame plus the pass). Built against the
 # installed package only; in both shading modes its image differs from the
 # same frame without it, and the pass is in the compiled graph.
-set(outline_build ${WORK_DIR}/build-outline)
-set(outline ${outline_build}/libsg_example_outline.so)
-run("configuring plugins/example-outline" COMMAND ${CMAKE_COMMAND}
-  -S ${SG_SOURCE_DIR}/plugins/example-outline -B ${outline_build} -G "${GENERATOR}"
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_PREFIX_PATH=${prefix})
-run("building plugins/example-outline" COMMAND ${CMAKE_COMMAND} --build ${outline_build})
+# build_example(<name> <var>): plugins/example-<name> built against the
+# installed package only; <var> is set to the plugin library.
+function(build_example name var)
+  set(dir ${WORK_DIR}/build-${name})
+  run("configuring plugins/example-${name}" COMMAND ${CMAKE_COMMAND}
+    -S ${SG_SOURCE_DIR}/plugins/example-${name} -B ${dir} -G "${GENERATOR}"
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_PREFIX_PATH=${prefix})
+  run("building plugins/example-${name}" COMMAND ${CMAKE_COMMAND} --build ${dir})
+  set(${var} ${dir}/libsg_example_${name}.so PARENT_SCOPE)
+endfunction()
+
+build_example(outline outline)
 run("shadelgraph graph --frame-graph outlined" COMMAND ${sg} graph --size 64x64 --plugin ${outline} --frame-graph outlined)
 if(NOT run_stdout MATCHES "outline")
   message(FATAL_ERROR "the outlined frame's graph has no outline pass:\n${run_stdout}")
@@ -122,12 +128,7 @@ endforeach()
 # samples it in both variants. In both modes its image differs from the same
 # frame with the plain glTF material; without the ssao pass in the frame, the
 # layer's missing input is one line naming the layer and the resource.
-set(ssao_build ${WORK_DIR}/build-ssao)
-set(ssao ${ssao_build}/libsg_example_ssao.so)
-run("configuring plugins/example-ssao" COMMAND ${CMAKE_COMMAND}
-  -S ${SG_SOURCE_DIR}/plugins/example-ssao -B ${ssao_build} -G "${GENERATOR}"
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_PREFIX_PATH=${prefix})
-run("building plugins/example-ssao" COMMAND ${CMAKE_COMMAND} --build ${ssao_build})
+build_example(ssao ssao)
 foreach(mode decoupled forward)
   set(plain ${WORK_DIR}/ssao-plain-${mode}.png)
   set(darkened ${WORK_DIR}/ssao-ao-${mode}.png)
