@@ -4,6 +4,7 @@
 // pass's parameters, the named frame resources, and per-renderer state that a
 // package keeps across frames (e.g. decoupled shading's shadel space).
 #include <map>
+#include <span>
 #include <memory>
 #include <string>
 #include <vector>
@@ -26,6 +27,7 @@ struct FrameInputs {
   gpu::Device& device;
   gpu::GraphExecutor& executor;  // to bind a package's own persistent and imported resources
   const std::vector<scene::ShadingMode>& objectModes;  // per scene instance: its requested mode this frame
+  std::span<const glm::vec4> drawSpheres;  // per draw: its world bounding sphere (xyz centre, w radius)
   uint64_t frameNumber = 0;
   glm::vec3 cameraPosition{0.0f};
   // Pixels an object of size 1 covers at distance 1 (perspective); 0 for orthographic.

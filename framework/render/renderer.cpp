@@ -82,7 +82,7 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
                           : 0.0f;
   auto frame = std::make_unique<Frame>(Frame{
       {gpuScene_, frameUniforms_, gpuScene_.allDraws(), registry_, layerTextures_},
-      {scene_, device_, executor_, modes_, frameNumber_++, cam.position(), focal, uniforms.viewProjection,
+      {scene_, device_, executor_, modes_, drawSpheres_, frameNumber_++, cam.position(), focal, uniforms.viewProjection,
        settings.width, settings.height},
       {}, {}, {}});
   frame->output = frame->graph.importImage(

@@ -8,7 +8,6 @@
 #include <shadelgraph/gpu/pass_context.hpp>
 #include <shadelgraph/render/decoupled_frame.hpp>
 #include <shadelgraph/render/material_variants.hpp>
-#include <shadelgraph/scene/bounds.hpp>
 #include <shadelgraph/scene/uv_chart.hpp>
 #include <shadelgraph/shadel/id_map_cache.hpp>
 #include <shadelgraph/shadel/level0_resolution.hpp>
@@ -57,12 +56,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
   if (slots_.empty()) {
     slots_.resize(draws.size());
     identity_.resize(draws.size());
-    for (uint32_t d = 0; d < draws.size(); ++d) {
-      identity_[d] = d;
-      const scene::Mesh& mesh = in.scene.meshes[size_t(in.scene.instances[draws[d].instance].mesh)];
-      const scene::Bounds world = scene::transformBounds(mesh.bounds, draws[d].world);
-      drawSpheres_.emplace_back(world.center(), world.radius());
-    }
+    for (uint32_t d = 0; d < draws.size(); ++d) identity_[d] = d;
   }
   shadel::IdMapCache cache;
   for (uint32_t d = 0; d < draws.size(); ++d) {
@@ -135,12 +129,6 @@ void DecoupledShading::uploadTables(gpu::Device& device) {
   idMapBuffer_ = upload(device, idTexels_, "triangle-ID maps");
 }
 
-std::string DecoupledShading::forwardReason(uint32_t instance) const {
-  for (uint32_t d = 0; d < slots_.size(); ++d)
-    if (slots_[d].instance == instance) return slots_[d].reason;
-  return choices_.at(instance).reason;  // no frame yet
-}
-
 // Objects in mode auto that are tiny on screen this frame go forward; they
 // keep their shadel space and simply mark nothing. Objects outside the view
 // are not in the frame's draws at all (nor their materials compiled).
@@ -151,7 +139,7 @@ void DecoupledShading::selectFrameObjects(render::FrameContext& ctx) {
   const auto& draws = ctx.gpuScene().draws();
   std::vector<uint32_t> forward;
   for (const uint32_t d : ctx.draws().forward) {
-    const glm::vec4 sphere = drawSpheres_[d];
+    const glm::vec4 sphere = in.drawSpheres[d];
     const float distance = glm::distance(glm::vec3(sphere), in.cameraPosition);
     const bool automatic = in.objectModes[draws[d].instance] == scene::ShadingMode::Auto;
     const bool tiny = automatic && in.pixelsPerUnitAtUnitDistance > 0.0f && distance > sphere.w &&

@@ -94,8 +94,6 @@ class DecoupledShading {
   // Reads the counters of the last executed frame (call after it completed).
   DecoupledStats stats() const;
   const std::vector<ShadingChoice>& choices() const { return choices_; }
-  // Why an object is not shaded decoupled (empty while it is allocated).
-  std::string forwardReason(uint32_t instance) const;
 
  private:
   void createTables(gpu::Device& device);
@@ -123,7 +121,6 @@ class DecoupledShading {
   std::vector<ObjectSlot> slots_;
   uint32_t allocatedObjects_ = 0;
   std::vector<uint32_t> identity_;  // draw index -> object index (the same)
-  std::vector<glm::vec4> drawSpheres_;
   std::map<int, std::pair<shadel::DetailLevels, uint32_t>> idMaps_;  // by mesh: its levels and ID-map offset
   std::vector<uint32_t> idTexels_;
   bool tablesDirty_ = true;
