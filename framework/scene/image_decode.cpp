@@ -8,6 +8,16 @@
 #include <shadelgraph/scene/image_decode.hpp>
 
 namespace sg::scene {
+namespace {
+
+// stb_image's reason for the last failure; it may have none (NULL), and a
+// reason left over from an earlier probe would be stale, so say which step failed.
+std::runtime_error decodeError(const char* step) {
+  const char* reason = stbi_failure_reason();
+  return std::runtime_error(std::string(step) + (reason ? std::string(": ") + reason : std::string()));
+}
+
+}  // namespace
 
 DecodedImage decodeImage(std::span<const uint8_t> bytes, bool headerOnly) {
   if (bytes.empty()) throw std::runtime_error("no image data");
@@ -16,7 +26,7 @@ DecodedImage decodeImage(std::span<const uint8_t> bytes, bool headerOnly) {
   int width = 0, height = 0, channels = 0;
   DecodedImage image;
   if (!stbi_info_from_memory(bytes.data(), length, &width, &height, &channels))
-    throw std::runtime_error(stbi_failure_reason());
+    throw decodeError("cannot read the image header");
   // The header is checked before decoding: a 100-byte file may claim
   // 100000 x 100000 pixels, and stb_image would allocate what it claims.
   if (width > kMaxImageSide || height > kMaxImageSide)
@@ -25,7 +35,7 @@ DecodedImage decodeImage(std::span<const uint8_t> bytes, bool headerOnly) {
   if (!headerOnly) {
     std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
         stbi_load_from_memory(bytes.data(), length, &width, &height, &channels, STBI_rgb_alpha), stbi_image_free);
-    if (!pixels) throw std::runtime_error(stbi_failure_reason());
+    if (!pixels) throw decodeError("cannot decode the image");
     image.rgba.assign(pixels.get(), pixels.get() + static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
   }
   image.width = static_cast<uint32_t>(width);
