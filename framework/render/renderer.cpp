@@ -32,13 +32,12 @@ Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, const plugin:
   registry_.check();
   for (const auto& instance : scene.instances) modes_.push_back(instance.shading);
   for (const auto& draw : gpuScene_.draws()) {
-    const auto world = scene::transformBounds(scene.meshes[size_t(scene.instances[draw.instance].mesh)].bounds, draw.world);
-    drawSpheres_.emplace_back(world.center(), world.radius());
-  }
-  for (const auto& draw : gpuScene_.draws())
     if (!registry_.hasMaterial(draw.materialStack))
       throw plugin::PluginError("object '" + scene.instances[draw.instance].name + "' uses material '" +
                                 draw.materialStack + "', which no plugin registered");
+    const auto world = scene::transformBounds(scene.meshes[size_t(scene.instances[draw.instance].mesh)].bounds, draw.world);
+    drawSpheres_.emplace_back(world.center(), world.radius());
+  }
   // Plugins' GLSL (their layers' sources) by virtual path.
   for (const auto& directory : registry_.shaderDirectories()) device_.shaders().addDirectory(directory);
 }

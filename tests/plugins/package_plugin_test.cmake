@@ -106,6 +106,15 @@ function(build_example name var)
   set(${var} ${dir}/libsg_example_${name}.so PARENT_SCOPE)
 endfunction()
 
+# expect_different(<a> <b> <why>): the two images differ, else the test fails saying why.
+function(expect_different a b why)
+  file(SHA256 ${a} a_hash)
+  file(SHA256 ${b} b_hash)
+  if(a_hash STREQUAL b_hash)
+    message(FATAL_ERROR "${b} equals ${a}: ${why}")
+  endif()
+endfunction()
+
 build_example(outline outline)
 run("shadelgraph graph --frame-graph outlined" COMMAND ${sg} graph --size 64x64 --plugin ${outline} --frame-graph outlined)
 if(NOT run_stdout MATCHES "outline")
@@ -117,11 +126,7 @@ foreach(mode decoupled forward)
   run("shadelgraph render (${mode})" COMMAND ${sg} render --size 128x128 --mode ${mode} -o ${plain})
   run("shadelgraph render --frame-graph outlined (${mode})" COMMAND ${sg} render --size 128x128 --mode ${mode}
     --plugin ${outline} --frame-graph outlined -o ${outlined})
-  file(SHA256 ${plain} plain_hash)
-  file(SHA256 ${outlined} outlined_hash)
-  if(plain_hash STREQUAL outlined_hash)
-    message(FATAL_ERROR "${outlined} equals ${plain}: the outline pass drew nothing")
-  endif()
+  expect_different(${plain} ${outlined} "the outline pass drew nothing")
 endforeach()
 # 6. The out-of-tree plugin whose pass output a layer samples: ssao writes
 # ao.image before shading; the material example-ao-pbr's layer ao-darken
@@ -136,11 +141,7 @@ foreach(mode decoupled forward)
     --plugin ${ssao} --frame-graph ssao -o ${plain})
   run("shadelgraph render --frame-graph ssao --material example-ao-pbr (${mode})" COMMAND ${sg} render --size 128x128
     --mode ${mode} --plugin ${ssao} --frame-graph ssao --material example-ao-pbr -o ${darkened})
-  file(SHA256 ${plain} plain_hash)
-  file(SHA256 ${darkened} darkened_hash)
-  if(plain_hash STREQUAL darkened_hash)
-    message(FATAL_ERROR "${darkened} equals ${plain}: the layer did not sample ao.image")
-  endif()
+  expect_different(${plain} ${darkened} "the layer did not sample ao.image")
 endforeach()
 execute_process(COMMAND ${sg} render --size 64x64 --plugin ${ssao} --material example-ao-pbr -o ${WORK_DIR}/x.png
   RESULT_VARIABLE code ERROR_VARIABLE err OUTPUT_QUIET)
