@@ -10,6 +10,8 @@ pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
 find_package(Threads REQUIRED)
 if(SG_BUILD_TESTS)
   find_package(GTest CONFIG REQUIRED)
+  # SPIR-V reflection for the test that checks pass shaders against their declarations.
+  pkg_check_modules(SpirvCross REQUIRED IMPORTED_TARGET spirv-cross-c-shared)
 endif()
 if(SG_BUILD_BENCHMARKS)
   find_package(benchmark CONFIG REQUIRED)

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <shadelgraph/render/shaders/frame_interface.h>
 
 #include <shadelgraph/gpu/buffer.hpp>
 #include <shadelgraph/gpu/image.hpp>
@@ -39,11 +40,7 @@ struct DrawItem {
 };
 
 // Push constants of object.glsl.
-struct ObjectConstants {
-  glm::mat4 model;
-  uint32_t objectId;
-  uint32_t materialId;
-};
+using ObjectConstants = shader::SgObjectConstants;
 
 class GpuScene {
  public:

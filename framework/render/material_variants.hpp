@@ -1,33 +1,45 @@
 #pragma once
-// The two shaders the framework generates from a material layer's one GLSL
-// source: the decoupled compute variant of one layer (a shadel per
-// invocation, passes/layer-shade/shadel_context.glsl) and the forward fragment
-// variant of a whole material stack (a pixel per invocation,
-// passes/forward/forward_surface.glsl). An author writes neither: the
-// generated text declares the layer images and accessors, includes the
+// What every shading path's generated material variant is built from. A
+// material layer is one GLSL source; each pass that runs materials (the
+// forward fragment variant in passes/forward, the decoupled compute variant
+// in passes/layer-shade) generates a shader that declares the layer's
+// textures, frame inputs and accessors with these pieces, includes the
 // author's file (so errors point into it), and calls the layer function.
 #include <cstdint>
 #include <map>
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include <shadelgraph/gpu/shader_compiler.hpp>
+#include <shadelgraph/graph/handles.hpp>
 #include <shadelgraph/plugin/registry.hpp>
-#include <shadelgraph/render/decoupled_frame.hpp>
 #include <shadelgraph/render/layer_textures.hpp>
 
 namespace sg::render {
 
-// Set-0 bindings of a layer's decoupled variant, after the decoupled ones.
-inline constexpr uint32_t kBindLayerOutput = kBindLayerImage;  // storage image it writes
-inline constexpr uint32_t kBindLayerInputs = 14;               // + i: the i-th layer it reads (sampled)
-inline constexpr uint32_t kMaxLayerReads = 8;
-inline constexpr uint32_t kBindLayerHistory = 22;              // persistent: last frame's image of this layer
-inline constexpr uint32_t kBindPreviousRemap = 23;             // persistent: last frame's remap table
 // + i: the i-th frame resource the layer (decoupled) or the material's layers
-// (forward, in stack order) sample; set 0 in both variants.
+// (forward, in stack order) sample; set 0 in every variant.
 inline constexpr uint32_t kBindLayerFrameInputs = 24;
 inline constexpr uint32_t kMaxLayerFrameInputs = 4;
+
+// sgLayer(name) and sgLayerAt(name, offset) call the variant's sgLayer_<name>;
+// the extra step expands a parameter macro given as the name.
+inline constexpr const char* kLayerAccessorMacros =
+    "#define SG_LAYER_CALL(name, offset) sgLayer_##name(offset)\n"
+    "#define sgLayer(name) SG_LAYER_CALL(name, ivec2(0))\n"
+    "#define sgLayerAt(name, offset) SG_LAYER_CALL(name, offset)\n";
+
+// The layer's own textures, set kLayerTextureSet from binding `first` on;
+// returns the next free binding.
+uint32_t declareLayerTextures(std::ostream& out, const plugin::MaterialLayer& layer, uint32_t first);
+// The frame resources the layer samples, set 0 from kBindLayerFrameInputs + `first`;
+// returns the next free index.
+uint32_t declareLayerFrameInputs(std::ostream& out, const plugin::MaterialLayer& layer, uint32_t first);
+// The layer's parameters as #defines around an #include of its source.
+void includeLayerSource(std::ostream& out, const plugin::MaterialLayer& layer);
+// Throws naming `what` and its plugin when it samples more frame resources than bind.
+void checkFrameInputCount(size_t count, const std::string& what, const std::string& plugin);
 
 // GLSL image format qualifier of a layer image ("rgba16f"); throws for
 // formats a layer cannot write.
@@ -40,10 +52,6 @@ std::vector<const plugin::LayerFrameInput*> forwardFrameInputs(const plugin::Reg
 // throws naming the layer, its plugin and the resource when no pass wrote it.
 graph::ResourceHandle frameInputImage(const std::map<std::string, graph::ResourceHandle>& images,
                                       const plugin::MaterialLayer& layer, const plugin::LayerFrameInput& input);
-
-gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer);
-// Every layer of `stack` must run forward (Registry::materialFor picks the fallback).
-gpu::ShaderRequest forwardMaterialVariant(const plugin::Registry& registry, const plugin::MaterialStack& stack);
 
 // A layer or material whose generated variant failed to compile, as a
 // PluginError naming it, its plugin and the file:line glslang reported (the

@@ -43,7 +43,7 @@ ChunkSpan chunkSpanOf(const LevelRect& rect);
 uint64_t supportMaskOf(std::span<const RemapEntry> remap, uint32_t entriesPerSideLog2, const LevelRect& rect,
                        uint32_t entryIndex, uint32_t radius);
 
-// The GPU tables support-expand reads (plugins/decoupled/shaders/decoupled.glsl).
+// The GPU tables support-expand reads (framework/shadel/shaders/decoupled.glsl).
 struct SupportTables {
   uint32_t entriesPerSideLog2 = 0;
   std::span<const GpuShadelInstance> instances;  // by instance id

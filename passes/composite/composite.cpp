@@ -5,8 +5,25 @@
 #include <shadelgraph/gpu/pass_context.hpp>
 
 namespace sg::passes {
+namespace {
+constexpr std::array kBindings{kBindFrame, kBindParams, kBindObjects,  kBindShadelInstances,
+                               kBindLevelRects, kBindRemap, kBindCounters, kBindLayerImage};
+}  // namespace
 
-graph::ResourceHandle addComposite(graph::RenderGraph& graph, render::DecoupledFrame& frame, graph::ResourceHandle color,
+gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView) {
+  std::vector<std::pair<std::string, std::string>> defines{{"SG_COMPOSITE_FILTER", std::to_string(filter)}};
+  if (levelView) defines.emplace_back("SG_VIEW_LEVEL", "1");
+  return {.vertex = {.path = "passes/composite/composite.vert"},
+          .fragment = {.path = "passes/composite/composite.frag", .defines = defines},
+          .layout = decoupledLayout(kBindings, false, sizeof(render::ObjectConstants)),
+          .vertexInput = render::sceneVertexInput(),
+          .colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT},
+          .depthFormat = VK_FORMAT_D32_SFLOAT,
+          .depthTest = true,
+          .depthWrite = false};
+}
+
+graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle color,
                                    graph::ResourceHandle depth) {
   auto& pass = graph.addPass("composite", graph::QueueClass::Graphics);
   pass.read(color, graph::Access::ColorAttachmentRead);
@@ -16,29 +33,15 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, render::DecoupledF
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);  // misses
   color = pass.write(color, graph::Access::ColorAttachment);
   pass.execute([frame, color, depth](PassContext& ctx) {
-    using namespace render;
-    const std::array bindings{kBindFrame, kBindParams, kBindObjects, kBindShadelInstances, kBindLevelRects,
-                               kBindRemap, kBindCounters, kBindLayerImage};
     const std::string variant = std::to_string(frame.filter) + (frame.levelView ? "/level" : "");
-    const auto& pipeline = ctx.device().pipeline("composite/" + variant, [&] {
-      std::vector<std::pair<std::string, std::string>> defines{{"SG_COMPOSITE_FILTER", std::to_string(frame.filter)}};
-      if (frame.levelView) defines.emplace_back("SG_VIEW_LEVEL", "1");
-      return gpu::GraphicsPipelineDesc{
-          .vertex = {.path = "passes/composite/composite.vert"},
-          .fragment = {.path = "passes/composite/composite.frag", .defines = defines},
-          .layout = decoupledLayout(bindings, false, sizeof(ObjectConstants)),
-          .vertexInput = sceneVertexInput(),
-          .colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT},
-          .depthFormat = VK_FORMAT_D32_SFLOAT,
-          .depthTest = true,
-          .depthWrite = false};
-    });
+    const auto& pipeline =
+        ctx.device().pipeline("composite/" + variant, [&] { return compositePipeline(frame.filter, frame.levelView); });
     ctx.beginRendering({ColorTarget{color}}, DepthTarget{depth, {}, true}, true);
-    bindDecoupled(ctx, pipeline, frame, bindings);
+    bindDecoupled(ctx, pipeline, frame, kBindings);
     frame.view.scene.bindGeometry(ctx.cmd());
     const auto& draws = frame.view.scene.draws();
     for (size_t i = 0; i < frame.view.draws.size(); ++i)
-      drawItem(ctx.cmd(), pipeline, draws[frame.view.draws[i]], frame.objectIds[i]);
+      render::drawItem(ctx.cmd(), pipeline, draws[frame.view.draws[i]], frame.objectIds[i]);
     ctx.endRendering();
   });
   return color;

@@ -4,11 +4,11 @@
 // blended (trilinear). A lookup that finds no stored shadel is counted
 // (composite misses: must be zero, the watertightness guarantee).
 #include <framework/render/shaders/object.glsl>
-#include <plugins/decoupled/shaders/decoupled.glsl>
+#include <framework/shadel/shaders/decoupled.glsl>
 #include <passes/debug-views/debug_color.glsl>
 
 layout(early_fragment_tests) in;
-layout(set = 0, binding = 13) uniform sampler2D layerImage;  // texelFetch only
+layout(set = 0, binding = kBindLayerImage) uniform sampler2D layerImage;  // texelFetch only
 layout(location = 0) in vec2 inShadingUv;
 layout(location = 0) out vec4 outColor;
 

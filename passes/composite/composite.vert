@@ -3,7 +3,7 @@
 #define SG_VERTEX_SHADER
 #include <framework/render/shaders/frame.glsl>
 #include <framework/render/shaders/object.glsl>
-#include <plugins/decoupled/shaders/decoupled.glsl>
+#include <framework/shadel/shaders/decoupled.glsl>
 
 layout(location = 0) out vec2 outShadingUv;
 

@@ -5,15 +5,18 @@
 #include <glm/glm.hpp>
 
 #include <shadelgraph/graph/render_graph.hpp>
-#include <shadelgraph/render/decoupled_frame.hpp>
+#include <decoupled_frame.hpp>
 
 namespace sg::passes {
 
 // The sheet region [originChunks, originChunks + sizeChunks) one pixel per chunk,
 // marked chunks coloured by detail level.
-graph::ResourceHandle addOccupancyView(graph::RenderGraph& graph, const render::DecoupledFrame& frame,
+graph::ResourceHandle addOccupancyView(graph::RenderGraph& graph, const DecoupledFrame& frame,
                                        glm::uvec2 originChunks, glm::uvec2 sizeChunks);
 // The shade storage image, stretched over the output.
-graph::ResourceHandle addSheetView(graph::RenderGraph& graph, const render::DecoupledFrame& frame);
+graph::ResourceHandle addSheetView(graph::RenderGraph& graph, const DecoupledFrame& frame);
+// Their pipelines.
+gpu::GraphicsPipelineDesc occupancyViewPipeline();
+gpu::GraphicsPipelineDesc sheetViewPipeline();
 
 }  // namespace sg::passes

@@ -2,10 +2,10 @@
 // --view occupancy: the used part of the virtual shadel sheet, one pixel per
 // chunk. Marked chunks in their level's colour, allocated-but-unmarked chunks
 // dark grey, chunks that got no storage (overflow) white, the rest black.
-#include <plugins/decoupled/shaders/decoupled.glsl>
+#include <framework/shadel/shaders/decoupled.glsl>
 #include "debug_color.glsl"
 
-layout(push_constant) uniform Push { uvec2 originChunks; uvec2 sizeChunks; } push;
+layout(push_constant, scalar) uniform Push { SgOccupancyPush push; };
 layout(location = 0) in vec2 inUv;
 layout(location = 0) out vec4 outColor;
 

@@ -1,6 +1,8 @@
 #version 460
 // --view sheet: the shade storage (layer image) as it is laid out in memory.
-layout(set = 0, binding = 13) uniform sampler2D layerImage;
+#include <framework/shadel/shaders/decoupled_interface.h>
+
+layout(set = 0, binding = kBindLayerImage) uniform sampler2D layerImage;
 layout(location = 0) in vec2 inUv;
 layout(location = 0) out vec4 outColor;
 

@@ -1,9 +1,12 @@
 #version 460
 // Automatic exposure: the log-average luminance of the HDR image, reduced by
 // one workgroup (the image is strided over its 256 invocations).
+#extension GL_EXT_scalar_block_layout : require
+#include "exposure_interface.h"
+
 layout(local_size_x = 256) in;
-layout(set = 0, binding = 0) uniform sampler2D hdr;
-layout(set = 0, binding = 1, std430) buffer Exposure { float logAverage; float exposure; float pixels; } result;
+layout(set = 0, binding = kBindExposureHdr) uniform sampler2D hdr;
+layout(set = 0, binding = kBindExposure, scalar) buffer Exposure { SgExposure result; };
 
 shared float partial[256];
 

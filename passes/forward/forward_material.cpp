@@ -5,6 +5,8 @@
 
 #include <shadelgraph/render/material_variants.hpp>
 
+#include "material_variant.hpp"
+
 namespace sg::passes {
 namespace {
 
@@ -12,23 +14,10 @@ const gpu::Pipeline& forwardPipeline(PassContext& ctx, const render::SceneView& 
                                      const plugin::MaterialStack& material, bool blend) {
   const render::TextureSet* textures = view.layerTextures.forMaterial(material);
   const auto describe = [&] {
-    std::vector<VkDescriptorSetLayout> sets{view.scene.materialSetLayout()};
-    if (textures) sets.push_back(textures->layout());
-    std::vector<gpu::DescriptorBinding> bindings{{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
-    for (uint32_t i = 0; i < render::forwardFrameInputs(view.materials, material).size(); ++i)
-      bindings.push_back({render::kBindLayerFrameInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
-    return gpu::GraphicsPipelineDesc{
-        .vertex = {.path = "passes/forward/forward.vert"},
-        .fragment = render::forwardMaterialVariant(view.materials, material),
-        .layout = {.bindings = bindings,
-                   .extraSets = sets,
-                   .pushConstantBytes = sizeof(render::ObjectConstants)},
-        .vertexInput = render::sceneVertexInput(),
-        .colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT},
-        .depthFormat = VK_FORMAT_D32_SFLOAT,
-        .depthTest = true,
-        .depthWrite = !blend,
-        .alphaBlend = blend};
+    gpu::GraphicsPipelineDesc desc = forwardMaterialPipeline(view.materials, material, blend);
+    desc.layout.extraSets.push_back(view.scene.materialSetLayout());
+    if (textures) desc.layout.extraSets.push_back(textures->layout());
+    return desc;
   };
   try {
     return ctx.device().pipeline((blend ? "forward/blend/" : "forward/") + material.name, describe);
@@ -41,7 +30,7 @@ const gpu::Pipeline& forwardPipeline(PassContext& ctx, const render::SceneView& 
 // The frame uniforms and the frame resources the material's layers sample.
 std::vector<gpu::DescriptorWrite> forwardDescriptors(PassContext& ctx, const render::SceneView& view,
                                                      const plugin::MaterialStack& material) {
-  std::vector<gpu::DescriptorWrite> writes{{0, gpu::BufferBinding{view.frameUniforms.handle()}}};
+  std::vector<gpu::DescriptorWrite> writes{{shader::kBindFrame, gpu::BufferBinding{view.frameUniforms.handle()}}};
   uint32_t binding = render::kBindLayerFrameInputs;
   for (const auto& name : material.layers) {
     const auto& layer = view.materials.layer(name);
@@ -55,6 +44,22 @@ std::vector<gpu::DescriptorWrite> forwardDescriptors(PassContext& ctx, const ren
 }
 
 }  // namespace
+
+gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& registry, const plugin::MaterialStack& material,
+                                                  bool blend) {
+  std::vector<gpu::DescriptorBinding> bindings{{shader::kBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
+  for (uint32_t i = 0; i < render::forwardFrameInputs(registry, material).size(); ++i)
+    bindings.push_back({render::kBindLayerFrameInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+  return {.vertex = {.path = "passes/forward/forward.vert"},
+          .fragment = forwardMaterialVariant(registry, material),
+          .layout = {.bindings = bindings, .pushConstantBytes = sizeof(render::ObjectConstants)},
+          .vertexInput = render::sceneVertexInput(),
+          .colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT},
+          .depthFormat = VK_FORMAT_D32_SFLOAT,
+          .depthTest = true,
+          .depthWrite = !blend,
+          .alphaBlend = blend};
+}
 
 void readFrameInputs(graph::Pass& pass, const render::SceneView& view, std::span<const uint32_t> draws) {
   std::set<const plugin::MaterialStack*> materials;

@@ -1,6 +1,6 @@
 #pragma once
 // Drawing objects with the forward (fragment) variant of their material,
-// generated from its layers (render/material_variants.hpp): shared by
+// generated from its layers (material_variant.hpp): shared by
 // forward-opaque, alpha-mask and alpha-blend.
 #include <span>
 #include <vector>
@@ -22,6 +22,10 @@ void drawForward(PassContext& ctx, const render::SceneView& view, std::span<cons
 // Declares that `pass` samples the frame resources the forward variants of
 // these draws' materials read (MaterialLayer::frameInputs).
 void readFrameInputs(graph::Pass& pass, const render::SceneView& view, std::span<const uint32_t> draws);
+// Its pipeline, set 0 and push constants; the pass adds set 1 (the scene
+// material) and set 2 (the layers' textures) when it has them.
+gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& registry, const plugin::MaterialStack& material,
+                                                  bool blend);
 // Does the view hold a draw with this alpha mode?
 bool hasAlphaMode(const render::SceneView& view, scene::AlphaMode mode);
 

@@ -5,10 +5,10 @@
 #include <shadelgraph/gpu/pass_context.hpp>
 #include <shadelgraph/render/material_variants.hpp>
 
+#include "layer_variant.hpp"
+
 namespace sg::passes {
 namespace {
-
-using namespace render;
 
 constexpr uint32_t kBaseBindings[] = {kBindFrame,    kBindParams,   kBindObjects,  kBindShadelInstances,
                                       kBindLevelRects, kBindRemap,  kBindCounters, kBindWork,
@@ -17,29 +17,35 @@ constexpr uint32_t kBaseBindings[] = {kBindFrame,    kBindParams,   kBindObjects
 // Compiled the first time a frame dispatches the layer; a GLSL error names the
 // layer, its plugin and the author's file:line.
 const gpu::Pipeline& layerPipeline(PassContext& ctx, const DecoupledFrame& frame, const plugin::MaterialLayer& layer) {
-  const TextureSet* textures = frame.view.layerTextures.forLayer(layer);
+  const render::TextureSet* textures = frame.view.layerTextures.forLayer(layer);
   const auto describe = [&] {
-    gpu::PipelineLayoutDesc layout = decoupledLayout(kBaseBindings, false, 12, {frame.view.scene.materialSetLayout()});
-    if (textures) layout.extraSets.push_back(textures->layout());
-    layout.bindings.push_back({kBindLayerOutput, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
-    for (uint32_t i = 0; i < layer.reads.size(); ++i)
-      layout.bindings.push_back({kBindLayerInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
-    for (uint32_t i = 0; i < layer.frameInputs.size(); ++i)
-      layout.bindings.push_back({kBindLayerFrameInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
-    if (layer.persistent) {
-      layout.bindings.push_back({kBindLayerHistory, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
-      layout.bindings.push_back({kBindPreviousRemap, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
-    }
-    return gpu::ComputePipelineDesc{.shader = decoupledLayerVariant(layer), .layout = layout};
+    gpu::ComputePipelineDesc desc = layerShadePipeline(layer);
+    desc.layout.extraSets.push_back(frame.view.scene.materialSetLayout());
+    if (textures) desc.layout.extraSets.push_back(textures->layout());
+    return desc;
   };
   try {
     return ctx.device().pipeline("layer-shade/" + layer.name, describe);
   } catch (const gpu::ShaderCompileError& e) {
-    throw layerCompileError(e, ctx.device().shaders(), "material layer '" + layer.name + "'", layer.plugin);
+    throw render::layerCompileError(e, ctx.device().shaders(), "material layer '" + layer.name + "'", layer.plugin);
   }
 }
 
 }  // namespace
+
+gpu::ComputePipelineDesc layerShadePipeline(const plugin::MaterialLayer& layer) {
+  gpu::PipelineLayoutDesc layout = decoupledLayout(kBaseBindings, false, sizeof(SgLayerShadePush));
+  layout.bindings.push_back({kBindLayerOutput, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
+  for (uint32_t i = 0; i < layer.reads.size(); ++i)
+    layout.bindings.push_back({kBindLayerInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+  for (uint32_t i = 0; i < layer.frameInputs.size(); ++i)
+    layout.bindings.push_back({render::kBindLayerFrameInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+  if (layer.persistent) {
+    layout.bindings.push_back({kBindLayerHistory, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    layout.bindings.push_back({kBindPreviousRemap, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+  }
+  return {.shader = decoupledLayerVariant(layer), .layout = layout};
+}
 
 void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string name,
                    std::vector<LayerShadeStep>& steps, const LayerHistory& history) {
@@ -79,23 +85,23 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
           {kBindLayerOutput, gpu::ImageBinding{ctx.image(step.output).view(), VK_IMAGE_LAYOUT_GENERAL, VK_NULL_HANDLE}}};
       for (uint32_t i = 0; i < step.inputs.size(); ++i) writes.push_back(sampled(kBindLayerInputs + i, step.inputs[i]));
       for (uint32_t i = 0; i < step.frameInputs.size(); ++i)
-        writes.push_back(sampled(kBindLayerFrameInputs + i, step.frameInputs[i]));
+        writes.push_back(sampled(render::kBindLayerFrameInputs + i, step.frameInputs[i]));
       if (step.layer->persistent) {
         writes.push_back(sampled(kBindLayerHistory, step.history));
         writes.push_back({kBindPreviousRemap, gpu::BufferBinding{ctx.buffer(history.previousRemap).handle()}});
       }
       bindDecoupled(ctx, pipeline, frame, kBaseBindings, writes);
-      if (const TextureSet* textures = frame.view.layerTextures.forLayer(*step.layer)) {
+      if (const render::TextureSet* textures = frame.view.layerTextures.forLayer(*step.layer)) {
         VkDescriptorSet set = textures->set();
-        vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout(), kLayerTextureSet, 1, &set,
+        vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout(), render::kLayerTextureSet, 1, &set,
                                 0, nullptr);
       }
       for (const uint32_t object : step.objects) {
         VkDescriptorSet material = frame.view.scene.materialSet(draws[frame.objectDraws[object]].material);
         vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout(), 1, 1, &material, 0,
                                 nullptr);
-        const uint32_t push[3] = {object, step.persistentSlot, history.valid ? 1u : 0u};
-        vkCmdPushConstants(ctx.cmd(), pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof push, push);
+        const SgLayerShadePush push{object, step.persistentSlot, history.valid ? 1u : 0u};
+        vkCmdPushConstants(ctx.cmd(), pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof push, &push);
         vkCmdDispatchIndirect(ctx.cmd(), args, VkDeviceSize(12) * object);
       }
     }

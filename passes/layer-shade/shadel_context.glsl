@@ -14,8 +14,8 @@
 
 #extension GL_EXT_scalar_block_layout : require
 #include <framework/render/shaders/frame.glsl>
-#include <plugins/decoupled/shaders/decoupled.glsl>
-#include <plugins/decoupled/shaders/work.glsl>
+#include <framework/shadel/shaders/decoupled.glsl>
+#include <framework/shadel/shaders/work.glsl>
 #include <materials/gltf-pbr/material.glsl>
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -28,11 +28,10 @@ struct SgVertex {  // render::GpuVertex
   vec2 uv1;
   vec4 color;
 };
-layout(set = 0, binding = 10, std430) readonly buffer IdMaps { uint idMaps[]; };
-layout(set = 0, binding = 11, scalar) readonly buffer Vertices { SgVertex vertices[]; };
-layout(set = 0, binding = 12, std430) readonly buffer Indices { uint indices[]; };
-// historyValid: last frame's remap and layer image describe this storage layout.
-layout(push_constant) uniform Push { uint objectIndex; uint persistentSlot; uint historyValid; } sgPush;
+layout(set = 0, binding = kBindIdMaps, std430) readonly buffer IdMaps { uint idMaps[]; };
+layout(set = 0, binding = kBindVertices, scalar) readonly buffer Vertices { SgVertex vertices[]; };
+layout(set = 0, binding = kBindIndices, std430) readonly buffer Indices { uint indices[]; };
+layout(push_constant, scalar) uniform Push { SgLayerShadePush sgPush; };
 
 const uint SG_NO_TRIANGLE = 0xFFFFFFFFu;
 const float kBarycentricEpsilon = 0.05;

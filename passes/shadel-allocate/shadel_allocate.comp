@@ -1,12 +1,12 @@
 #version 460
 // Storage for the marked chunks of each owned remap entry: popcount of its
-// occupancy, taken from one of SG_STORAGE_COUNTERS partitions picked by a hash
+// occupancy, taken from one of kStorageCounters partitions picked by a hash
 // of the entry (so allocation does not serialize on one counter). A full
 // partition passes the request on to the next ones, so storage runs out only
 // when no partition has room; then the overflow is counted and the entry left
 // without storage: never a write out of bounds.
-#include <plugins/decoupled/shaders/decoupled.glsl>
-#include <plugins/decoupled/shaders/work.glsl>
+#include <framework/shadel/shaders/decoupled.glsl>
+#include <framework/shadel/shaders/work.glsl>
 
 layout(local_size_x = 64) in;
 
@@ -33,7 +33,7 @@ void main() {
   uint count = uint(bitCount(halves.x) + bitCount(halves.y));
   if (count == 0u) return;
   atomicAdd(counters.chunksMarked, count);
-  atomicAdd(counters.levelChunks[min(owned.level, SG_MAX_LEVELS - 1u)], count);
+  atomicAdd(counters.levelChunks[min(owned.level, kMaxLevels - 1u)], count);
   uint base = takeChunks(sgStorageCounter(owned.entryIndex, params.storageCounters), count);
   if (base == SG_NO_STORAGE) {
     atomicAdd(counters.overflowChunks, count);

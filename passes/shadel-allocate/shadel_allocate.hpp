@@ -1,10 +1,11 @@
 #pragma once
 #include <shadelgraph/graph/render_graph.hpp>
-#include <shadelgraph/render/decoupled_frame.hpp>
+#include <decoupled_frame.hpp>
 
 namespace sg::passes {
 
 // Storage for every marked chunk, from hashed partitions; overflow counted (async compute).
-void addShadelAllocate(graph::RenderGraph& graph, render::DecoupledFrame& frame);
+void addShadelAllocate(graph::RenderGraph& graph, DecoupledFrame& frame);
+gpu::ComputePipelineDesc shadelAllocatePipeline();
 
 }  // namespace sg::passes

@@ -2,8 +2,8 @@
 // Resets the remap entries of allocated instances only (cost follows the
 // allocated entries, not the virtual sheet), the shade counters and the
 // per-object work counts.
-#include <plugins/decoupled/shaders/decoupled.glsl>
-#include <plugins/decoupled/shaders/work.glsl>
+#include <framework/shadel/shaders/decoupled.glsl>
+#include <framework/shadel/shaders/work.glsl>
 
 layout(local_size_x = 64) in;
 
@@ -19,9 +19,9 @@ void main() {
     work[sgObjectChunksSlot(i)] = 0u;
     work[sgObjectFillSlot(i)] = 0u;
   }
-  if (i < SG_STORAGE_COUNTERS) counters.allocated[i] = 0u;
-  if (i < SG_MAX_LEVELS) counters.levelChunks[i] = 0u;
-  if (i < SG_MAX_PERSISTENT_LAYERS) {
+  if (i < kStorageCounters) counters.allocated[i] = 0u;
+  if (i < kMaxLevels) counters.levelChunks[i] = 0u;
+  if (i < kMaxPersistentLayers) {
     counters.layerReused[i] = 0u;
     counters.layerComputed[i] = 0u;
   }

@@ -1,11 +1,12 @@
 #pragma once
 #include <shadelgraph/graph/render_graph.hpp>
-#include <shadelgraph/render/decoupled_frame.hpp>
+#include <decoupled_frame.hpp>
 
 namespace sg::passes {
 
 // Resets the owned remap entries, the shade counters and the per-object work
 // counts (compute, on the graphics queue: shadel-mark follows).
-void addShadelClear(graph::RenderGraph& graph, render::DecoupledFrame& frame);
+void addShadelClear(graph::RenderGraph& graph, DecoupledFrame& frame);
+gpu::ComputePipelineDesc shadelClearPipeline();
 
 }  // namespace sg::passes

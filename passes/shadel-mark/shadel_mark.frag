@@ -3,7 +3,7 @@
 // trilinear footprint, 4 shadels at the fine level and 4 at the coarse one.
 // Early depth test: hidden surfaces mark nothing. No colour output.
 #include <framework/render/shaders/object.glsl>
-#include <plugins/decoupled/shaders/decoupled.glsl>
+#include <framework/shadel/shaders/decoupled.glsl>
 
 layout(early_fragment_tests) in;
 layout(location = 0) in vec2 inShadingUv;

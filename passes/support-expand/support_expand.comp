@@ -14,10 +14,10 @@
 //   apply (SG_SUPPORT_APPLY defined): a thread per owned entry ORs its mask into the entry
 //     (owned entries are distinct: no atomics) and counts the new bits.
 // The workgroups of both form a 2D grid (x up to 65535) read back as one index.
-#include <plugins/decoupled/shaders/decoupled.glsl>
+#include <framework/shadel/shaders/decoupled.glsl>
 
-// render::kBindSupportMasks: the transient buffer of the masks, one per owned entry.
-layout(set = 0, binding = 30, std430) buffer SupportMasks { uint64_t supportMasks[]; };
+// The transient buffer of the masks, one per owned entry.
+layout(set = 0, binding = kBindSupportMasks, std430) buffer SupportMasks { uint64_t supportMasks[]; };
 
 const uint SG_MAX_SUPPORT_CHUNKS = 8u;  // sg::shadel::kMaxSupportChunks
 

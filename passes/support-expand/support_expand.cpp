@@ -9,15 +9,12 @@
 namespace sg::passes {
 namespace {
 
-constexpr const char* kShader = "passes/support-expand/support_expand.comp";
+constexpr std::array kBindings{kBindParams, kBindRemap,    kBindObjects, kBindShadelInstances,
+                               kBindLevelRects, kBindOwnedEntries, kBindCounters, kBindSupportMasks};
 
-// The shader's gather half, or with `apply` its apply half.
-const gpu::Pipeline& supportPipeline(PassContext& ctx, bool apply, std::span<const uint32_t> bindings) {
-  return ctx.device().pipeline(apply ? "support-expand-apply" : "support-expand-gather", [&] {
-    gpu::ComputePipelineDesc desc{.shader = {.path = kShader}, .layout = render::decoupledLayout(bindings)};
-    if (apply) desc.shader.defines.push_back({"SG_SUPPORT_APPLY", "1"});
-    return desc;
-  });
+const gpu::Pipeline& supportPipeline(PassContext& ctx, bool apply) {
+  return ctx.device().pipeline(apply ? "support-expand-apply" : "support-expand-gather",
+                               [&] { return supportExpandPipeline(apply); });
 }
 
 // `groups` workgroups as a 2D grid (x within the 65535 every device allows);
@@ -30,7 +27,14 @@ void dispatchGroups(VkCommandBuffer cmd, uint32_t groups) {
 
 }  // namespace
 
-void addSupportExpand(graph::RenderGraph& graph, render::DecoupledFrame& frame) {
+gpu::ComputePipelineDesc supportExpandPipeline(bool apply) {
+  gpu::ComputePipelineDesc desc{.shader = {.path = "passes/support-expand/support_expand.comp"},
+                                .layout = decoupledLayout(kBindings)};
+  if (apply) desc.shader.defines.push_back({"SG_SUPPORT_APPLY", "1"});
+  return desc;
+}
+
+void addSupportExpand(graph::RenderGraph& graph, DecoupledFrame& frame) {
   // One 64-bit mask per owned entry, written by the gather dispatch, read by the apply one.
   auto masks = graph.createBuffer("support masks", {.size = 8ull * std::max(frame.ownedEntryCount, 1u)});
   auto& pass = graph.addPass("support-expand", graph::QueueClass::Graphics, graph::PassKind::Compute);
@@ -38,14 +42,11 @@ void addSupportExpand(graph::RenderGraph& graph, render::DecoupledFrame& frame) 
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);
   masks = pass.write(masks, graph::Access::StorageReadWrite);
   pass.execute([frame, masks](PassContext& ctx) {
-    using namespace render;
     if (frame.ownedEntryCount == 0) return;
-    const std::array bindings{kBindParams, kBindObjects,      kBindShadelInstances, kBindLevelRects,
-                              kBindRemap,  kBindOwnedEntries, kBindCounters,        kBindSupportMasks};
     const VkBuffer maskBuffer = ctx.buffer(masks).handle();
     const std::array extra{gpu::DescriptorWrite{kBindSupportMasks, gpu::BufferBinding{maskBuffer}}};
 
-    bindDecoupled(ctx, supportPipeline(ctx, false, bindings), frame, bindings, extra);
+    bindDecoupled(ctx, supportPipeline(ctx, false), frame, kBindings, extra);
     dispatchGroups(ctx.cmd(), frame.ownedEntryCount);  // a workgroup per owned entry
 
     // Apply may start only when all of gather is done: apply reads the masks
@@ -57,7 +58,7 @@ void addSupportExpand(graph::RenderGraph& graph, render::DecoupledFrame& frame) 
                        {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
 
-    bindDecoupled(ctx, supportPipeline(ctx, true, bindings), frame, bindings, extra);
+    bindDecoupled(ctx, supportPipeline(ctx, true), frame, kBindings, extra);
     dispatchGroups(ctx.cmd(), (frame.ownedEntryCount + 63) / 64);  // a thread per owned entry
   });
 }

@@ -1,8 +1,11 @@
 #version 460
 // HDR -> display: exposure from the exposure pass, ACES filmic fit (Narkowicz
 // 2015); the sRGB output format applies the transfer function.
-layout(set = 0, binding = 0) uniform sampler2D hdr;
-layout(set = 0, binding = 1, std430) readonly buffer Exposure { float logAverage; float exposure; float pixels; } result;
+#extension GL_EXT_scalar_block_layout : require
+#include <passes/exposure/exposure_interface.h>
+
+layout(set = 0, binding = kBindExposureHdr) uniform sampler2D hdr;
+layout(set = 0, binding = kBindExposure, scalar) readonly buffer Exposure { SgExposure result; };
 layout(location = 0) in vec2 inUv;
 layout(location = 0) out vec4 outColor;
 

@@ -1,4 +1,5 @@
 #pragma once
+#include <shadelgraph/gpu/pipeline.hpp>
 #include <shadelgraph/graph/render_graph.hpp>
 
 namespace sg::passes {
@@ -7,5 +8,6 @@ namespace sg::passes {
 // (graphics). passthrough: copy the colours unchanged (debug views).
 graph::ResourceHandle addTonemap(graph::RenderGraph& graph, graph::ResourceHandle hdr, graph::ResourceHandle exposure,
                                  graph::ResourceHandle output, bool passthrough = false);
+gpu::GraphicsPipelineDesc tonemapPipeline(VkFormat output, bool passthrough);
 
 }  // namespace sg::passes

@@ -6,32 +6,34 @@
 #include <shadelgraph/gpu/pass_context.hpp>
 
 namespace sg::passes {
+namespace {
+constexpr std::array kOffsetBindings{kBindParams, kBindWork, kBindArgs};
+constexpr std::array kFillBindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindWork};
+}  // namespace
 
-void addWorkAggregate(graph::RenderGraph& graph, render::DecoupledFrame& frame) {
+gpu::ComputePipelineDesc workOffsetsPipeline() {
+  return {.shader = {.path = "passes/work-aggregate/work_offsets.comp"}, .layout = decoupledLayout(kOffsetBindings)};
+}
+
+gpu::ComputePipelineDesc workFillPipeline() {
+  return {.shader = {.path = "passes/work-aggregate/work_fill.comp"}, .layout = decoupledLayout(kFillBindings)};
+}
+
+void addWorkAggregate(graph::RenderGraph& graph, DecoupledFrame& frame) {
   auto& pass = graph.addPass("work-aggregate", graph::QueueClass::AsyncCompute);
   pass.read(frame.remap, graph::Access::StorageRead);
   frame.work = pass.write(frame.work, graph::Access::StorageReadWrite);
   frame.args = pass.write(frame.args, graph::Access::StorageWrite);
   pass.execute([frame](PassContext& ctx) {
-    using namespace render;
-    const std::array offsetBindings{kBindParams, kBindWork, kBindArgs};
-    const std::array fillBindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindWork};
-    const auto& offsets = ctx.device().pipeline("work-offsets", [&] {
-      return gpu::ComputePipelineDesc{.shader = {.path = "passes/work-aggregate/work_offsets.comp"},
-                                      .layout = decoupledLayout(offsetBindings)};
-    });
-    const auto& fill = ctx.device().pipeline("work-fill", [&] {
-      return gpu::ComputePipelineDesc{
-          .shader = {.path = "passes/work-aggregate/work_fill.comp"},
-          .layout = decoupledLayout(fillBindings)};
-    });
-    bindDecoupled(ctx, offsets, frame, offsetBindings);
+    const auto& offsets = ctx.device().pipeline("work-offsets", workOffsetsPipeline);
+    const auto& fill = ctx.device().pipeline("work-fill", workFillPipeline);
+    bindDecoupled(ctx, offsets, frame, kOffsetBindings);
     vkCmdDispatch(ctx.cmd(), 1, 1, 1);
     // The fill step reads the offsets the first step wrote: a barrier inside the pass.
     gpu::memoryBarrier(ctx.cmd(), {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
                        {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
-    bindDecoupled(ctx, fill, frame, fillBindings);
+    bindDecoupled(ctx, fill, frame, kFillBindings);
     if (frame.ownedEntryCount) vkCmdDispatch(ctx.cmd(), (frame.ownedEntryCount + 63) / 64, 1, 1);
   });
 }

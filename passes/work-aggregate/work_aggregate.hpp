@@ -1,11 +1,14 @@
 #pragma once
 #include <shadelgraph/graph/render_graph.hpp>
-#include <shadelgraph/render/decoupled_frame.hpp>
+#include <decoupled_frame.hpp>
 
 namespace sg::passes {
 
 // Per-object work lists in one shared buffer and one VkDispatchIndirectCommand
 // per object per material layer (async compute).
-void addWorkAggregate(graph::RenderGraph& graph, render::DecoupledFrame& frame);
+void addWorkAggregate(graph::RenderGraph& graph, DecoupledFrame& frame);
+// Its two steps: the per-object offsets and arguments, then the work items.
+gpu::ComputePipelineDesc workOffsetsPipeline();
+gpu::ComputePipelineDesc workFillPipeline();
 
 }  // namespace sg::passes

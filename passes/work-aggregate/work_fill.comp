@@ -1,7 +1,7 @@
 #version 460
 // Appends one work item per stored chunk of each owned entry to its object's list.
-#include <plugins/decoupled/shaders/decoupled.glsl>
-#include <plugins/decoupled/shaders/work.glsl>
+#include <framework/shadel/shaders/decoupled.glsl>
+#include <framework/shadel/shaders/work.glsl>
 
 layout(local_size_x = 64) in;
 

@@ -5,12 +5,12 @@
 // {0, 1, 1}. One invocation: object counts are small. A dispatch dimension
 // holds at most 65,535 workgroups (the guaranteed maxComputeWorkGroupCount), so
 // a longer list runs as rows of that many; the last row's surplus groups exit.
-#include <plugins/decoupled/shaders/decoupled.glsl>
-#include <plugins/decoupled/shaders/work.glsl>
+#include <framework/shadel/shaders/decoupled.glsl>
+#include <framework/shadel/shaders/work.glsl>
 
 layout(local_size_x = 1) in;
 const uint kMaxGroupsPerRow = 65535u;
-layout(set = 0, binding = 9, std430) writeonly buffer IndirectArgs { uint args[]; };
+layout(set = 0, binding = kBindArgs, std430) writeonly buffer IndirectArgs { uint args[]; };
 
 void main() {
   uint offset = 0u;

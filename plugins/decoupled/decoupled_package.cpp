@@ -24,7 +24,7 @@ void prepare(FrameContext& ctx) { shading(ctx).prepare(ctx); }
 // A pass that runs only while some object is decoupled this frame.
 plugin::PassPlugin shadingPass(std::string name, std::string description, graph::QueueClass queue,
                                std::vector<std::string> reads, std::vector<std::string> writes,
-                               void (*add)(graph::RenderGraph&, render::DecoupledFrame&)) {
+                               void (*add)(graph::RenderGraph&, passes::DecoupledFrame&)) {
   return {.name = std::move(name),
           .description = std::move(description),
           .queue = queue,
@@ -108,7 +108,7 @@ void registerDecoupledPackage(plugin::Registry& registry) {
                     .declare = [](FrameContext& ctx) {
                       DecoupledShading& d = shading(ctx);
                       if (!d.shading()) return;
-                      render::DecoupledFrame& frame = d.frame(ctx);
+                      passes::DecoupledFrame& frame = d.frame(ctx);
                       const int filter = ctx.parameter<int>("filter");
                       if (filter > 2)
                         throw plugin::FrameError("pass 'composite': filter " + std::to_string(filter) +

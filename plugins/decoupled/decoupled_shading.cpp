@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include <shadelgraph/gpu/pass_context.hpp>
-#include <shadelgraph/render/decoupled_frame.hpp>
+#include <decoupled_frame.hpp>
 #include <shadelgraph/render/material_variants.hpp>
 #include <shadelgraph/scene/uv_chart.hpp>
 #include <shadelgraph/shadel/id_map_cache.hpp>
@@ -100,7 +100,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
     slot.allocated = true;
     ++allocatedObjects_;
     slot.record = {draw.world, draw.firstIndex, draw.vertexOffset, draw.indexCount / 3, draw.material, offset,
-                   uint32_t(choice.uvSet), choice.tileOffset, supportRadius(materials, material) > 0 ? 1u : 0u, {}};
+                   uint32_t(choice.uvSet), choice.tileOffset, supportRadius(materials, material) > 0 ? 1u : 0u};
   }
 }
 
@@ -187,12 +187,12 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
   storage_ = shadel::storageLayoutFor(chunks, std::clamp<uint32_t>(chunks / 256, 1, kStorageCounters));
   const DecoupledParams params{bias_, settings_.sheetSizeLog2 - 6, storage_.widthChunks, storage_.chunksPerCounter,
                                ownedEntryCount_, objectCount, storage_.capacityChunks(),
-                               storage_.counterCount, {}};
+                               storage_.counterCount};
   params_.write(&params, sizeof params);
   graph::RenderGraph& graph = ctx.graph();
   frame_.reset();
   if (!hasObjects()) return;
-  frame_.emplace(render::DecoupledFrame{.view = ctx.view(frameObjects_),
+  frame_.emplace(passes::DecoupledFrame{.view = ctx.view(frameObjects_),
                                         .objectIds = frameObjects_,
                                         .objectDraws = identity_,
                                         .params = params_, .objects = objects_, .shadelInstances = shadelInstances_,
@@ -200,7 +200,7 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
                                         .ownedEntryCount = ownedEntryCount_, .objectCount = objectCount,
                                         .filter = settings_.filter,
                                         .levelView = settings_.view == DebugView::Level});
-  render::DecoupledFrame& frame = *frame_;
+  passes::DecoupledFrame& frame = *frame_;
   declaredHistory_ = history_.declare(graph, in.device, in.executor, materials, layerPlan_.persistent,
                                       storage_.widthTexels(), storage_.heightTexels(), remapBytes_, frames_);
   frame.remap = declaredHistory_.remap;
@@ -218,16 +218,16 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
 namespace {
 struct ShadelResource {
   const char* name;
-  graph::ResourceHandle render::DecoupledFrame::*handle;
+  graph::ResourceHandle passes::DecoupledFrame::*handle;
 };
-constexpr ShadelResource kShadelResources[] = {{"shadel.remap", &render::DecoupledFrame::remap},
-                                               {"shadel.counters", &render::DecoupledFrame::counters},
-                                               {"shadel.work", &render::DecoupledFrame::work},
-                                               {"shadel.args", &render::DecoupledFrame::args},
-                                               {"shadel.shaded", &render::DecoupledFrame::shadedColor}};
+constexpr ShadelResource kShadelResources[] = {{"shadel.remap", &passes::DecoupledFrame::remap},
+                                               {"shadel.counters", &passes::DecoupledFrame::counters},
+                                               {"shadel.work", &passes::DecoupledFrame::work},
+                                               {"shadel.args", &passes::DecoupledFrame::args},
+                                               {"shadel.shaded", &passes::DecoupledFrame::shadedColor}};
 }  // namespace
 
-render::DecoupledFrame& DecoupledShading::frame(render::FrameContext& ctx) {
+passes::DecoupledFrame& DecoupledShading::frame(render::FrameContext& ctx) {
   if (!frame_) throw plugin::FrameError("pass '" + ctx.passName() + "': decoupled shading was not prepared this frame");
   for (const auto& r : kShadelResources)
     if (ctx.has(r.name)) (*frame_).*r.handle = ctx.read(r.name);
@@ -252,7 +252,7 @@ void DecoupledShading::addCountersReadback(graph::RenderGraph& graph) {
 }
 
 void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, const plugin::Registry& materials) {
-  render::DecoupledFrame& frame = *frame_;
+  passes::DecoupledFrame& frame = *frame_;
   const LayerHistory::Declared& history = declaredHistory_;
   // The current version of each intermediate layer's own image.
   std::map<std::string, graph::ResourceHandle> images;

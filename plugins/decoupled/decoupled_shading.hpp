@@ -13,7 +13,7 @@
 #include <vector>
 
 #include <shadelgraph/gpu/buffer.hpp>
-#include <shadelgraph/render/decoupled_frame.hpp>
+#include <decoupled_frame.hpp>
 #include <shadelgraph/render/frame_context.hpp>
 #include <shadelgraph/shadel/shadel_space.hpp>
 #include <shadelgraph/shadel/shadel_storage.hpp>
@@ -81,7 +81,7 @@ class DecoupledShading {
   bool needsSupport() const { return layerPlan_.needsSupport; }
   // This frame's shared state, its resources synchronised with the frame
   // resources `shadel.*` (a user's pass may have given them new versions).
-  render::DecoupledFrame& frame(render::FrameContext& ctx);
+  passes::DecoupledFrame& frame(render::FrameContext& ctx);
   // Publishes the frame's current versions of these `shadel.*` resources.
   void publish(render::FrameContext& ctx, std::initializer_list<const char*> resources);
   // One layer-shade pass per depth of the frame's layer plan.
@@ -130,7 +130,7 @@ class DecoupledShading {
   LayerPlan layerPlan_;
   LayerHistory history_;
   LayerHistory::Declared declaredHistory_;
-  std::optional<render::DecoupledFrame> frame_;
+  std::optional<passes::DecoupledFrame> frame_;
   graph::ResourceHandle readbackHandle_;
   std::unique_ptr<shadel::ShadelSpace> space_;
   uint32_t ownedEntryCount_ = 0;

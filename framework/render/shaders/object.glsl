@@ -2,11 +2,10 @@
 #ifndef SG_OBJECT_GLSL
 #define SG_OBJECT_GLSL
 
-layout(push_constant, std430) uniform Object {
-  mat4 model;
-  uint objectId;
-  uint materialId;
-} object;
+#extension GL_EXT_scalar_block_layout : require
+#include "frame_interface.h"
+
+layout(push_constant, scalar) uniform Object { SgObjectConstants object; };
 
 #ifdef SG_VERTEX_SHADER
 layout(location = 0) in vec3 inPosition;

@@ -30,30 +30,11 @@ struct KnownViolation {
 // test fails on any violation missing here AND on any entry that no longer
 // occurs, so fixing one means deleting its line.
 const KnownViolation kKnownViolations[] = {
-    // The generated material variants include a pass's GLSL.
-    {"framework/render/material_variants.cpp", "<passes/layer-shade/shadel_context.glsl>"},
-    {"framework/render/material_variants.cpp", "<passes/forward/forward_surface.glsl>"},
     // A debug material borrows a debug view's colours.
     {"materials/debug/detail_level.glsl", "<passes/debug-views/debug_color.glsl>"},
-    // Passes include the decoupled plugin's bindings and the glTF-PBR material's Surface.
-    {"passes/composite/composite.frag", "<plugins/decoupled/shaders/decoupled.glsl>"},
-    {"passes/composite/composite.vert", "<plugins/decoupled/shaders/decoupled.glsl>"},
-    {"passes/debug-views/occupancy.frag", "<plugins/decoupled/shaders/decoupled.glsl>"},
+    // Passes include the glTF-PBR material's Surface.
     {"passes/forward/forward_surface.glsl", "<materials/gltf-pbr/material.glsl>"},
-    {"passes/layer-shade/shadel_context.glsl", "<plugins/decoupled/shaders/decoupled.glsl>"},
-    {"passes/layer-shade/shadel_context.glsl", "<plugins/decoupled/shaders/work.glsl>"},
     {"passes/layer-shade/shadel_context.glsl", "<materials/gltf-pbr/material.glsl>"},
-    {"passes/shadel-allocate/shadel_allocate.comp", "<plugins/decoupled/shaders/decoupled.glsl>"},
-    {"passes/shadel-allocate/shadel_allocate.comp", "<plugins/decoupled/shaders/work.glsl>"},
-    {"passes/shadel-clear/shadel_clear.comp", "<plugins/decoupled/shaders/decoupled.glsl>"},
-    {"passes/shadel-clear/shadel_clear.comp", "<plugins/decoupled/shaders/work.glsl>"},
-    {"passes/shadel-mark/shadel_mark.frag", "<plugins/decoupled/shaders/decoupled.glsl>"},
-    {"passes/shadel-mark/shadel_mark.vert", "<plugins/decoupled/shaders/decoupled.glsl>"},
-    {"passes/support-expand/support_expand.comp", "<plugins/decoupled/shaders/decoupled.glsl>"},
-    {"passes/work-aggregate/work_fill.comp", "<plugins/decoupled/shaders/decoupled.glsl>"},
-    {"passes/work-aggregate/work_fill.comp", "<plugins/decoupled/shaders/work.glsl>"},
-    {"passes/work-aggregate/work_offsets.comp", "<plugins/decoupled/shaders/decoupled.glsl>"},
-    {"passes/work-aggregate/work_offsets.comp", "<plugins/decoupled/shaders/work.glsl>"},
 };
 
 TEST(IncludeRule, EveryIncludeKeepsToTheFloors) {

@@ -7,6 +7,8 @@
 #include <builtin_materials.hpp>
 #include <builtin_shaders.hpp>
 #include <shadelgraph/gpu/shader_compiler.hpp>
+#include <forward/material_variant.hpp>
+#include <layer-shade/layer_variant.hpp>
 #include <shadelgraph/render/material_variants.hpp>
 
 namespace sg {
@@ -29,7 +31,7 @@ TEST_F(MaterialVariants, EveryBuiltinLayerCompilesDecoupled) {
     if (!registry_.runsIn(material, plugin::ShadingPath::Decoupled)) continue;
     for (const auto& layer : material.layers) {
       SCOPED_TRACE(layer);
-      EXPECT_FALSE(compiler_.compile(render::decoupledLayerVariant(registry_.layer(layer))).empty());
+      EXPECT_FALSE(compiler_.compile(passes::decoupledLayerVariant(registry_.layer(layer))).empty());
     }
   }
 }
@@ -38,12 +40,12 @@ TEST_F(MaterialVariants, EveryBuiltinMaterialCompilesForward) {
   for (const auto& name : registry_.materialNames()) {
     SCOPED_TRACE(name);
     const auto& material = registry_.materialFor(name, plugin::ShadingPath::Forward);
-    EXPECT_FALSE(compiler_.compile(render::forwardMaterialVariant(registry_, material)).empty());
+    EXPECT_FALSE(compiler_.compile(passes::forwardMaterialVariant(registry_, material)).empty());
   }
 }
 
 TEST_F(MaterialVariants, ForwardVariantRunsTheStackInOrder) {
-  const auto source = render::forwardMaterialVariant(registry_, registry_.material("bumps-forward")).source;
+  const auto source = passes::forwardMaterialVariant(registry_, registry_.material("bumps-forward")).source;
   const auto height = source.find("sgLayerValue_height = bumpHeight(s);");
   const auto normal = source.find("sgLayerValue_normal_from_height_screen = normalFromHeightScreen(s);");
   ASSERT_NE(height, std::string::npos) << source;
@@ -53,11 +55,11 @@ TEST_F(MaterialVariants, ForwardVariantRunsTheStackInOrder) {
 }
 
 TEST_F(MaterialVariants, DecoupledVariantBindsOnlyWhatTheLayerDeclares) {
-  const auto blur = render::decoupledLayerVariant(registry_.layer("blur-v")).source;
+  const auto blur = passes::decoupledLayerVariant(registry_.layer("blur-v")).source;
   EXPECT_NE(blur.find("sgLayerImage_blur_u"), std::string::npos);
   EXPECT_EQ(blur.find("sgLayerImage_gltf_pbr"), std::string::npos) << "blur-v reads only blur-u";
   EXPECT_EQ(blur.find("sgLayerHistory"), std::string::npos) << "not persistent";
-  const auto marble = render::decoupledLayerVariant(registry_.layer("marble")).source;
+  const auto marble = passes::decoupledLayerVariant(registry_.layer("marble")).source;
   EXPECT_NE(marble.find("sgLayerHistory"), std::string::npos);
   EXPECT_NE(marble.find("layerReused"), std::string::npos);
 }
@@ -73,8 +75,8 @@ TEST_F(MaterialVariants, AuthorErrorsPointIntoTheAuthorsFile) {
   registry_.addLayer({.name = "broken", .source = "my-plugin/broken.glsl", .function = "broken"});
   registry_.addMaterial({.name = "broken", .layers = {"broken"}});
   for (const bool decoupled : {true, false}) {
-    const auto request = decoupled ? render::decoupledLayerVariant(registry_.layer("broken"))
-                                   : render::forwardMaterialVariant(registry_, registry_.material("broken"));
+    const auto request = decoupled ? passes::decoupledLayerVariant(registry_.layer("broken"))
+                                   : passes::forwardMaterialVariant(registry_, registry_.material("broken"));
     try {
       compiler_.compile(request);
       FAIL() << "compiled";

@@ -25,7 +25,7 @@ namespace sg::test {
 namespace {
 
 constexpr const char* kShader = "passes/support-expand/support_expand.comp";
-constexpr uint32_t kBindSupportMasks = 30;  // render::kBindSupportMasks
+using shader::kBindSupportMasks;
 
 struct Case {
   shadel::ShadelGpuTables tables;

@@ -1,10 +1,10 @@
-#include <shadelgraph/render/decoupled_frame.hpp>
+#include <decoupled_frame.hpp>
 
 #include <vector>
 
 #include <shadelgraph/gpu/pass_context.hpp>
 
-namespace sg::render {
+namespace sg::passes {
 
 gpu::PipelineLayoutDesc decoupledLayout(std::span<const uint32_t> bindings, bool layerImageStorage,
                                         uint32_t pushConstantBytes,
@@ -55,4 +55,4 @@ void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const Decoup
   ctx.descriptors().bind(ctx.cmd(), pipeline, writes);
 }
 
-}  // namespace sg::render
+}  // namespace sg::passes

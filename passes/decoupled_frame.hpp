@@ -2,7 +2,9 @@
 // What the decoupled-shading passes of one frame share: the static tables the
 // host uploaded (objects, shadel-space rectangles, owned remap entries,
 // triangle-ID maps), the per-frame parameters, and the graph resources the
-// passes hand to each other. The decoupled recipe (plugins/decoupled) fills it.
+// passes hand to each other. The decoupled package (plugins/decoupled) fills
+// it. The binding numbers and records are the shared shader interface
+// (framework/shadel/shaders/decoupled_interface.h).
 #include <initializer_list>
 #include <span>
 
@@ -11,24 +13,18 @@
 #include <shadelgraph/gpu/pipeline.hpp>
 #include <shadelgraph/graph/handles.hpp>
 #include <shadelgraph/render/scene_view.hpp>
+#include <shadelgraph/shadel/shaders/decoupled_interface.h>
 
 namespace sg {
 class PassContext;
 }
 
-namespace sg::render {
+namespace sg::passes {
 
-// Bindings of set 0 (plugins/decoupled/shaders/decoupled.glsl).
-inline constexpr uint32_t kBindFrame = 0, kBindParams = 1, kBindObjects = 2, kBindShadelInstances = 3,
-                          kBindLevelRects = 4, kBindRemap = 5, kBindOwnedEntries = 6, kBindCounters = 7,
-                          kBindWork = 8, kBindArgs = 9, kBindIdMaps = 10, kBindVertices = 11, kBindIndices = 12,
-                          kBindLayerImage = 13;
-// support-expand's transient per-owned-entry masks (passes/support-expand), bound
-// through bindDecoupled's `extra`; kept high, clear of the bindings that grow from 14.
-inline constexpr uint32_t kBindSupportMasks = 30;
+using namespace shader;  // kBind*, the records
 
 struct DecoupledFrame {
-  SceneView view;                       // view.draws: the draws of the objects shaded decoupled this frame
+  render::SceneView view;               // view.draws: the draws of the objects shaded decoupled this frame
   std::span<const uint32_t> objectIds;  // their decoupled object index, one per view.draws entry
   std::span<const uint32_t> objectDraws;  // every decoupled object's draw, by object index (materials)
   const gpu::Buffer& params;
@@ -45,8 +41,9 @@ struct DecoupledFrame {
   graph::ResourceHandle shadedColor;  // what composite filters: the last layer of every material writes it
 };
 
-// The set-0 layout of a decoupled pass using `bindings`; the layer image is a
-// storage image when `layerImageStorage`, else sampled.
+// The set-0 layout of a decoupled pass whose shaders use the shared
+// `bindings`; the layer image is a storage image when `layerImageStorage`,
+// else sampled.
 gpu::PipelineLayoutDesc decoupledLayout(std::span<const uint32_t> bindings, bool layerImageStorage = false,
                                         uint32_t pushConstantBytes = 0,
                                         std::initializer_list<VkDescriptorSetLayout> extraSets = {});
@@ -55,4 +52,4 @@ gpu::PipelineLayoutDesc decoupledLayout(std::span<const uint32_t> bindings, bool
 void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const DecoupledFrame& frame,
                    std::span<const uint32_t> bindings, std::span<const gpu::DescriptorWrite> extra = {});
 
-}  // namespace sg::render
+}  // namespace sg::passes

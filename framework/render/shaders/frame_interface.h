@@ -1,0 +1,44 @@
+// The frame uniforms (camera, lights) and the per-draw push constants every
+// pass that draws scene geometry uses, declared once for C++ (sg::shader) and
+// GLSL (framework/gpu/shaders/shared.h).
+#ifndef SG_FRAME_INTERFACE_H
+#define SG_FRAME_INTERFACE_H
+
+#include "../../gpu/shaders/shared.h"
+
+SG_SHARED_BEGIN
+
+SG_CONST uint kBindFrame = 0u;  // set 0: SgFrameUniforms (uniform)
+
+SG_CONST uint kLightDirectional = 0u;
+SG_CONST uint kLightPoint = 1u;
+SG_CONST uint kLightSpot = 2u;
+SG_CONST uint kMaxLights = 8u;
+
+struct Light {
+  vec4 positionType;    // xyz world position, w = type
+  vec4 directionRange;  // xyz direction the light travels, w = range (0: infinite)
+  vec4 color;           // rgb = colour * intensity
+  vec4 cone;            // x = cos(outer), y = 1 / max(cos(inner) - cos(outer), eps)
+};
+
+struct SgFrameUniforms {
+  mat4 view;
+  mat4 projection;
+  mat4 viewProjection;
+  vec4 cameraPosition;
+  vec4 ambient;      // rgb ambient radiance
+  uvec4 counts;      // x = light count, y = output width, z = output height
+  Light lights[kMaxLights];
+};
+
+// Push constants of a scene draw (render::drawItem).
+struct SgObjectConstants {
+  mat4 model;
+  uint objectId;
+  uint materialId;
+};
+
+SG_SHARED_END
+
+#endif

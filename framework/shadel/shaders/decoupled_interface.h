@@ -1,0 +1,101 @@
+// The shader interface every decoupled-shading pass shares, declared once for
+// C++ (namespace sg::shader) and GLSL: the set-0 binding numbers, the
+// records those bindings hold and the push-constant blocks. Each pass lists
+// the bindings it uses (passes/decoupled_frame.hpp); the shader-interface test
+// compiles every pass shader and checks its reflected bindings and blocks
+// against that list and these records.
+#ifndef SG_DECOUPLED_INTERFACE_H
+#define SG_DECOUPLED_INTERFACE_H
+
+#include "../../render/shaders/frame_interface.h"
+
+SG_SHARED_BEGIN
+
+// Set 0.
+// 0: kBindFrame, the frame uniforms (frame_interface.h).
+SG_CONST uint kBindParams = 1u;           // uniform: SgDecoupledParams
+SG_CONST uint kBindObjects = 2u;          // SgDecoupledObject[]
+SG_CONST uint kBindShadelInstances = 3u;  // SgShadelInstance[] (shadel_address.glsl)
+SG_CONST uint kBindLevelRects = 4u;       // SgLevelRect[]
+SG_CONST uint kBindRemap = 5u;            // SgRemapEntry[]
+SG_CONST uint kBindOwnedEntries = 6u;     // SgOwnedEntry[]
+SG_CONST uint kBindCounters = 7u;         // SgShadeCounters
+SG_CONST uint kBindWork = 8u;             // the work buffer (work.glsl)
+SG_CONST uint kBindArgs = 9u;             // VkDispatchIndirectCommand per object
+SG_CONST uint kBindIdMaps = 10u;          // triangle-ID maps
+SG_CONST uint kBindVertices = 11u;        // the scene's vertices (render::GpuVertex)
+SG_CONST uint kBindIndices = 12u;         // the scene's indices
+SG_CONST uint kBindLayerImage = 13u;      // the shaded layer image: storage (layer-shade) or sampled (composite)
+// Of a layer's decoupled variant, after the shared ones.
+SG_CONST uint kBindLayerOutput = kBindLayerImage;  // the image the layer writes
+SG_CONST uint kBindLayerInputs = 14u;              // + i: the i-th layer it reads
+SG_CONST uint kMaxLayerReads = 8u;
+SG_CONST uint kBindLayerHistory = 22u;             // persistent layers: last frame's image of the layer
+SG_CONST uint kBindPreviousRemap = 23u;            // and last frame's remap table
+// 24..27: the frame resources a layer samples (render::kBindLayerFrameInputs).
+SG_CONST uint kBindSupportMasks = 30u;             // support-expand's per-owned-entry masks
+
+SG_CONST uint kStorageCounters = 16u;      // storage partitions, each with its allocation counter
+SG_CONST uint kMaxLevels = 16u;
+SG_CONST uint kMaxPersistentLayers = 8u;
+
+// The work buffer: per object its chunk count, the offset of its work list and
+// a fill counter, then the work items {entry, chunk, level, physical chunk}.
+SG_CONST uint kWorkSlotsPerObject = 3u;
+SG_CONST uint kWorkSlotsPerItem = 4u;
+
+// One decoupled object (all its primitives share one material).
+struct SgDecoupledObject {
+  mat4 world;
+  uint firstIndex;     // into the scene index buffer
+  int vertexOffset;
+  uint triangleCount;
+  uint material;
+  uint idMapOffset;    // first texel of level 0 in the ID-map buffer
+  uint shadingUvSet;   // 0 or 1
+  vec2 tileOffset;     // shading UV = uv - tileOffset
+  uint supportChunks;  // support-expand grows its marked chunks by this many (0: no neighbourhood layer)
+};
+
+// What the passes count, read back after the frame.
+struct SgShadeCounters {
+  uint allocated[kStorageCounters];  // chunks taken from each storage partition
+  uint chunksMarked;
+  uint chunksAllocated;
+  uint overflowChunks;
+  uint compositeMisses;
+  uint coveredPixels;                // fragments composite wrote
+  uint levelChunks[kMaxLevels];      // marked chunks per detail level
+  uint supportChunks;                // chunks support-expand added around the marked ones
+  uint layerReused[kMaxPersistentLayers];    // per persistent layer: shadels served from last frame
+  uint layerComputed[kMaxPersistentLayers];  // and shadels computed
+};
+
+// The frame's parameters (uniform).
+struct SgDecoupledParams {
+  float bias;                 // global fractional level bias (the adjuster's)
+  uint entriesPerSideLog2;    // virtual sheet
+  uint storageWidthChunks;    // layer image width in chunks
+  uint chunksPerCounter;      // storage partition size
+  uint ownedEntryCount;
+  uint objectCount;
+  uint workCapacity;          // work items the work buffer holds
+  uint storageCounters;       // partitions in use (<= kStorageCounters)
+};
+
+// Push constants of a layer's decoupled variant (layer-shade).
+struct SgLayerShadePush {
+  uint objectIndex;
+  uint persistentSlot;   // the layer's slot in SgShadeCounters.layerReused/Computed
+  uint historyValid;     // last frame's remap and layer image describe this storage layout
+};
+
+// Push constants of the occupancy debug view: the sheet window it shows.
+struct SgOccupancyPush {
+  uvec2 originChunks;
+  uvec2 sizeChunks;
+};
+
+SG_SHARED_END
+
+#endif

@@ -1,0 +1,13 @@
+#pragma once
+// The forward fragment variant of a material stack, generated from its
+// layers' GLSL sources: a pixel per invocation (forward_surface.glsl), each
+// layer's value computed in stack order, the last one written out.
+#include <shadelgraph/gpu/shader_compiler.hpp>
+#include <shadelgraph/plugin/registry.hpp>
+
+namespace sg::passes {
+
+// Every layer of `stack` must run forward (Registry::materialFor picks the fallback).
+gpu::ShaderRequest forwardMaterialVariant(const plugin::Registry& registry, const plugin::MaterialStack& stack);
+
+}  // namespace sg::passes

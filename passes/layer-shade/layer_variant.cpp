@@ -1,0 +1,88 @@
+#include "layer_variant.hpp"
+
+#include <sstream>
+
+#include <decoupled_frame.hpp>
+#include <shadelgraph/render/material_variants.hpp>
+
+namespace sg::passes {
+namespace {
+
+bool isHalfFloat(graph::Format format) {
+  return format == graph::Format::R16F || format == graph::Format::RG16F || format == graph::Format::RGBA16F;
+}
+
+}  // namespace
+
+gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
+  render::checkFrameInputCount(layer.frameInputs.size(), "material layer '" + layer.name + "'", layer.plugin);
+  if (layer.reads.size() > kMaxLayerReads)
+    throw plugin::PluginError("material layer '" + layer.name + "' (plugin '" + layer.plugin + "') reads more than " +
+                              std::to_string(kMaxLayerReads) + " layers");
+  std::ostringstream out;
+  out << "#version 460\n"
+      << "// Generated: decoupled variant of material layer '" << layer.name << "' (plugin '" << layer.plugin
+      << "').\n"
+      << "#define SG_DECOUPLED 1\n"
+      << "#include <passes/layer-shade/shadel_context.glsl>\n"
+      << "layout(set = 0, binding = " << kBindLayerOutput << ", " << render::glslImageFormat(layer.format)
+      << ") uniform writeonly image2D sgLayerOutput;\n";
+  for (size_t i = 0; i < layer.reads.size(); ++i) {
+    const std::string name = plugin::glslName(layer.reads[i].layer);
+    out << "layout(set = 0, binding = " << kBindLayerInputs + i << ") uniform sampler2D sgLayerImage_" << name
+        << ";\n"
+        << "vec4 sgLayer_" << name << "(ivec2 offset) { return sgFetchLayer(sgLayerImage_" << name
+        << ", offset); }\n";
+  }
+  if (layer.persistent) {
+    out << "layout(set = 0, binding = " << kBindLayerHistory << ") uniform sampler2D sgLayerHistory;\n"
+        << "layout(set = 0, binding = " << kBindPreviousRemap
+        << ", std430) readonly buffer PreviousRemap { SgRemapEntry previousRemap[]; };\n"
+        << "bool sgReusedPrevious = false;\n"
+        << "// The paper's GetIndexPrevSampleVirtualCoords: this shadel's value last frame, if it was shaded.\n"
+        << "bool sgPrevious(out vec4 value) {\n"
+        << "  value = vec4(0.0);\n"
+        << "  if (sgPush.historyValid == 0u) return false;\n"
+        << "  SgShadelAddress a = sgShadelAddress(sgShadel.shadel, params.entriesPerSideLog2);\n"
+        << "  uint physical = sgPhysicalChunk(previousRemap[a.entryIndex], a.chunkIndex);\n"
+        << "  if (physical == SG_INVALID_CHUNK) return false;\n"
+        << "  value = texelFetch(sgLayerHistory, ivec2(sgStorageTexel(physical, a.texelIndex, "
+           "params.storageWidthChunks)), 0);\n"
+        << "  sgReusedPrevious = true;\n"
+        << "  return true;\n"
+        << "}\n";
+  } else {
+    out << "bool sgPrevious(out vec4 value) { value = vec4(0.0); return false; }\n";
+  }
+  out << render::kLayerAccessorMacros;
+  render::declareLayerTextures(out, layer, 0);
+  render::declareLayerFrameInputs(out, layer, 0);
+  render::includeLayerSource(out, layer);
+  out << "shared uint sgReusedCount, sgComputedCount;\n"
+      << "void main() {\n"
+      << "  if (!sgWorkGroupInList()) return;  // the surplus of a dispatch's last row\n"
+      << "  Surface s;\n"
+      << "  bool onSurface = sgBeginShadel(s);\n"
+      << "  vec4 value = onSurface ? " << layer.function << "(s) : vec4(0.0);\n"
+      // Half floats overflow to Inf above 65,504 on some devices (lavapipe saturates): clamp, so
+      // composite's filter never weighs an Inf (Inf x 0 = NaN).
+      << "  imageStore(sgLayerOutput, sgShadel.target, "
+      << (isHalfFloat(layer.format) ? "clamp(value, -65504.0, 65504.0)" : "value") << ");\n";
+  if (layer.persistent) {
+    // One atomic per workgroup, not per shadel.
+    out << "  if (gl_LocalInvocationIndex == 0u) { sgReusedCount = 0u; sgComputedCount = 0u; }\n"
+        << "  barrier();\n"
+        << "  if (onSurface && sgReusedPrevious) atomicAdd(sgReusedCount, 1u);\n"
+        << "  if (onSurface && !sgReusedPrevious) atomicAdd(sgComputedCount, 1u);\n"
+        << "  barrier();\n"
+        << "  if (gl_LocalInvocationIndex == 0u) {\n"
+        << "    atomicAdd(counters.layerReused[sgPush.persistentSlot], sgReusedCount);\n"
+        << "    atomicAdd(counters.layerComputed[sgPush.persistentSlot], sgComputedCount);\n"
+        << "  }\n";
+  }
+  out << "}\n";
+  return {.path = "generated/layers/" + layer.name + ".comp", .source = out.str(),
+          .stage = gpu::ShaderStage::Compute};
+}
+
+}  // namespace sg::passes
