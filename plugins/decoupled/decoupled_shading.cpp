@@ -100,7 +100,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
     slot.allocated = true;
     ++allocatedObjects_;
     slot.record = {draw.world, draw.firstIndex, draw.vertexOffset, draw.indexCount / 3, draw.material, offset,
-                   uint32_t(choice.uvSet), choice.tileOffset, supportRadius(materials, material) > 0 ? 1u : 0u};
+                   uint32_t(choice.uvSet), choice.tileOffset, supportRadius(materials, material) > 0 ? 1u : 0u, 0u, 0u, 0u};
   }
 }
 

@@ -55,6 +55,7 @@ struct SgDecoupledObject {
   uint shadingUvSet;   // 0 or 1
   vec2 tileOffset;     // shading UV = uv - tileOffset
   uint supportChunks;  // support-expand grows its marked chunks by this many (0: no neighbourhood layer)
+  uint pad0, pad1, pad2;  // 112 bytes, as std430 laid it out: every record's mat4 stays 16-byte aligned
 };
 
 // What the passes count, read back after the frame.
