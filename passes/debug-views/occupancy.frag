@@ -3,7 +3,7 @@
 // chunk. Marked chunks in their level's colour, allocated-but-unmarked chunks
 // dark grey, chunks that got no storage (overflow) white, the rest black.
 #include <plugins/decoupled/shaders/decoupled.glsl>
-#include "debug_color.glsl"
+#include <framework/render/shaders/debug_color.glsl>
 
 layout(push_constant) uniform Push { uvec2 originChunks; uvec2 sizeChunks; } push;
 layout(location = 0) in vec2 inUv;

@@ -33,16 +33,12 @@ const KnownViolation kKnownViolations[] = {
     // The generated material variants include a pass's GLSL.
     {"framework/render/material_variants.cpp", "<passes/layer-shade/shadel_context.glsl>"},
     {"framework/render/material_variants.cpp", "<passes/forward/forward_surface.glsl>"},
-    // A debug material borrows a debug view's colours.
-    {"materials/debug/detail_level.glsl", "<passes/debug-views/debug_color.glsl>"},
-    // Passes include the decoupled plugin's bindings and the glTF-PBR material's Surface.
+    // Passes include the decoupled plugin's bindings.
     {"passes/composite/composite.frag", "<plugins/decoupled/shaders/decoupled.glsl>"},
     {"passes/composite/composite.vert", "<plugins/decoupled/shaders/decoupled.glsl>"},
     {"passes/debug-views/occupancy.frag", "<plugins/decoupled/shaders/decoupled.glsl>"},
-    {"passes/forward/forward_surface.glsl", "<materials/gltf-pbr/material.glsl>"},
     {"passes/layer-shade/shadel_context.glsl", "<plugins/decoupled/shaders/decoupled.glsl>"},
     {"passes/layer-shade/shadel_context.glsl", "<plugins/decoupled/shaders/work.glsl>"},
-    {"passes/layer-shade/shadel_context.glsl", "<materials/gltf-pbr/material.glsl>"},
     {"passes/shadel-allocate/shadel_allocate.comp", "<plugins/decoupled/shaders/decoupled.glsl>"},
     {"passes/shadel-allocate/shadel_allocate.comp", "<plugins/decoupled/shaders/work.glsl>"},
     {"passes/shadel-clear/shadel_clear.comp", "<plugins/decoupled/shaders/decoupled.glsl>"},
@@ -85,6 +81,30 @@ TEST(IncludeRule, EveryIncludeKeepsToTheFloors) {
   EXPECT_TRUE(unresolved.str().empty()) << unresolved.str();
   std::printf("%zu files, %zu project includes, %zu violations (%zu known)\n", report.files, report.projectIncludes,
               report.violations.size(), known.size());
+}
+
+// The example plugins show a third party what to include: the material SDK
+// (framework/plugin/shaders/material.glsl) and nothing else of shadelgraph's,
+// neither a built-in material (materials/) nor a pass (passes/) nor any other
+// framework file. Every include in their GLSL resolves into the SDK (the
+// umbrella and what it includes) or into the plugin's own folder.
+TEST(IncludeRule, ExamplePluginsIncludeOnlyTheMaterialSdk) {
+  const std::filesystem::path root = SG_SOURCE_DIR;
+  const SdkReport report = checkExampleSdkIncludes(root);
+  // The SDK is there and holds what the issue names: Surface, lights, frame uniforms, sampling.
+  ASSERT_TRUE(report.sdk.count(kSdkUmbrella)) << kSdkUmbrella << " is missing under " << root;
+  for (const char* file : {"framework/plugin/shaders/surface.glsl", "framework/plugin/shaders/lights.glsl",
+                           "framework/plugin/shaders/scene_material.glsl", "framework/render/shaders/frame.glsl"})
+    EXPECT_TRUE(report.sdk.count(file)) << kSdkUmbrella << " does not include " << file;
+  // The SDK is the framework's own: it includes nothing from materials/, passes/ or plugins/.
+  for (const std::string& file : report.sdk)
+    EXPECT_EQ(file.rfind("framework/", 0), 0u) << "the SDK includes " << file << ", outside framework/";
+  // The scan saw the examples' GLSL (stripes, ssao: three files, each includes the SDK).
+  ASSERT_GE(report.exampleGlslFiles, 3u);
+  ASSERT_GE(report.checked, 3u);
+  std::ostringstream outside;
+  for (const std::string& o : report.outside) outside << "  " << o << "\n";
+  EXPECT_TRUE(report.outside.empty()) << "example plugins including more than the material SDK:\n" << outside.str();
 }
 
 }  // namespace
