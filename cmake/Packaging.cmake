@@ -2,6 +2,8 @@
 #   P/bin/shadelgraph
 #   P/lib/libshadelgraph_<module>.so*
 #   P/include/shadelgraph/<module>/*.hpp
+#   P/include/shadelgraph/glsl/<#include path>  the material SDK's GLSL, to read
+#     (framework/plugin/CMakeLists.txt; the runtime compiles its embedded copies)
 #   P/lib/cmake/shadelgraph/shadelgraph{Config,ConfigVersion,Targets}.cmake
 # and `find_package(shadelgraph)` then gives the imported targets
 # shadelgraph::<module> (graph, gpu, scene, image, render, shadel, plugin).
@@ -22,10 +24,12 @@ string(REGEX REPLACE "^#define SG_PLUGIN_ABI_VERSION ([0-9]+).*" "\\1" SG_PLUGIN
 set_property(DIRECTORY ${PROJECT_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
   ${PROJECT_SOURCE_DIR}/framework/plugin/plugin_api.hpp)
 
+set(SG_GLSL_INSTALL_DIR ${CMAKE_INSTALL_INCLUDEDIR}/shadelgraph/glsl)
 configure_package_config_file(
   ${PROJECT_SOURCE_DIR}/cmake/shadelgraphConfig.cmake.in
   ${PROJECT_BINARY_DIR}/shadelgraphConfig.cmake
-  INSTALL_DESTINATION ${SG_CONFIG_INSTALL_DIR})
+  INSTALL_DESTINATION ${SG_CONFIG_INSTALL_DIR}
+  PATH_VARS SG_GLSL_INSTALL_DIR)
 # 0.x: only the same minor version is ABI-compatible (SG_PLUGIN_ABI_VERSION
 # is the real guard at load time).
 write_basic_package_version_file(

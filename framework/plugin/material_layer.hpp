@@ -1,5 +1,6 @@
 #pragma once
-// A material layer: one GLSL function over a Surface (materials/common/surface.glsl)
+// A material layer: one GLSL function over a Surface (framework/plugin/shaders/surface.glsl,
+// part of the material SDK a layer includes: framework/plugin/shaders/material.glsl)
 // returning a vec4, plus what the framework needs to run it in either shading
 // path. The framework generates the decoupled compute variant (one shadel per
 // invocation) and the forward fragment variant (one pixel) from it.

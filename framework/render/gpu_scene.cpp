@@ -13,7 +13,7 @@
 namespace sg::render {
 namespace {
 
-// Mirrors MaterialBlock in materials/gltf-pbr/material.glsl (std140).
+// Mirrors MaterialBlock in framework/plugin/shaders/scene_material.glsl (std140).
 struct GpuTextureSlot {
   glm::vec4 row0, row1;
 };

@@ -1,7 +1,7 @@
 #pragma once
 // A scene uploaded for drawing: one vertex and one index buffer for all
 // meshes, textures with mips, samplers, and one descriptor set per material
-// (set 1 of the material shaders, see materials/gltf-pbr/material.glsl).
+// (set 1 of the material shaders, see framework/plugin/shaders/scene_material.glsl).
 #include <vector>
 
 #include <glm/glm.hpp>

@@ -1,10 +1,11 @@
 // glTF metallic-roughness shading of one surface point with the frame's
-// punctual lights and a hemispherical ambient term. Needs frame.glsl and
-// material.glsl included first. Textures are sampled with the surface's UV
-// derivatives (materialSample), whichever variant runs it.
+// punctual lights (the SDK's sgLightAt) and a hemispherical ambient term.
+// Textures are sampled with the surface's UV derivatives (materialSample),
+// whichever variant runs it.
 #ifndef SG_GLTF_PBR_GLSL
 #define SG_GLTF_PBR_GLSL
 
+#include <framework/plugin/shaders/material.glsl>
 #include "brdf.glsl"
 
 vec4 materialBaseColor(Surface s) {
@@ -38,26 +39,8 @@ vec3 shadeMetallicRoughness(Surface s, vec3 baseColor, float metallic, float rou
   vec3 V = normalize(frame.cameraPosition.xyz - s.position);
   vec3 color = vec3(0.0);
   for (uint i = 0u; i < frame.counts.x; ++i) {
-    Light light = frame.lights[i];
-    uint type = uint(light.positionType.w);
-    vec3 L;
-    float attenuation = 1.0;
-    if (type == SG_LIGHT_DIRECTIONAL) {
-      L = -light.directionRange.xyz;
-    } else {
-      vec3 toLight = light.positionType.xyz - s.position;
-      float d2 = max(dot(toLight, toLight), 1e-4);
-      L = toLight * inversesqrt(d2);
-      attenuation = 1.0 / d2;
-      float range = light.directionRange.w;
-      if (range > 0.0) attenuation *= clamp(1.0 - pow(d2 / (range * range), 2.0), 0.0, 1.0);
-      if (type == SG_LIGHT_SPOT) {
-        float cd = dot(light.directionRange.xyz, -L);
-        float t = clamp((cd - light.cone.x) * light.cone.y, 0.0, 1.0);
-        attenuation *= t * t;
-      }
-    }
-    color += brdfGltf(baseColor, metallic, roughness, N, V, L, light.color.rgb * attenuation);
+    LightSample light = sgLightAt(frame.lights[i], s.position);
+    color += brdfGltf(baseColor, metallic, roughness, N, V, light.direction, light.radiance);
   }
   // Environment: a sky-over-ground gradient (frame.ambient is the sky), diffuse
   // from the normal, specular from the reflection blurred towards the average

@@ -5,7 +5,7 @@
 // (composite misses: must be zero, the watertightness guarantee).
 #include <framework/render/shaders/object.glsl>
 #include <framework/shadel/shaders/decoupled.glsl>
-#include <passes/debug-views/debug_color.glsl>
+#include <framework/render/shaders/debug_color.glsl>
 
 layout(early_fragment_tests) in;
 layout(set = 0, binding = kBindLayerImage) uniform sampler2D layerImage;  // texelFetch only

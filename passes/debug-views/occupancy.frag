@@ -3,7 +3,7 @@
 // chunk. Marked chunks in their level's colour, allocated-but-unmarked chunks
 // dark grey, chunks that got no storage (overflow) white, the rest black.
 #include <framework/shadel/shaders/decoupled.glsl>
-#include "debug_color.glsl"
+#include <framework/render/shaders/debug_color.glsl>
 
 layout(push_constant, scalar) uniform Push { SgOccupancyPush push; };
 layout(location = 0) in vec2 inUv;

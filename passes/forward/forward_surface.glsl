@@ -7,7 +7,7 @@
 
 #include <framework/render/shaders/frame.glsl>
 #include <framework/render/shaders/object.glsl>
-#include <materials/gltf-pbr/material.glsl>
+#include <framework/plugin/shaders/material.glsl>
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;

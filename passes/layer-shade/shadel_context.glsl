@@ -16,7 +16,7 @@
 #include <framework/render/shaders/frame.glsl>
 #include <framework/shadel/shaders/decoupled.glsl>
 #include <framework/shadel/shaders/work.glsl>
-#include <materials/gltf-pbr/material.glsl>
+#include <framework/plugin/shaders/material.glsl>
 
 layout(local_size_x = 8, local_size_y = 8) in;
 

@@ -34,6 +34,47 @@ foreach(file bin/shadelgraph include/shadelgraph/plugin/plugin_api.hpp lib/cmake
   endif()
 endforeach()
 
+# The material SDK's GLSL is installed, to be read, by the paths layers
+# include: the umbrella and, transitively, every file it includes.
+set(glsl ${prefix}/include/shadelgraph/glsl)
+set(sdk_umbrella framework/plugin/shaders/material.glsl)
+if(NOT EXISTS ${glsl}/${sdk_umbrella})
+  message(FATAL_ERROR "the installed package has no material SDK: ${glsl}/${sdk_umbrella} is missing")
+endif()
+set(pending ${sdk_umbrella})
+set(seen "")
+while(pending)
+  list(POP_FRONT pending file)
+  if(file IN_LIST seen)
+    continue()
+  endif()
+  list(APPEND seen ${file})
+  # The includes GLSL sees: not those of a shared header's C++ half (#ifdef __cplusplus ... #else).
+  file(STRINGS ${glsl}/${file} lines REGEX "^[ \t]*#[ \t]*(include|ifdef|else|endif)")
+  set(includes "")
+  set(cpp OFF)
+  foreach(line IN LISTS lines)
+    if(line MATCHES "^[ \t]*#[ \t]*ifdef[ \t]+__cplusplus")
+      set(cpp ON)
+    elseif(line MATCHES "^[ \t]*#[ \t]*(else|endif)")
+      set(cpp OFF)
+    elseif(NOT cpp AND line MATCHES "include")
+      list(APPEND includes "${line}")
+    endif()
+  endforeach()
+  get_filename_component(dir ${file} DIRECTORY)
+  foreach(line IN LISTS includes)
+    string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*[<\"]([^>\"]+)[>\"].*" "\\1" path "${line}")
+    if(line MATCHES "\"" AND EXISTS ${glsl}/${dir}/${path})
+      cmake_path(SET path NORMALIZE "${dir}/${path}")  # quoted: beside the including file first
+    endif()
+    if(NOT EXISTS ${glsl}/${path})
+      message(FATAL_ERROR "the installed SDK file ${file} includes ${path}, which is not installed under ${glsl}")
+    endif()
+    list(APPEND pending ${path})
+  endforeach()
+endwhile()
+
 # 2. Build the example plugin out of tree, against the installed package only.
 run("configuring plugins/example-stripes" COMMAND ${CMAKE_COMMAND}
   -S ${SG_SOURCE_DIR}/plugins/example-stripes -B ${build} -G "${GENERATOR}"

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 
@@ -144,6 +145,71 @@ LayoutReport checkLayout(const fs::path& root) {
     const bool allowed = from == to || (a && b && b->level < a->level);
     if (!allowed) report.violations.push_back({include, from, to});
   }
+  return report;
+}
+
+namespace {
+
+bool isGlsl(const fs::path& p) {
+  const auto ext = p.extension().string();
+  return ext == ".glsl" || ext == ".comp" || ext == ".frag" || ext == ".vert";
+}
+
+// "plugins/example-x/" for a file under plugins/example-x/, else "".
+std::string examplePluginFolder(const std::string& file) {
+  if (file.rfind(kExamplePluginPrefix, 0) != 0) return {};
+  const auto slash = file.find('/', std::string(kExamplePluginPrefix).size());
+  return slash == std::string::npos ? std::string() : file.substr(0, slash + 1);
+}
+
+}  // namespace
+
+std::set<std::string> sdkFiles(const fs::path& root) {
+  std::set<std::string> sdk;
+  std::vector<std::string> pending = {kSdkUmbrella};
+  std::error_code ec;
+  if (!fs::is_regular_file(root / kSdkUmbrella, ec)) return sdk;
+  // Includes per file, read once (the SDK is under framework/, a floor scanIncludes reads).
+  std::map<std::string, std::vector<Include>> byFile;
+  for (Include& i : scanIncludes(root)) byFile[i.file].push_back(std::move(i));
+  while (!pending.empty()) {
+    const std::string file = pending.back();
+    pending.pop_back();
+    if (!sdk.insert(file).second) continue;
+    for (const Include& i : byFile[file])
+      if (auto target = resolveInclude(root, i)) pending.push_back(target->generic_string());
+  }
+  return sdk;
+}
+
+SdkReport checkExampleSdkIncludes(const fs::path& root) {
+  SdkReport report;
+  report.sdk = sdkFiles(root);
+  std::set<std::string> glslFiles;
+  for (const Include& i : scanIncludes(root)) {
+    const std::string own = examplePluginFolder(i.file);
+    if (own.empty() || !isGlsl(i.file)) continue;
+    glslFiles.insert(i.file);
+    ++report.checked;
+    const auto target = resolveInclude(root, i);
+    const std::string where = i.file + ":" + std::to_string(i.line) + " includes " + i.written();
+    if (!target) {
+      report.outside.push_back(where + " (resolves to no file; the SDK is <" + kSdkUmbrella + ">)");
+      continue;
+    }
+    const std::string t = target->generic_string();
+    if (report.sdk.count(t) || t.rfind(own, 0) == 0) continue;
+    report.outside.push_back(where + " (" + t + " is not in the material SDK: include <" + kSdkUmbrella +
+                             "> only)");
+  }
+  // Example GLSL files without any include count too (they were read).
+  std::error_code ec;
+  if (fs::is_directory(root / "plugins", ec))
+    for (const auto& entry : fs::recursive_directory_iterator(root / "plugins")) {
+      const std::string rel = entry.path().lexically_relative(root).generic_string();
+      if (entry.is_regular_file() && isGlsl(entry.path()) && !examplePluginFolder(rel).empty()) glslFiles.insert(rel);
+    }
+  report.exampleGlslFiles = glslFiles.size();
   return report;
 }
 

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -60,5 +61,24 @@ struct LayoutReport {
   size_t projectIncludes = 0;  // includes that resolved to a project file
 };
 LayoutReport checkLayout(const std::filesystem::path& root);
+
+// The material SDK (issue 12): the umbrella a layer author includes, and the
+// example plugins (plugins/example-*/), which include only it.
+inline constexpr const char* kSdkUmbrella = "framework/plugin/shaders/material.glsl";
+inline constexpr const char* kExamplePluginPrefix = "plugins/example-";
+
+// The umbrella and every project file it includes, transitively (relative to `root`).
+std::set<std::string> sdkFiles(const std::filesystem::path& root);
+
+struct SdkReport {
+  std::set<std::string> sdk;             // sdkFiles(root)
+  std::vector<std::string> outside;      // "file:line includes <x> (resolves to y, not the SDK)"
+  size_t exampleGlslFiles = 0;           // GLSL files read in the example plugins
+  size_t checked = 0;                    // their includes
+};
+// Every include in the example plugins' GLSL (.glsl/.comp/.frag/.vert) must
+// resolve to a file of the SDK or of the same plugin's folder; `outside` lists
+// the rest (an include that resolves to no file is listed too).
+SdkReport checkExampleSdkIncludes(const std::filesystem::path& root);
 
 }  // namespace sg::test::layout

@@ -101,5 +101,32 @@ TEST_F(IncludeScan, CommentsAndPlainTextAreNotIncludes) {
   EXPECT_EQ(checkLayout(dir.path()).projectIncludes, 4u);  // the made-up tree's own four
 }
 
+// The material SDK check: the umbrella's closure, and example plugins' GLSL
+// that includes the SDK, its own folder, or (listed) anything else.
+TEST_F(IncludeScan, ExamplePluginGlslMayIncludeOnlyTheSdkAndItself) {
+  dir.write("framework/plugin/shaders/material.glsl",
+            "#include <framework/render/shaders/frame.glsl>\n#include \"surface.glsl\"\n");
+  dir.write("framework/plugin/shaders/surface.glsl", "// Surface\n");
+  dir.write("materials/gltf-pbr/brdf.glsl", "// brdf\n");
+  dir.write("plugins/example-a/shaders/example-a/a.glsl",
+            "#include <framework/plugin/shaders/material.glsl>\n#include \"helper.glsl\"\n"
+            "#include <framework/render/shaders/frame.glsl>\n");
+  dir.write("plugins/example-a/shaders/example-a/helper.glsl", "// its own\n");
+  dir.write("plugins/example-b/shaders/b.frag",
+            "#include <materials/gltf-pbr/brdf.glsl>\n#include <passes/builtin_shaders.hpp>\n#include \"gone.glsl\"\n");
+  dir.write("plugins/example-b/b.cpp", "#include <materials/gltf-pbr/brdf.glsl>\n");  // C++: not judged here
+  const SdkReport report = checkExampleSdkIncludes(dir.path());
+  EXPECT_EQ(report.sdk, (std::set<std::string>{"framework/plugin/shaders/material.glsl",
+                                               "framework/plugin/shaders/surface.glsl",
+                                               "framework/render/shaders/frame.glsl"}));
+  EXPECT_EQ(report.exampleGlslFiles, 3u);
+  EXPECT_EQ(report.checked, 6u);
+  ASSERT_EQ(report.outside.size(), 3u);
+  EXPECT_EQ(report.outside[0],
+            "plugins/example-b/shaders/b.frag:1 includes <materials/gltf-pbr/brdf.glsl> "
+            "(materials/gltf-pbr/brdf.glsl is not in the material SDK: include <framework/plugin/shaders/material.glsl> only)");
+  EXPECT_EQ(report.outside[2].rfind("plugins/example-b/shaders/b.frag:3 includes \"gone.glsl\" (resolves to no file", 0), 0u);
+}
+
 }  // namespace
 }  // namespace sg::test::layout

@@ -2,7 +2,7 @@
 // Ambient occlusion from depth alone: the fraction of 16 samples on a disc
 // around the pixel (radius `radius` in world units, projected) whose surface
 // is in front of this one by less than the radius.
-#include <framework/render/shaders/frame.glsl>
+#include <framework/plugin/shaders/material.glsl>
 
 layout(set = 0, binding = 1) uniform sampler2D depth;
 layout(push_constant) uniform Constants { float radius; float strength; } pc;

@@ -1,15 +1,14 @@
 // example-stripes: diagonal stripes over the surface's first UV set, lit
 // with a Lambert term from the frame's lights plus the ambient.
 // It runs in both shading paths: decoupled (one shadel per invocation) and
-// forward (one pixel). The built-in GLSL it includes is embedded in
-// shadelgraph and found by these virtual paths; each has an include guard,
-// so it does not matter whether the generated shader included it already.
+// forward (one pixel). It includes only the material SDK, which is embedded
+// in shadelgraph (and installed, to read, under include/shadelgraph/glsl/);
+// its files have include guards, so it does not matter whether the generated
+// shader included them already.
 #ifndef EXAMPLE_STRIPES_GLSL
 #define EXAMPLE_STRIPES_GLSL
 
-#include <framework/render/shaders/frame.glsl>
-#include <materials/gltf-pbr/surface.glsl>
-#include <materials/gltf-pbr/brdf.glsl>
+#include <framework/plugin/shaders/material.glsl>
 
 #ifndef STRIPES_PER_UV
 #define STRIPES_PER_UV 12.0
@@ -40,18 +39,8 @@ vec4 stripes(Surface s) {
   vec3 N = s.normal;
   vec3 color = albedo * frame.ambient.rgb;
   for (uint i = 0u; i < frame.counts.x; ++i) {
-    Light light = frame.lights[i];
-    vec3 L;
-    float attenuation = 1.0;
-    if (uint(light.positionType.w) == SG_LIGHT_DIRECTIONAL) {
-      L = -light.directionRange.xyz;
-    } else {
-      vec3 toLight = light.positionType.xyz - s.position;
-      float d2 = max(dot(toLight, toLight), 1e-4);
-      L = toLight * inversesqrt(d2);
-      attenuation = 1.0 / d2;
-    }
-    color += albedo / kPi * light.color.rgb * attenuation * max(dot(N, L), 0.0);
+    LightSample light = sgLightAt(frame.lights[i], s.position);
+    color += albedo / SG_PI * light.radiance * max(dot(N, light.direction), 0.0);
   }
   return vec4(color, 1.0);
 }

@@ -1,9 +1,12 @@
-// A glTF metallic-roughness material bound as descriptor set 1 (GpuScene
-// writes one set per material). Mirrors GpuMaterial in gpu_scene.cpp.
-#ifndef SG_MATERIAL_GLSL
-#define SG_MATERIAL_GLSL
+// The scene material of the object being shaded: the glTF metallic-roughness
+// constants and textures GpuScene uploads, bound as descriptor set 1 (one set
+// per material), and helpers to sample its textures at a Surface with the
+// surface's derivatives. Mirrors GpuMaterial in framework/render/gpu_scene.cpp.
+// Part of the material SDK (framework/plugin/shaders/material.glsl).
+#ifndef SG_SCENE_MATERIAL_GLSL
+#define SG_SCENE_MATERIAL_GLSL
 
-#include "surface.glsl"
+#include <framework/plugin/shaders/surface.glsl>
 
 #define SG_ALPHA_OPAQUE 0u
 #define SG_ALPHA_MASK 1u

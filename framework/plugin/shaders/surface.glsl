@@ -3,6 +3,7 @@
 // shadel in the decoupled compute variant (from the triangle's barycentric
 // derivatives). Materials sample with textureGrad in both, so the two variants
 // run the same code on the same numbers.
+// Part of the material SDK (framework/plugin/shaders/material.glsl).
 #ifndef SG_SURFACE_GLSL
 #define SG_SURFACE_GLSL
 
