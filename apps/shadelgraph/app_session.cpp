@@ -3,8 +3,6 @@
 #include <cstdio>
 #include <filesystem>
 
-#include <CLI/CLI.hpp>
-
 #include <builtin_plugins.hpp>
 #include <builtin_shaders.hpp>
 #include <decoupled/decoupled_package.hpp>
@@ -13,29 +11,6 @@
 #include "scene_source.hpp"
 
 namespace sg::app {
-
-std::vector<std::string> MaterialArgs::paths() const {
-  std::vector<std::string> all = directories;
-  all.insert(all.end(), libraries.begin(), libraries.end());
-  return all;
-}
-
-void addMaterialOptions(CLI::App& command, MaterialArgs& args) {
-  // Existence is checked by the loader, whose messages name the plugin.
-  command.add_option("--plugin", args.libraries, "load a plugin library (.so); repeatable");
-  command.add_option("--plugin-dir", args.directories, "load every plugin (*.so) of a directory; repeatable");
-  command.add_option("--material", args.material,
-                     "material (layer stack) of every object, e.g. bumps, skin, marble, debug-uv-checker, or a "
-                     "plugin's (default: the scene's, else gltf-pbr)");
-}
-
-void addFrameOptions(CLI::App& command, FrameArgs& args) {
-  command.add_option("--frame-graph", args.frameGraph,
-                     "the frame: a registered frame's name (forward, decoupled, a plugin's) or a JSON frame "
-                     "description (docs/composing-frames.md); default: decoupled");
-  command.add_option("--object-mode", args.objectModes,
-                     "NAME=forward|decoupled|auto: one object's shading mode, over --mode; repeatable");
-}
 
 namespace {
 

@@ -16,27 +16,9 @@
 #include <shadelgraph/scene/camera_path.hpp>
 #include <shadelgraph/scene/scene.hpp>
 
-namespace CLI {
-class App;
-}
+#include "command_options.hpp"
 
 namespace sg::app {
-
-// --plugin FILE, --plugin-dir DIR (both repeatable) and --material NAME of the device commands.
-struct MaterialArgs {
-  std::vector<std::string> libraries, directories;
-  std::string material;  // every object's material; empty: the scene's
-  // What AppSession loads: the directories' plugins, then the named libraries.
-  std::vector<std::string> paths() const;
-};
-void addMaterialOptions(CLI::App& command, MaterialArgs& args);
-
-// --frame-graph FILE|NAME and --object-mode NAME=MODE (repeatable).
-struct FrameArgs {
-  std::string frameGraph;  // a built-in or plugin frame's name, or a JSON file; empty: "decoupled"
-  std::vector<std::string> objectModes;  // "object=forward|decoupled|auto"
-};
-void addFrameOptions(CLI::App& command, FrameArgs& args);
 
 struct AppSession {
   // mode: "" (each object's own), "forward", "decoupled" or "auto" for every object.

@@ -27,6 +27,7 @@
 
 #include "bench_graph.hpp"
 #include "bench_materials.hpp"
+#include "command_options.hpp"
 #include "commands.hpp"
 #include "option_checks.hpp"
 #include "output_file.hpp"
@@ -104,17 +105,6 @@ struct Config {
   bool decoupled = false;
   int filter = 2;
   std::optional<float> bias;  // decoupled: fixed bias; empty = adjuster
-};
-
-struct BenchArgs {
-  std::vector<std::string> scenes;
-  std::string out = "out/bench";
-  std::vector<std::string> sizes{"640x360"};
-  int repetitions = 5;
-  int flickerFrames = 12;
-  int referenceScale = 4;  // reference: this many samples per pixel side (4 -> 16 spp)
-  bool shimmer = false;    // also the shimmer case: the default scene's gold sphere close up
-  std::vector<std::string> materials;  // non-empty: the material sweep instead (bench_materials.cpp)
 };
 
 std::vector<Config> sweep() {
@@ -265,21 +255,6 @@ void writeCsv(const std::filesystem::path& file, const nlohmann::json& runs) {
   writeTextFile(file, "results", csv.str());
 }
 
-// Every option's value, before the device starts: no empty sweep, no reference beyond the size limit.
-void checkBenchArgs(const BenchArgs& args) {
-  requireInRange("--repetitions", args.repetitions, 1, 100000);
-  requireInRange("--flicker-frames", args.flickerFrames, 2, 10000);  // flicker is the change between frames
-  requireInRange("--reference-scale", args.referenceScale, 1, 8);
-  if (args.sizes.empty()) throw std::invalid_argument("--sizes: expected at least one WIDTHxHEIGHT");
-  for (const auto& size : args.sizes) {
-    uint32_t w = 0, h = 0;
-    parseSize("--sizes", size, w, h);
-    if (uint64_t(std::max(w, h)) * uint32_t(args.referenceScale) > kMaxOutputSide)
-      throw std::invalid_argument("--reference-scale " + std::to_string(args.referenceScale) + ": the reference of " +
-                                  size + " would exceed " + std::to_string(kMaxOutputSide) + " pixels a side");
-  }
-}
-
 void runBench(const BenchArgs& args) {
   checkBenchArgs(args);
   const std::filesystem::path out = args.out;
@@ -341,35 +316,13 @@ void runBench(const BenchArgs& args) {
 void addBenchCommand(CLI::App& app) {
   static BenchArgs args;
   auto* cmd = app.add_subcommand("bench", "Measure what accuracy costs in time: configurations side by side");
-  cmd->add_option("scenes", args.scenes, "scenes (default: the built-in scene)");
-  cmd->add_option("--out", args.out, "output directory")->capture_default_str();
-  cmd->add_option("--sizes", args.sizes, "output sizes, e.g. 640x360 1280x720 (each side 1 to " + std::to_string(kMaxOutputSide) + ")")->capture_default_str();
-  cmd->add_option("--repetitions", args.repetitions, "timed frames per configuration, 1 or more")->capture_default_str();
-  cmd->add_option("--flicker-frames", args.flickerFrames, "frames along the sub-pixel camera path, 2 or more")->capture_default_str();
-  cmd->add_option("--reference-scale", args.referenceScale, "reference samples per pixel side, 1 to 8")->capture_default_str();
-  auto* shimmer = cmd->add_flag("--shimmer", args.shimmer, "add the shimmer case (default scene's gold sphere, close up)");
-  cmd->add_option("--materials", args.materials,
-                  "instead of the configuration sweep: for each of these materials (comma-separated, e.g. "
-                  "gltf-pbr,bumps,skin,marble) forward and decoupled trilinear with the adjuster, against a forward "
-                  "reference of the same material; writes materials.json and materials.csv (--flicker-frames and "
-                  "--shimmer do not apply)")
-      ->delimiter(',')
-      ->excludes(shimmer);
+  static GraphBenchArgs graphArgs;
+  auto* graph = addBenchOptions(*cmd, args, graphArgs);
   cmd->callback([cmd] {
     if (cmd->got_subcommand("graph")) return;
     runBench(args);
   });
 
-  static GraphBenchArgs graphArgs;
-  auto* graph = cmd->add_subcommand("graph",
-                                    "Instead: declare + compile time of synthetic render graphs by size (no device); "
-                                    "writes graph.json and graph.csv into --out");
-  graph->add_option("--passes", graphArgs.passes, "graph sizes in passes, e.g. 10,100,1000")
-      ->delimiter(',')
-      ->capture_default_str();
-  graph->add_option("--graphs", graphArgs.graphs, "distinct graphs per size")->capture_default_str();
-  graph->add_option("--repetitions", graphArgs.repetitions, "timed rounds")->capture_default_str();
-  graph->fallthrough();  // --out belongs to bench
   graph->callback([] { runGraphBench(graphArgs, args.out); });
 }
 

@@ -14,6 +14,7 @@
 #include <shadelgraph/shadel/shadel_storage.hpp>
 
 #include "app_session.hpp"
+#include "command_options.hpp"
 #include "commands.hpp"
 #include "option_checks.hpp"
 #include "output_file.hpp"
@@ -23,27 +24,6 @@
 namespace sg::app {
 namespace {
 
-struct RenderArgs {
-  std::string scene;
-  std::string output = "out/render.png";
-  std::string size = "1280x720";
-  std::optional<int> camera;  // empty: the scene's first, else framing
-  std::optional<int> frame;   // a camera-path frame instead of a camera
-  int path = 0;
-  std::string mode;  // empty: each object's own mode (glTF extras, scene file; default auto)
-  std::string view = "final";
-  int filter = 2;
-  std::optional<double> bias;  // empty: the adjuster decides
-  double storage = 2.0;
-  std::string stats;
-  std::string trace;
-  int frames = 2;
-  std::string soakReport;
-  int soakEvery = 100;
-  bool noAliasing = false;
-  MaterialArgs materials;
-  FrameArgs frameGraph;
-};
 
 void printTable(const gpu::FrameTimings& t, uint64_t transientBytes, const gpu::MemoryTotals& memory) {
   std::printf("%-18s %-14s %10s %10s\n", "pass", "queue", "GPU ms", "CPU ms");
@@ -125,23 +105,6 @@ scene::Camera pathCamera(const AppSession& session, int path, int frame) {
   return camera;
 }
 
-// Option limits, named in --help and in the errors.
-constexpr double kMinStorage = shadel::kMinStorageFactor, kMaxStorage = 64.0;
-constexpr double kMaxAbsBias = 8.0;
-constexpr int kMaxFrames = 100'000'000;
-
-// Every option's value, before the scene is loaded or the device started.
-void checkRenderArgs(const RenderArgs& args) {
-  constexpr int kIntMax = std::numeric_limits<int>::max();
-  if (args.camera) requireInRange("--camera", *args.camera, 0, kIntMax);
-  if (args.frame) requireInRange("--frame", *args.frame, 0, kIntMax);
-  requireInRange("--path", args.path, 0, kIntMax);
-  requireInRange("--frames", args.frames, 1, kMaxFrames);
-  requireInRange("--soak-every", args.soakEvery, 1, kIntMax);
-  requireFiniteInRange("--storage", args.storage, kMinStorage, kMaxStorage);
-  if (args.bias) requireFiniteInRange("--bias", *args.bias, -kMaxAbsBias, kMaxAbsBias);
-}
-
 // The scene's camera `index`, named as the option that asked for it.
 void checkCameraIndex(const AppSession& session, int index) {
   if (size_t(index) >= session.scene.cameras.size())
@@ -210,44 +173,7 @@ void runRender(const RenderArgs& args) {
 void addRenderCommand(CLI::App& app) {
   static RenderArgs args;
   auto* cmd = app.add_subcommand("render", "Render one frame of a scene to a PNG");
-  cmd->add_option("scene", args.scene, "a .gltf/.glb/.json scene (default: the built-in scene)");
-  cmd->add_option("-o,--output", args.output, "PNG to write")->capture_default_str();
-  cmd->add_option("--size", args.size,
-                  "WIDTHxHEIGHT, each side 1 to " + std::to_string(kMaxOutputSide))
-      ->capture_default_str();
-  auto* camera = cmd->add_option_function<int>(
-      "--camera", [](const int& index) { args.camera = index; },
-      "camera index of the scene, 0 or more (default: its first, else framing)");
-  cmd->add_option_function<int>(
-         "--frame", [](const int& frame) { args.frame = frame; },
-         "frame along a camera path of the scene file (30 per second), 0 or more")
-      ->excludes(camera);
-  cmd->add_option("--path", args.path, "which camera path --frame follows")->capture_default_str();
-  cmd->add_option("--mode", args.mode, "shading of every object: forward, decoupled, auto (default: each object's own)")
-      ->check(CLI::IsMember({"forward", "decoupled", "auto"}));
-  cmd->add_option("--filter", args.filter, "decoupled composite filter: 0 point, 1 bilinear, 2 trilinear")
-      ->check(CLI::Range(0, 2))
-      ->capture_default_str();
-  cmd->add_option("--view", args.view, "final, or a debug view of decoupled shading: level, occupancy, sheet")
-      ->check(CLI::IsMember({"final", "level", "occupancy", "sheet"}))
-      ->capture_default_str();
-  cmd->add_option_function<double>(
-      "--bias", [](const double& bias) { args.bias = bias; },
-      "fixed global level bias, -8 to 8; below 0 finer shadels, above 0 coarser (default: the shade-space adjuster "
-      "decides)");
-  cmd->add_option("--storage", args.storage, "shade storage in shadels per output pixel, 1.25 to 64")
-      ->capture_default_str();
-  cmd->add_option("--stats", args.stats, "write frame statistics as JSON");
-  cmd->add_option("--trace", args.trace, "write per-pass timings as a Chrome trace (Perfetto)");
-  cmd->add_option("--frames", args.frames, "frames to render; the last is reported")->capture_default_str();
-  cmd->add_option("--soak-report", args.soakReport,
-                  "write CSV rows (frame, rss_mib, frame_ms, gpu_ms: resident memory, and median frame times since the "
-                  "last row) every --soak-every frames, and print RSS and frame time after warm-up (the first tenth "
-                  "of --frames) against the end");
-  cmd->add_option("--soak-every", args.soakEvery, "frames per --soak-report row")->capture_default_str();
-  cmd->add_flag("--no-aliasing", args.noAliasing, "give every transient its own memory");
-  addMaterialOptions(*cmd, args.materials);
-  addFrameOptions(*cmd, args.frameGraph);
+  addRenderOptions(*cmd, args);
   cmd->callback([] { runRender(args); });
 }
 

@@ -1,9 +1,8 @@
 // libFuzzer target: command-line parsing. The input is an argument vector,
 // one argument per line. It builds the CLI11 app as apps/shadelgraph/main.cpp
-// does and parses with CLI11's real option handling; of the subcommands only
-// 'inspect' is Vulkan-free, so it is the one registered and run (the device
-// commands' option sets live in the same files as their device code; see
-// README.md). A bare file name of the glTF seed corpus ('inspect Box.glb')
+// does and parses with CLI11's real option handling: 'inspect' runs; the
+// device commands (render, graph, bench) get their real option sets and
+// checks (command_options.cpp) and stop before they would start a device. A bare file name of the glTF seed corpus ('inspect Box.glb')
 // names that model. Contract: CLI::ParseError or std::exception
 // (main.cpp turns both into one line and exit 1); nothing else.
 #include <CLI/CLI.hpp>
@@ -14,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "command_options.hpp"
 #include "commands.hpp"
 
 namespace {
@@ -66,6 +66,23 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   app.set_version_flag("--version", "0");
   app.require_subcommand(1);
   sg::app::addInspectCommand(app);
+  // The device commands with their real option sets and checks
+  // (command_options.cpp); what they would then run needs a device.
+  sg::app::RenderArgs render;
+  auto* renderCommand = app.add_subcommand("render");
+  sg::app::addRenderOptions(*renderCommand, render);
+  renderCommand->callback([&] { sg::app::checkRenderArgs(render); });
+  sg::app::GraphArgs graph;
+  auto* graphCommand = app.add_subcommand("graph");
+  sg::app::addGraphOptions(*graphCommand, graph);
+  graphCommand->callback([&] { sg::app::checkGraphArgs(graph); });
+  sg::app::BenchArgs bench;
+  sg::app::GraphBenchArgs graphBench;
+  auto* benchCommand = app.add_subcommand("bench");
+  sg::app::addBenchOptions(*benchCommand, bench, graphBench);
+  benchCommand->callback([&] {
+    if (!benchCommand->got_subcommand("graph")) sg::app::checkBenchArgs(bench);
+  });
   try {
     app.parse(static_cast<int>(argv.size()), argv.data());
   } catch (const CLI::ParseError&) {

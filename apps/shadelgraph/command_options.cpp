@@ -1,0 +1,157 @@
+#include "command_options.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+#include <shadelgraph/shadel/shadel_storage.hpp>
+
+#include "option_checks.hpp"
+
+namespace sg::app {
+namespace {
+
+// Option limits, named in --help and in the errors.
+constexpr double kMinStorage = shadel::kMinStorageFactor, kMaxStorage = 64.0;
+constexpr double kMaxAbsBias = 8.0;
+constexpr int kMaxFrames = 100'000'000;
+
+}  // namespace
+
+std::vector<std::string> MaterialArgs::paths() const {
+  std::vector<std::string> all = directories;
+  all.insert(all.end(), libraries.begin(), libraries.end());
+  return all;
+}
+
+void addMaterialOptions(CLI::App& command, MaterialArgs& args) {
+  // Existence is checked by the loader, whose messages name the plugin.
+  command.add_option("--plugin", args.libraries, "load a plugin library (.so); repeatable");
+  command.add_option("--plugin-dir", args.directories, "load every plugin (*.so) of a directory; repeatable");
+  command.add_option("--material", args.material,
+                     "material (layer stack) of every object, e.g. bumps, skin, marble, debug-uv-checker, or a "
+                     "plugin's (default: the scene's, else gltf-pbr)");
+}
+
+void addFrameOptions(CLI::App& command, FrameArgs& args) {
+  command.add_option("--frame-graph", args.frameGraph,
+                     "the frame: a registered frame's name (forward, decoupled, a plugin's) or a JSON frame "
+                     "description (docs/composing-frames.md); default: decoupled");
+  command.add_option("--object-mode", args.objectModes,
+                     "NAME=forward|decoupled|auto: one object's shading mode, over --mode; repeatable");
+}
+
+void addRenderOptions(CLI::App& command, RenderArgs& args) {
+  command.add_option("scene", args.scene, "a .gltf/.glb/.json scene (default: the built-in scene)");
+  command.add_option("-o,--output", args.output, "PNG to write")->capture_default_str();
+  command.add_option("--size", args.size,
+                  "WIDTHxHEIGHT, each side 1 to " + std::to_string(kMaxOutputSide))
+      ->capture_default_str();
+  auto* camera = command.add_option_function<int>(
+      "--camera", [&args](const int& index) { args.camera = index; },
+      "camera index of the scene, 0 or more (default: its first, else framing)");
+  command.add_option_function<int>(
+         "--frame", [&args](const int& frame) { args.frame = frame; },
+         "frame along a camera path of the scene file (30 per second), 0 or more")
+      ->excludes(camera);
+  command.add_option("--path", args.path, "which camera path --frame follows")->capture_default_str();
+  command.add_option("--mode", args.mode, "shading of every object: forward, decoupled, auto (default: each object's own)")
+      ->check(CLI::IsMember({"forward", "decoupled", "auto"}));
+  command.add_option("--filter", args.filter, "decoupled composite filter: 0 point, 1 bilinear, 2 trilinear")
+      ->check(CLI::Range(0, 2))
+      ->capture_default_str();
+  command.add_option("--view", args.view, "final, or a debug view of decoupled shading: level, occupancy, sheet")
+      ->check(CLI::IsMember({"final", "level", "occupancy", "sheet"}))
+      ->capture_default_str();
+  command.add_option_function<double>(
+      "--bias", [&args](const double& bias) { args.bias = bias; },
+      "fixed global level bias, -8 to 8; below 0 finer shadels, above 0 coarser (default: the shade-space adjuster "
+      "decides)");
+  command.add_option("--storage", args.storage, "shade storage in shadels per output pixel, 1.25 to 64")
+      ->capture_default_str();
+  command.add_option("--stats", args.stats, "write frame statistics as JSON");
+  command.add_option("--trace", args.trace, "write per-pass timings as a Chrome trace (Perfetto)");
+  command.add_option("--frames", args.frames, "frames to render; the last is reported")->capture_default_str();
+  command.add_option("--soak-report", args.soakReport,
+                  "write CSV rows (frame, rss_mib, frame_ms, gpu_ms: resident memory, and median frame times since the "
+                  "last row) every --soak-every frames, and print RSS and frame time after warm-up (the first tenth "
+                  "of --frames) against the end");
+  command.add_option("--soak-every", args.soakEvery, "frames per --soak-report row")->capture_default_str();
+  command.add_flag("--no-aliasing", args.noAliasing, "give every transient its own memory");
+  addMaterialOptions(command, args.materials);
+  addFrameOptions(command, args.frameGraph);
+}
+
+void checkRenderArgs(const RenderArgs& args) {
+  uint32_t width = 0, height = 0;
+  parseSize("--size", args.size, width, height);
+  constexpr int kIntMax = std::numeric_limits<int>::max();
+  if (args.camera) requireInRange("--camera", *args.camera, 0, kIntMax);
+  if (args.frame) requireInRange("--frame", *args.frame, 0, kIntMax);
+  requireInRange("--path", args.path, 0, kIntMax);
+  requireInRange("--frames", args.frames, 1, kMaxFrames);
+  requireInRange("--soak-every", args.soakEvery, 1, kIntMax);
+  requireFiniteInRange("--storage", args.storage, kMinStorage, kMaxStorage);
+  if (args.bias) requireFiniteInRange("--bias", *args.bias, -kMaxAbsBias, kMaxAbsBias);
+}
+
+void addGraphOptions(CLI::App& command, GraphArgs& args) {
+  command.add_option("scene", args.scene, "a .gltf/.glb/.json scene (default: the built-in scene)");
+  command.add_option("--size", args.size, "WIDTHxHEIGHT, each side 1 to " + std::to_string(kMaxOutputSide))
+      ->capture_default_str();
+  command.add_option("--mode", args.mode, "shading of every object: forward, decoupled, auto (default: each object's own)")
+      ->check(CLI::IsMember({"forward", "decoupled", "auto"}));
+  auto* dot = command.add_flag("--dot", args.dot, "Graphviz DOT");
+  command.add_flag("--json", args.json, "JSON")->excludes(dot);
+  command.add_flag("--no-aliasing", args.noAliasing, "give every transient its own memory");
+  addMaterialOptions(command, args.materials);
+  addFrameOptions(command, args.frame);
+}
+
+void checkGraphArgs(const GraphArgs& args) {
+  uint32_t width = 0, height = 0;
+  parseSize("--size", args.size, width, height);
+}
+
+CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& graphArgs) {
+  command.add_option("scenes", args.scenes, "scenes (default: the built-in scene)");
+  command.add_option("--out", args.out, "output directory")->capture_default_str();
+  command.add_option("--sizes", args.sizes, "output sizes, e.g. 640x360 1280x720 (each side 1 to " + std::to_string(kMaxOutputSide) + ")")->capture_default_str();
+  command.add_option("--repetitions", args.repetitions, "timed frames per configuration, 1 or more")->capture_default_str();
+  command.add_option("--flicker-frames", args.flickerFrames, "frames along the sub-pixel camera path, 2 or more")->capture_default_str();
+  command.add_option("--reference-scale", args.referenceScale, "reference samples per pixel side, 1 to 8")->capture_default_str();
+  auto* shimmer = command.add_flag("--shimmer", args.shimmer, "add the shimmer case (default scene's gold sphere, close up)");
+  command.add_option("--materials", args.materials,
+                  "instead of the configuration sweep: for each of these materials (comma-separated, e.g. "
+                  "gltf-pbr,bumps,skin,marble) forward and decoupled trilinear with the adjuster, against a forward "
+                  "reference of the same material; writes materials.json and materials.csv (--flicker-frames and "
+                  "--shimmer do not apply)")
+      ->delimiter(',')
+      ->excludes(shimmer);
+  auto* graph = command.add_subcommand("graph",
+                                       "Instead: declare + compile time of synthetic render graphs by size (no device); "
+                                       "writes graph.json and graph.csv into --out");
+  graph->add_option("--passes", graphArgs.passes, "graph sizes in passes, e.g. 10,100,1000")
+      ->delimiter(',')
+      ->capture_default_str();
+  graph->add_option("--graphs", graphArgs.graphs, "distinct graphs per size")->capture_default_str();
+  graph->add_option("--repetitions", graphArgs.repetitions, "timed rounds")->capture_default_str();
+  graph->fallthrough();  // --out belongs to bench
+  return graph;
+}
+
+void checkBenchArgs(const BenchArgs& args) {
+  requireInRange("--repetitions", args.repetitions, 1, 100000);
+  requireInRange("--flicker-frames", args.flickerFrames, 2, 10000);  // flicker is the change between frames
+  requireInRange("--reference-scale", args.referenceScale, 1, 8);
+  if (args.sizes.empty()) throw std::invalid_argument("--sizes: expected at least one WIDTHxHEIGHT");
+  for (const auto& size : args.sizes) {
+    uint32_t w = 0, h = 0;
+    parseSize("--sizes", size, w, h);
+    if (uint64_t(std::max(w, h)) * uint32_t(args.referenceScale) > kMaxOutputSide)
+      throw std::invalid_argument("--reference-scale " + std::to_string(args.referenceScale) + ": the reference of " +
+                                  size + " would exceed " + std::to_string(kMaxOutputSide) + " pixels a side");
+  }
+}
+
+}  // namespace sg::app

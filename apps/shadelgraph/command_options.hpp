@@ -1,0 +1,83 @@
+#pragma once
+// The options of the device commands (render, graph, bench) and their checks,
+// apart from the code that runs them: nothing here touches Vulkan, so the CLI
+// fuzz target (tests/fuzz/fuzz_cli.cpp) parses and checks exactly what the
+// app does without a device.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "bench_graph.hpp"
+
+namespace sg::app {
+
+// --plugin FILE, --plugin-dir DIR (both repeatable) and --material NAME of the device commands.
+struct MaterialArgs {
+  std::vector<std::string> libraries, directories;
+  std::string material;  // every object's material; empty: the scene's
+  // What AppSession loads: the directories' plugins, then the named libraries.
+  std::vector<std::string> paths() const;
+};
+void addMaterialOptions(CLI::App& command, MaterialArgs& args);
+
+// --frame-graph FILE|NAME and --object-mode NAME=MODE (repeatable).
+struct FrameArgs {
+  std::string frameGraph;  // a built-in or plugin frame's name, or a JSON file; empty: "decoupled"
+  std::vector<std::string> objectModes;  // "object=forward|decoupled|auto"
+};
+void addFrameOptions(CLI::App& command, FrameArgs& args);
+
+struct RenderArgs {
+  std::string scene;
+  std::string output = "out/render.png";
+  std::string size = "1280x720";
+  std::optional<int> camera;  // empty: the scene's first, else framing
+  std::optional<int> frame;   // a camera-path frame instead of a camera
+  int path = 0;
+  std::string mode;  // empty: each object's own mode (glTF extras, scene file; default auto)
+  std::string view = "final";
+  int filter = 2;
+  std::optional<double> bias;  // empty: the adjuster decides
+  double storage = 2.0;
+  std::string stats;
+  std::string trace;
+  int frames = 2;
+  std::string soakReport;
+  int soakEvery = 100;
+  bool noAliasing = false;
+  MaterialArgs materials;
+  FrameArgs frameGraph;
+};
+void addRenderOptions(CLI::App& command, RenderArgs& args);
+// Every option's value, before the scene is loaded or the device started.
+void checkRenderArgs(const RenderArgs& args);
+
+struct GraphArgs {
+  std::string scene;
+  std::string size = "1280x720";
+  std::string mode;
+  bool dot = false, json = false, noAliasing = false;
+  MaterialArgs materials;
+  FrameArgs frame;
+};
+void addGraphOptions(CLI::App& command, GraphArgs& args);
+void checkGraphArgs(const GraphArgs& args);
+
+struct BenchArgs {
+  std::vector<std::string> scenes;
+  std::string out = "out/bench";
+  std::vector<std::string> sizes{"640x360"};
+  int repetitions = 5;
+  int flickerFrames = 12;
+  int referenceScale = 4;  // reference: this many samples per pixel side (4 -> 16 spp)
+  bool shimmer = false;    // also the shimmer case: the default scene's gold sphere close up
+  std::vector<std::string> materials;  // non-empty: the material sweep instead (bench_materials.cpp)
+};
+// bench's options, and its subcommand "graph" (returned) with graphArgs'.
+CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& graphArgs);
+// Every option's value, before the device starts: no empty sweep, no reference beyond the size limit.
+void checkBenchArgs(const BenchArgs& args);
+
+}  // namespace sg::app
