@@ -16,6 +16,15 @@ constexpr double kMinStorage = shadel::kMinStorageFactor, kMaxStorage = 64.0;
 constexpr double kMaxAbsBias = 8.0;
 constexpr int kMaxFrames = 100'000'000;
 
+// The scene, output size and shading mode, as render and graph take them.
+void addSceneOptions(CLI::App& command, std::string& scene, std::string& size, std::string& mode) {
+  command.add_option("scene", scene, "a .gltf/.glb/.json scene (default: the built-in scene)");
+  command.add_option("--size", size, "WIDTHxHEIGHT, each side 1 to " + std::to_string(kMaxOutputSide))
+      ->capture_default_str();
+  command.add_option("--mode", mode, "shading of every object: forward, decoupled, auto (default: each object's own)")
+      ->check(CLI::IsMember({"forward", "decoupled", "auto"}));
+}
+
 }  // namespace
 
 std::vector<std::string> MaterialArgs::paths() const {
@@ -42,11 +51,8 @@ void addFrameOptions(CLI::App& command, FrameArgs& args) {
 }
 
 void addRenderOptions(CLI::App& command, RenderArgs& args) {
-  command.add_option("scene", args.scene, "a .gltf/.glb/.json scene (default: the built-in scene)");
+  addSceneOptions(command, args.scene, args.size, args.mode);
   command.add_option("-o,--output", args.output, "PNG to write")->capture_default_str();
-  command.add_option("--size", args.size,
-                  "WIDTHxHEIGHT, each side 1 to " + std::to_string(kMaxOutputSide))
-      ->capture_default_str();
   auto* camera = command.add_option_function<int>(
       "--camera", [&args](const int& index) { args.camera = index; },
       "camera index of the scene, 0 or more (default: its first, else framing)");
@@ -55,8 +61,6 @@ void addRenderOptions(CLI::App& command, RenderArgs& args) {
          "frame along a camera path of the scene file (30 per second), 0 or more")
       ->excludes(camera);
   command.add_option("--path", args.path, "which camera path --frame follows")->capture_default_str();
-  command.add_option("--mode", args.mode, "shading of every object: forward, decoupled, auto (default: each object's own)")
-      ->check(CLI::IsMember({"forward", "decoupled", "auto"}));
   command.add_option("--filter", args.filter, "decoupled composite filter: 0 point, 1 bilinear, 2 trilinear")
       ->check(CLI::Range(0, 2))
       ->capture_default_str();
@@ -96,11 +100,7 @@ void checkRenderArgs(const RenderArgs& args) {
 }
 
 void addGraphOptions(CLI::App& command, GraphArgs& args) {
-  command.add_option("scene", args.scene, "a .gltf/.glb/.json scene (default: the built-in scene)");
-  command.add_option("--size", args.size, "WIDTHxHEIGHT, each side 1 to " + std::to_string(kMaxOutputSide))
-      ->capture_default_str();
-  command.add_option("--mode", args.mode, "shading of every object: forward, decoupled, auto (default: each object's own)")
-      ->check(CLI::IsMember({"forward", "decoupled", "auto"}));
+  addSceneOptions(command, args.scene, args.size, args.mode);
   auto* dot = command.add_flag("--dot", args.dot, "Graphviz DOT");
   command.add_flag("--json", args.json, "JSON")->excludes(dot);
   command.add_flag("--no-aliasing", args.noAliasing, "give every transient its own memory");
