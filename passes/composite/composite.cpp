@@ -1,6 +1,8 @@
 #include "composite.hpp"
 
 #include <array>
+#include <stdexcept>
+#include <string>
 
 #include <shadelgraph/gpu/pass_context.hpp>
 
@@ -10,9 +12,10 @@ constexpr std::array kBindings{kBindFrame, kBindParams, kBindObjects,  kBindShad
                                kBindLevelRects, kBindRemap, kBindCounters, kBindLayerImage};
 }  // namespace
 
-gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView) {
-  std::vector<std::pair<std::string, std::string>> defines{{"SG_COMPOSITE_FILTER", std::to_string(filter)}};
+gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView, bool baseline) {
+  std::vector<std::pair<std::string, std::string>> defines{filterDefine(filter)};
   if (levelView) defines.emplace_back("SG_VIEW_LEVEL", "1");
+  if (baseline) defines.emplace_back("SG_COMPOSITE_BASELINE", "1");
   return {.vertex = {.path = "passes/composite/composite.vert"},
           .fragment = {.path = "passes/composite/composite.frag", .defines = defines},
           .layout = decoupledLayout(kBindings, false, sizeof(render::ObjectConstants)),
@@ -25,6 +28,11 @@ gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView) {
 
 graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle color,
                                    graph::ResourceHandle depth) {
+  // Composite reads exactly the footprint shadel-mark marked for its filter:
+  // any other filter would read unmarked shadels (misses).
+  if (frame.markedFilter >= 0 && frame.markedFilter != frame.filter)
+    throw std::logic_error("composite filter " + std::to_string(frame.filter) + " differs from shadel-mark's " +
+                           std::to_string(frame.markedFilter));
   auto& pass = graph.addPass("composite", graph::QueueClass::Graphics);
   pass.read(color, graph::Access::ColorAttachmentRead);
   pass.read(depth, graph::Access::DepthRead);
@@ -33,9 +41,10 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);  // misses
   color = pass.write(color, graph::Access::ColorAttachment);
   pass.execute([frame, color, depth](PassContext& ctx) {
-    const std::string variant = std::to_string(frame.filter) + (frame.levelView ? "/level" : "");
-    const auto& pipeline =
-        ctx.device().pipeline("composite/" + variant, [&] { return compositePipeline(frame.filter, frame.levelView); });
+    const std::string variant =
+        std::to_string(frame.filter) + (frame.levelView ? "/level" : "") + (frame.baseline ? "/baseline" : "");
+    const auto& pipeline = ctx.device().pipeline(
+        "composite/" + variant, [&] { return compositePipeline(frame.filter, frame.levelView, frame.baseline); });
     ctx.beginRendering({ColorTarget{color}}, DepthTarget{depth, {}, true}, true);
     bindDecoupled(ctx, pipeline, frame, kBindings);
     frame.view.scene.bindGeometry(ctx.cmd());

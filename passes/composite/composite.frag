@@ -12,16 +12,15 @@ layout(set = 0, binding = kBindLayerImage) uniform sampler2D layerImage;  // tex
 layout(location = 0) in vec2 inShadingUv;
 layout(location = 0) out vec4 outColor;
 
-// SG_COMPOSITE_FILTER (a define from the pass): 0 point (nearest shadel of
-// the fine level), 1 bilinear (fine level only), 2 trilinear.
-#ifndef SG_COMPOSITE_FILTER
-#define SG_COMPOSITE_FILTER 2
+// SG_FILTER (shadel_level.glsl's SG_FILTER_*): the filter, the same define
+// shadel-mark is compiled with, so composite reads only what mark marked.
+#ifndef SG_FILTER
+#error "SG_FILTER: the composite filter (passes::filterDefine)"
 #endif
-const uint kFilter = SG_COMPOSITE_FILTER;
+const uint kFilter = SG_FILTER;
 
-vec4 fetchShadel(uvec2 shadel) {
-  SgShadelAddress a = sgShadelAddress(shadel, params.entriesPerSideLog2);
-  uint physical = sgPhysicalChunk(remap[a.entryIndex], a.chunkIndex);
+vec4 fetchFrom(SgRemapEntry entry, SgShadelAddress a) {
+  uint physical = sgPhysicalChunk(entry, a.chunkIndex);
   if (physical == SG_INVALID_CHUNK) {
     atomicAdd(counters.compositeMisses, 1u);
     return vec4(1.0, 0.0, 1.0, 1.0);  // magenta: visible if it ever happens
@@ -29,15 +28,35 @@ vec4 fetchShadel(uvec2 shadel) {
   return texelFetch(layerImage, ivec2(sgStorageTexel(physical, a.texelIndex, params.storageWidthChunks)), 0);
 }
 
+vec4 fetchShadel(uvec2 shadel) {
+  SgShadelAddress a = sgShadelAddress(shadel, params.entriesPerSideLog2);
+  return fetchFrom(remap[a.entryIndex], a);
+}
+
 vec4 filterLevel(uint level) {
   SgLevelRect rect = sgLevelRect(object.objectId, level);
   SgBilinearTaps taps = sgBilinearTaps(inShadingUv, rect.size);
-  if (kFilter == 0u) {
-    uvec2 nearest = uvec2(mix(vec2(taps.lo), vec2(taps.hi), greaterThanEqual(taps.weight, vec2(0.5))));
-    return fetchShadel(rect.origin + nearest);
-  }
+  if (kFilter == SG_FILTER_POINT) return fetchShadel(rect.origin + sgNearestTap(taps));
+#ifdef SG_COMPOSITE_BASELINE
+  // Before issue 14 (bench --baseline): a remap read per tap.
   vec4 c00 = fetchShadel(sgFootprintShadel(rect, taps, 0u)), c10 = fetchShadel(sgFootprintShadel(rect, taps, 1u));
   vec4 c01 = fetchShadel(sgFootprintShadel(rect, taps, 2u)), c11 = fetchShadel(sgFootprintShadel(rect, taps, 3u));
+#else
+  // The 2x2 taps share one remap entry unless they straddle a 64-shadel
+  // entry edge (a few percent of pixels): read it once, the others only then.
+  SgShadelAddress a00 = sgShadelAddress(sgFootprintShadel(rect, taps, 0u), params.entriesPerSideLog2);
+  SgShadelAddress a10 = sgShadelAddress(sgFootprintShadel(rect, taps, 1u), params.entriesPerSideLog2);
+  SgShadelAddress a01 = sgShadelAddress(sgFootprintShadel(rect, taps, 2u), params.entriesPerSideLog2);
+  SgShadelAddress a11 = sgShadelAddress(sgFootprintShadel(rect, taps, 3u), params.entriesPerSideLog2);
+  SgRemapEntry e00 = remap[a00.entryIndex];
+  SgRemapEntry e10 = e00, e01 = e00, e11 = e00;
+  if (a11.entryIndex != a00.entryIndex) {  // (lo, lo) and (hi, hi) in one entry: so are all four
+    e10 = remap[a10.entryIndex];
+    e01 = remap[a01.entryIndex];
+    e11 = remap[a11.entryIndex];
+  }
+  vec4 c00 = fetchFrom(e00, a00), c10 = fetchFrom(e10, a10), c01 = fetchFrom(e01, a01), c11 = fetchFrom(e11, a11);
+#endif
   return mix(mix(c00, c10, taps.weight.x), mix(c01, c11, taps.weight.x), taps.weight.y);
 }
 
@@ -54,7 +73,7 @@ void main() {
   outColor = vec4(sgLevelColor(level) * (0.55 + 0.45 * clamp(dot(shaded.rgb, vec3(0.3, 0.5, 0.2)), 0.0, 1.0)), 1.0);
 #else
   vec4 color = filterLevel(sel.fine);
-  if (kFilter == 2u && sel.coarse != sel.fine) color = mix(color, filterLevel(sel.coarse), sel.blend);
+  if (kFilter == SG_FILTER_TRILINEAR && sel.coarse != sel.fine) color = mix(color, filterLevel(sel.coarse), sel.blend);
   outColor = vec4(color.rgb, 1.0);
 #endif
 }

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <random>
+#include <tuple>
 #include <set>
 
 #include <shadelgraph/image/metrics.hpp>
@@ -77,11 +78,14 @@ TEST_P(DecoupledScenes, AgreesWithForward) {
 
 // Watertightness: every shadel composite reads was marked and stored, from
 // 100 random cameras: close-ups (inside 0.6x the bounding radius), far views
-// (up to 25x), grazing elevations and narrow to wide fields of view.
-TEST_P(DecoupledScenes, NoCompositeMissesFromRandomCameras) {
-  const std::string name = GetParam();
-  LOAD_OR_SKIP(loaded, name);
-  Session d(*loaded, scene::ShadingMode::Decoupled, {.storageChunks = 16384});
+// (up to 25x), grazing elevations and narrow to wide fields of view. For each
+// filter: shadel-mark marks only that filter's footprint, so each must stay
+// watertight on its own. Returns the chunks marked over all cameras.
+uint64_t expectNoMissesFromRandomCameras(const scene::Scene& loaded, const std::string& name,
+                                         plugins::DecoupledSettings settings, const plugin::Registry& registry,
+                                         const std::string& frame = "decoupled") {
+  settings.storageChunks = 16384;
+  Session d(loaded, scene::ShadingMode::Decoupled, settings, registry, frame);
   const scene::Bounds bounds = scene::worldBounds(d.scene());
   std::mt19937 rng(1234);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
@@ -105,12 +109,48 @@ TEST_P(DecoupledScenes, NoCompositeMissesFromRandomCameras) {
   }
   EXPECT_GT(marked, 0u);
   EXPECT_EQ(overflow, 0u) << "the test's storage must be ample, or misses are expected";
-  EXPECT_EQ(misses, 0u) << name;
+  EXPECT_EQ(misses, 0u) << name << " filter " << settings.filter;
+  return marked;
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, DecoupledScenes,
                          ::testing::Values("DefaultScene", "Suzanne", "Duck", "DamagedHelmet"),
                          [](const auto& testInfo) { return std::string(testInfo.param); });
+
+class DecoupledFilters : public ::testing::TestWithParam<std::tuple<const char*, int>> {};
+
+std::string filterTestName(const std::tuple<const char*, int>& param) {
+  static const char* filters[] = {"Point", "Bilinear", "Trilinear"};
+  return std::string(std::get<0>(param)) + filters[std::get<1>(param)];
+}
+
+TEST_P(DecoupledFilters, NoCompositeMissesFromRandomCameras) {
+  const auto [scene, filter] = GetParam();
+  LOAD_OR_SKIP(loaded, scene);
+  expectNoMissesFromRandomCameras(*loaded, scene, {.filter = filter}, plugins::builtinRegistry());
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, DecoupledFilters,
+                         ::testing::Combine(::testing::Values("DefaultScene", "Suzanne", "Duck", "DamagedHelmet"),
+                                            ::testing::Values(0, 1, 2)),
+                         [](const auto& testInfo) { return filterTestName(testInfo.param); });
+
+// composite's `filter` parameter (a frame's) overrides the renderer's setting
+// for both passes: shadel-mark marks that filter's footprint (fewer chunks
+// for point than for trilinear) and composite still misses nothing.
+TEST(DecoupledFilterParameter, ShadelMarkFollowsComposite) {
+  const scene::Scene loaded = scene::makeDefaultScene();
+  uint64_t marked[3] = {};
+  for (int filter : {0, 2}) {
+    plugin::Registry registry = plugins::builtinRegistry();
+    registry.addFrame({.name = "decoupled-filter", .base = "decoupled",
+                       .parameters = {{"composite", nlohmann::json{{"filter", filter}}}}});
+    // The setting says the other filter: the frame's parameter wins for both passes.
+    marked[filter] = expectNoMissesFromRandomCameras(loaded, "DefaultScene", {.filter = 2 - filter}, registry,
+                                                     "decoupled-filter");
+  }
+  EXPECT_LT(marked[0], marked[2]) << "point marks one shadel at one level, trilinear eight at two";
+}
 
 // Mode auto: an object with a unique chart is decoupled unless it is tiny on
 // screen (projected radius under kTinyObjectPixels), then it is drawn forward.
