@@ -39,7 +39,7 @@ struct DecoupledFrame {
   // what shadel-mark marks: both pipelines get it only as filterDefine(filter).
   // Settled in the prepare step (the renderer's setting or composite's
   // `filter` parameter), before any pass declares.
-  int filter = 2;
+  int filter = 1;
   int markedFilter = -1;  // the filter shadel-mark was declared with (composite checks it); -1: none yet
   bool baseline = false;  // bench --baseline only: shadel-mark and composite as before issue 14
   bool levelView = false;  // composite shows the detail level instead of the shading

@@ -43,36 +43,48 @@ class DecoupledScenes : public ::testing::TestWithParam<const char*> {};
 // blends two levels; at the silhouette, composite filters across the chart's
 // gutters (dilated texels). So a few edge pixels differ a lot and the bulk a
 // little: we bound the PSNR over the whole image.
+//
+// Both filters that matter: trilinear (the blur this tolerance was set for)
+// and bilinear, the default since issue 14 (the most accurate against the
+// bench's 16-spp reference). Bilinear at the fine level is sharper than
+// forward's mip-mapped texture sampling, so where both alias (the default
+// scene's gold sphere, a normal pattern finer than a pixel at 256²) they
+// differ more: its mean |d| bound is 3/255 instead of 2/255; PSNR stays >= 30 dB.
 TEST_P(DecoupledScenes, AgreesWithForward) {
   const std::string name = GetParam();
   LOAD_OR_SKIP(loaded, name);
-  gpu::HostImage forward, decoupled;
-  plugins::DecoupledStats stats;
+  gpu::HostImage forward;
   {
     Session f(*loaded, scene::ShadingMode::Forward);
     forward = f.render(256);
   }
-  {
-    // Ample storage: this compares the shading, not the adjuster (tested below).
-    Session d(*loaded, scene::ShadingMode::Decoupled, {.storageChunks = 16384});
-    decoupled = d.render(256);
-    stats = d.stats();
-  }
-  EXPECT_GT(stats.objects, 0u) << name << ": nothing was shaded decoupled";
-  EXPECT_EQ(stats.counters.compositeMisses, 0u);
-  EXPECT_EQ(stats.counters.overflowChunks, 0u);
-  const auto diff = image::compareRgba8(forward.rgba8, decoupled.rgba8);
-  std::printf("%-14s decoupled vs forward: PSNR %.2f dB, mean |d| %.2f/255, max |d| %d/255, %.2f%% pixels > 8/255, "
-              "%.2f shadels per covered pixel\n",
-              name.c_str(), diff.psnr, diff.meanAbs, diff.maxAbs, 100.0 * diff.fractionAbove8,
-              stats.counters.coveredPixels ? 64.0 * stats.counters.chunksAllocated / stats.counters.coveredPixels : 0.0);
-  RecordProperty("psnr", std::to_string(diff.psnr));
-  EXPECT_GE(diff.psnr, 30.0) << name;
-  EXPECT_LT(diff.meanAbs, 2.0) << name;
-  if (HasFailure()) {
-    const auto dir = std::filesystem::temp_directory_path();
-    image::writePng(dir / ("sg-agree-" + name + "-forward.png"), 256, 256, forward.rgba8.data());
-    image::writePng(dir / ("sg-agree-" + name + "-decoupled.png"), 256, 256, decoupled.rgba8.data());
+  for (int filter : {2, 1}) {
+    gpu::HostImage decoupled;
+    plugins::DecoupledStats stats;
+    {
+      // Ample storage: this compares the shading, not the adjuster (tested below).
+      Session d(*loaded, scene::ShadingMode::Decoupled, {.storageChunks = 16384, .filter = filter});
+      decoupled = d.render(256);
+      stats = d.stats();
+    }
+    const std::string label = name + (filter == 2 ? " trilinear" : " bilinear");
+    EXPECT_GT(stats.objects, 0u) << label << ": nothing was shaded decoupled";
+    EXPECT_EQ(stats.counters.compositeMisses, 0u) << label;
+    EXPECT_EQ(stats.counters.overflowChunks, 0u) << label;
+    const auto diff = image::compareRgba8(forward.rgba8, decoupled.rgba8);
+    std::printf("%-24s decoupled vs forward: PSNR %.2f dB, mean |d| %.2f/255, max |d| %d/255, %.2f%% pixels > 8/255, "
+                "%.2f shadels per covered pixel\n",
+                label.c_str(), diff.psnr, diff.meanAbs, diff.maxAbs, 100.0 * diff.fractionAbove8,
+                stats.counters.coveredPixels ? 64.0 * stats.counters.chunksAllocated / stats.counters.coveredPixels : 0.0);
+    RecordProperty(filter == 2 ? "psnr_trilinear" : "psnr_bilinear", std::to_string(diff.psnr));
+    EXPECT_GE(diff.psnr, 30.0) << label;
+    EXPECT_LT(diff.meanAbs, filter == 2 ? 2.0 : 3.0) << label;
+    if (HasFailure()) {
+      const auto dir = std::filesystem::temp_directory_path();
+      image::writePng(dir / ("sg-agree-" + name + "-forward.png"), 256, 256, forward.rgba8.data());
+      image::writePng(dir / ("sg-agree-" + name + "-decoupled-" + std::to_string(filter) + ".png"), 256, 256,
+                      decoupled.rgba8.data());
+    }
   }
 }
 
