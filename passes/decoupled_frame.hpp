@@ -41,7 +41,7 @@ struct DecoupledFrame {
   // `filter` parameter), before any pass declares.
   int filter = 1;
   int markedFilter = -1;  // the filter shadel-mark was declared with (composite checks it); -1: none yet
-  bool baseline = false;  // bench --baseline only: shadel-mark and composite as before issue 14
+  bool baseline = false;  // bench --baseline only: shadel-mark as before issue 14
   bool levelView = false;  // composite shows the detail level instead of the shading
   graph::ResourceHandle remap, counters, work, args;
   graph::ResourceHandle shadedColor;  // what composite filters: the last layer of every material writes it

@@ -104,7 +104,7 @@ struct Config {
   bool decoupled = false;
   int filter = 2;
   std::optional<float> bias;  // decoupled: fixed bias; empty = adjuster
-  bool baseline = false;      // decoupled: shadel-mark and composite as before issue 14
+  bool baseline = false;      // decoupled: shadel-mark as before issue 14
 };
 
 struct BenchArgs {
@@ -116,7 +116,7 @@ struct BenchArgs {
   int referenceScale = 4;  // reference: this many samples per pixel side (4 -> 16 spp)
   bool shimmer = false;    // also the shimmer case: the default scene's gold sphere close up
   std::vector<std::string> materials;  // non-empty: the material sweep instead (bench_materials.cpp)
-  bool baseline = false;     // each filter also with shadel-mark and composite as before issue 14
+  bool baseline = false;     // each filter also with shadel-mark as before issue 14
   bool filtersOnly = false;  // no bias sweep
 };
 
@@ -355,8 +355,8 @@ void addBenchCommand(CLI::App& app) {
   cmd->add_option("--flicker-frames", args.flickerFrames, "frames along the sub-pixel camera path, 2 or more")->capture_default_str();
   cmd->add_option("--reference-scale", args.referenceScale, "reference samples per pixel side, 1 to 8")->capture_default_str();
   cmd->add_flag("--baseline", args.baseline,
-                "each decoupled filter also with shadel-mark and composite as before issue 14 (mark: the trilinear "
-                "footprint whatever the filter; both: a remap read per tap), alternated in the same run");
+                "each decoupled filter also with shadel-mark as before issue 14 (the trilinear footprint whatever "
+                "the filter, a remap read per tap), alternated in the same run");
   cmd->add_flag("--filters-only", args.filtersOnly, "forward and the three filters only (no bias sweep)");
   auto* shimmer = cmd->add_flag("--shimmer", args.shimmer, "add the shimmer case (default scene's gold sphere, close up)");
   cmd->add_option("--materials", args.materials,

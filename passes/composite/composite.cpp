@@ -12,10 +12,9 @@ constexpr std::array kBindings{kBindFrame, kBindParams, kBindObjects,  kBindShad
                                kBindLevelRects, kBindRemap, kBindCounters, kBindLayerImage};
 }  // namespace
 
-gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView, bool baseline) {
+gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView) {
   std::vector<std::pair<std::string, std::string>> defines{filterDefine(filter)};
   if (levelView) defines.emplace_back("SG_VIEW_LEVEL", "1");
-  if (baseline) defines.emplace_back("SG_COMPOSITE_BASELINE", "1");
   return {.vertex = {.path = "passes/composite/composite.vert"},
           .fragment = {.path = "passes/composite/composite.frag", .defines = defines},
           .layout = decoupledLayout(kBindings, false, sizeof(render::ObjectConstants)),
@@ -41,10 +40,9 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);  // misses
   color = pass.write(color, graph::Access::ColorAttachment);
   pass.execute([frame, color, depth](PassContext& ctx) {
-    const std::string variant =
-        std::to_string(frame.filter) + (frame.levelView ? "/level" : "") + (frame.baseline ? "/baseline" : "");
-    const auto& pipeline = ctx.device().pipeline(
-        "composite/" + variant, [&] { return compositePipeline(frame.filter, frame.levelView, frame.baseline); });
+    const std::string variant = std::to_string(frame.filter) + (frame.levelView ? "/level" : "");
+    const auto& pipeline =
+        ctx.device().pipeline("composite/" + variant, [&] { return compositePipeline(frame.filter, frame.levelView); });
     ctx.beginRendering({ColorTarget{color}}, DepthTarget{depth, {}, true}, true);
     bindDecoupled(ctx, pipeline, frame, kBindings);
     frame.view.scene.bindGeometry(ctx.cmd());

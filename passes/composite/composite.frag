@@ -19,8 +19,9 @@ layout(location = 0) out vec4 outColor;
 #endif
 const uint kFilter = SG_FILTER;
 
-vec4 fetchFrom(SgRemapEntry entry, SgShadelAddress a) {
-  uint physical = sgPhysicalChunk(entry, a.chunkIndex);
+vec4 fetchShadel(uvec2 shadel) {
+  SgShadelAddress a = sgShadelAddress(shadel, params.entriesPerSideLog2);
+  uint physical = sgPhysicalChunk(remap[a.entryIndex], a.chunkIndex);
   if (physical == SG_INVALID_CHUNK) {
     atomicAdd(counters.compositeMisses, 1u);
     return vec4(1.0, 0.0, 1.0, 1.0);  // magenta: visible if it ever happens
@@ -28,35 +29,14 @@ vec4 fetchFrom(SgRemapEntry entry, SgShadelAddress a) {
   return texelFetch(layerImage, ivec2(sgStorageTexel(physical, a.texelIndex, params.storageWidthChunks)), 0);
 }
 
-vec4 fetchShadel(uvec2 shadel) {
-  SgShadelAddress a = sgShadelAddress(shadel, params.entriesPerSideLog2);
-  return fetchFrom(remap[a.entryIndex], a);
-}
-
 vec4 filterLevel(uint level) {
   SgLevelRect rect = sgLevelRect(object.objectId, level);
   SgBilinearTaps taps = sgBilinearTaps(inShadingUv, rect.size);
   if (kFilter == SG_FILTER_POINT) return fetchShadel(rect.origin + sgNearestTap(taps));
-#ifdef SG_COMPOSITE_BASELINE
-  // Before issue 14 (bench --baseline): a remap read per tap.
+  // A remap read per tap: reading a level's shared entry once (a branch for
+  // taps that straddle an entry edge) measured no faster here (issue 14).
   vec4 c00 = fetchShadel(sgFootprintShadel(rect, taps, 0u)), c10 = fetchShadel(sgFootprintShadel(rect, taps, 1u));
   vec4 c01 = fetchShadel(sgFootprintShadel(rect, taps, 2u)), c11 = fetchShadel(sgFootprintShadel(rect, taps, 3u));
-#else
-  // The 2x2 taps share one remap entry unless they straddle a 64-shadel
-  // entry edge (a few percent of pixels): read it once, the others only then.
-  SgShadelAddress a00 = sgShadelAddress(sgFootprintShadel(rect, taps, 0u), params.entriesPerSideLog2);
-  SgShadelAddress a10 = sgShadelAddress(sgFootprintShadel(rect, taps, 1u), params.entriesPerSideLog2);
-  SgShadelAddress a01 = sgShadelAddress(sgFootprintShadel(rect, taps, 2u), params.entriesPerSideLog2);
-  SgShadelAddress a11 = sgShadelAddress(sgFootprintShadel(rect, taps, 3u), params.entriesPerSideLog2);
-  SgRemapEntry e00 = remap[a00.entryIndex];
-  SgRemapEntry e10 = e00, e01 = e00, e11 = e00;
-  if (a11.entryIndex != a00.entryIndex) {  // (lo, lo) and (hi, hi) in one entry: so are all four
-    e10 = remap[a10.entryIndex];
-    e01 = remap[a01.entryIndex];
-    e11 = remap[a11.entryIndex];
-  }
-  vec4 c00 = fetchFrom(e00, a00), c10 = fetchFrom(e10, a10), c01 = fetchFrom(e01, a01), c11 = fetchFrom(e11, a11);
-#endif
   return mix(mix(c00, c10, taps.weight.x), mix(c01, c11, taps.weight.x), taps.weight.y);
 }
 

@@ -8,8 +8,7 @@ namespace sg::passes {
 // through the remap table) over the forward pass's colour. Returns the colour.
 graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle color,
                                    graph::ResourceHandle depth);
-// filter: 0 point, 1 bilinear, 2 trilinear; levelView shows the detail level
-// instead; baseline: the look-ups before issue 14 (bench --baseline).
-gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView, bool baseline = false);
+// filter: 0 point, 1 bilinear, 2 trilinear; levelView shows the detail level instead.
+gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView);
 
 }  // namespace sg::passes

@@ -42,7 +42,7 @@ struct DecoupledSettings {
   double storageFactor = shadel::kDefaultStorageFactor;  // shade storage = factor x output pixels
   uint32_t storageChunks = 0;  // when non-zero, the shade storage in chunks regardless of the output (tests)
   int filter = 1;                      // composite (and what shadel-mark marks): 0 point, 1 bilinear (default: the most accurate, issue 14), 2 trilinear
-  bool baseline = false;           // bench --baseline: shadel-mark and composite as before issue 14
+  bool baseline = false;           // bench --baseline: shadel-mark as before issue 14
   std::optional<float> fixedBias;      // else the adjuster decides
   DebugView view = DebugView::Final;
   ShadeSpaceAdjusterOptions adjuster;

@@ -230,9 +230,7 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   errors += mismatches("work-fill", passes::workFillPipeline());
   for (int filter : {0, 1, 2})
     for (bool levelView : {false, true})
-      for (bool baseline : {false, true})
-        errors += mismatches("composite filter=" + std::to_string(filter),
-                             passes::compositePipeline(filter, levelView, baseline));
+      errors += mismatches("composite filter=" + std::to_string(filter), passes::compositePipeline(filter, levelView));
   errors += mismatches("debug-occupancy", passes::occupancyViewPipeline());
   errors += mismatches("debug-sheet", passes::sheetViewPipeline());
   for (const auto& name : registry_.materialNames()) {
