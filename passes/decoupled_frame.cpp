@@ -1,10 +1,18 @@
 #include <decoupled_frame.hpp>
 
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <shadelgraph/gpu/pass_context.hpp>
 
 namespace sg::passes {
+
+std::pair<std::string, std::string> filterDefine(int filter) {
+  if (filter < 0 || filter > 2)
+    throw std::invalid_argument("composite filter " + std::to_string(filter) + " (0 point, 1 bilinear, 2 trilinear)");
+  return {"SG_FILTER", std::to_string(filter)};
+}
 
 gpu::PipelineLayoutDesc decoupledLayout(std::span<const uint32_t> bindings, bool layerImageStorage,
                                         uint32_t pushConstantBytes,

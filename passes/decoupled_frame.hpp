@@ -35,11 +35,21 @@ struct DecoupledFrame {
   const gpu::Buffer& idMaps;
   uint32_t ownedEntryCount = 0;
   uint32_t objectCount = 0;
-  int filter = 2;  // composite: 0 point, 1 bilinear, 2 trilinear
+  // The composite filter (0 point, 1 bilinear, 2 trilinear), which is also
+  // what shadel-mark marks: both pipelines get it only as filterDefine(filter).
+  // Settled in the prepare step (the renderer's setting or composite's
+  // `filter` parameter), before any pass declares.
+  int filter = 1;
+  int markedFilter = -1;  // the filter shadel-mark was declared with (composite checks it); -1: none yet
+  bool baseline = false;  // bench --baseline only: shadel-mark as before issue 14
   bool levelView = false;  // composite shows the detail level instead of the shading
   graph::ResourceHandle remap, counters, work, args;
   graph::ResourceHandle shadedColor;  // what composite filters: the last layer of every material writes it
 };
+
+// The define shadel-mark and composite are both compiled with: the filter
+// (SG_FILTER_* of shadel_level.glsl). Throws for a filter outside 0..2.
+std::pair<std::string, std::string> filterDefine(int filter);
 
 // The set-0 layout of a decoupled pass whose shaders use the shared
 // `bindings`; the layer image is a storage image when `layerImageStorage`,

@@ -38,7 +38,7 @@ struct RenderArgs {
   int path = 0;
   std::string mode;  // empty: each object's own mode (glTF extras, scene file; default auto)
   std::string view = "final";
-  int filter = 2;
+  int filter = 1;  // bilinear: the most accurate decoupled filter (docs/decoupled-shading.md)
   std::optional<double> bias;  // empty: the adjuster decides
   double storage = 2.0;
   std::string stats;

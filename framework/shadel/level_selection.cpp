@@ -2,6 +2,8 @@
 #include <cmath>
 
 #include <shadelgraph/shadel/level_selection.hpp>
+#include <shadelgraph/shadel/remap_entry.hpp>
+#include <shadelgraph/shadel/shadel_address.hpp>
 
 namespace sg::shadel {
 namespace {
@@ -50,6 +52,41 @@ TrilinearFootprint trilinearFootprint(glm::vec2 uv, const LevelSelection& select
     footprint.shadels[i * 4 + 3] = rect.origin + glm::uvec2(taps.hi.x, taps.hi.y);
   }
   return footprint;
+}
+
+glm::uvec2 nearestTap(const BilinearTaps& taps) {
+  return {taps.weight.x >= 0.5f ? taps.hi.x : taps.lo.x, taps.weight.y >= 0.5f ? taps.hi.y : taps.lo.y};
+}
+
+FilterFootprint filterFootprint(CompositeFilter filter, glm::vec2 uv, const LevelSelection& selection,
+                                std::span<const LevelRect> levels) {
+  FilterFootprint footprint;
+  if (filter == CompositeFilter::Point) {
+    const LevelRect& rect = levels[selection.fine];
+    footprint.shadels[footprint.count++] = rect.origin + nearestTap(bilinearTaps(uv, rect.size));
+    return footprint;
+  }
+  const TrilinearFootprint trilinear = trilinearFootprint(uv, selection, levels);
+  footprint.count = filter == CompositeFilter::Trilinear && selection.coarse != selection.fine ? 8 : 4;
+  for (uint32_t i = 0; i < footprint.count; ++i) footprint.shadels[i] = trilinear.shadels[i];
+  return footprint;
+}
+
+EntryMask footprintEntryMask(glm::uvec2 lo, glm::uvec2 hi, uint32_t side, uint32_t entriesPerSideLog2) {
+  const glm::uvec2 eLo = lo >> kEntrySizeLog2, eHi = hi >> kEntrySizeLog2;
+  const glm::uvec2 cLo = (lo >> kChunkSizeLog2) & (kEntryChunks - 1), cHi = (hi >> kChunkSizeLog2) & (kEntryChunks - 1);
+  const bool splitX = eLo.x != eHi.x, splitY = eLo.y != eHi.y;
+  const bool sx = (side & 1) != 0, sy = (side & 2) != 0;
+  EntryMask result;
+  if ((sx && !splitX) || (sy && !splitY)) return result;
+  const glm::uvec2 entry{sx ? eHi.x : eLo.x, sy ? eHi.y : eLo.y};
+  const uint32_t columns = splitX ? (1u << (sx ? cHi.x : cLo.x)) : ((1u << cLo.x) | (1u << cHi.x));
+  const uint32_t rowLo = splitY ? (sy ? cHi.y : cLo.y) : cLo.y;
+  const uint32_t rowHi = splitY ? rowLo : cHi.y;
+  result.used = true;
+  result.entryIndex = (entry.y << entriesPerSideLog2) | entry.x;
+  result.mask = (uint64_t{columns} << (rowLo * kEntryChunks)) | (uint64_t{columns} << (rowHi * kEntryChunks));
+  return result;
 }
 
 }  // namespace sg::shadel

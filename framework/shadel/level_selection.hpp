@@ -52,4 +52,32 @@ struct TrilinearFootprint {
 };
 TrilinearFootprint trilinearFootprint(glm::vec2 uv, const LevelSelection& selection, std::span<const LevelRect> levels);
 
+// The composite filter; shadel-mark marks exactly its footprint. GLSL: SG_FILTER_*.
+enum class CompositeFilter : int { Point = 0, Bilinear = 1, Trilinear = 2 };
+
+// The point filter's level-local shadel: the bilinear tap nearest the sample
+// (weight >= 0.5 picks hi). GLSL: sgNearestTap.
+glm::uvec2 nearestTap(const BilinearTaps& taps);
+
+// The virtual shadels a filter reads: point 1 (fine level), bilinear 4 (fine
+// level), trilinear 8, or 4 when the coarse level is the fine one.
+struct FilterFootprint {
+  std::array<glm::uvec2, 8> shadels{};
+  uint32_t count = 0;
+};
+FilterFootprint filterFootprint(CompositeFilter filter, glm::vec2 uv, const LevelSelection& selection,
+                                std::span<const LevelRect> levels);
+
+// shadel-mark's update of one level of a footprint: the virtual-shadel
+// rectangle [lo, hi] (hi - lo in {0,1}²) touches at most 2x2 remap entries;
+// `side` (0..3: x bit, y bit) picks one. `used` is false when that side is the
+// same entry as one already covered; else the entry's index and the
+// occupancy bits of every chunk of the rectangle in it. GLSL: sgFootprintEntryMask.
+struct EntryMask {
+  bool used = false;
+  uint32_t entryIndex = 0;
+  uint64_t mask = 0;
+};
+EntryMask footprintEntryMask(glm::uvec2 lo, glm::uvec2 hi, uint32_t side, uint32_t entriesPerSideLog2);
+
 }  // namespace sg::shadel

@@ -1,6 +1,8 @@
 #include "composite.hpp"
 
 #include <array>
+#include <stdexcept>
+#include <string>
 
 #include <shadelgraph/gpu/pass_context.hpp>
 
@@ -11,7 +13,7 @@ constexpr std::array kBindings{kBindFrame, kBindParams, kBindObjects,  kBindShad
 }  // namespace
 
 gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView) {
-  std::vector<std::pair<std::string, std::string>> defines{{"SG_COMPOSITE_FILTER", std::to_string(filter)}};
+  std::vector<std::pair<std::string, std::string>> defines{filterDefine(filter)};
   if (levelView) defines.emplace_back("SG_VIEW_LEVEL", "1");
   return {.vertex = {.path = "passes/composite/composite.vert"},
           .fragment = {.path = "passes/composite/composite.frag", .defines = defines},
@@ -25,6 +27,11 @@ gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView) {
 
 graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle color,
                                    graph::ResourceHandle depth) {
+  // Composite reads exactly the footprint shadel-mark marked for its filter:
+  // any other filter would read unmarked shadels (misses).
+  if (frame.markedFilter >= 0 && frame.markedFilter != frame.filter)
+    throw std::logic_error("composite filter " + std::to_string(frame.filter) + " differs from shadel-mark's " +
+                           std::to_string(frame.markedFilter));
   auto& pass = graph.addPass("composite", graph::QueueClass::Graphics);
   pass.read(color, graph::Access::ColorAttachmentRead);
   pass.read(depth, graph::Access::DepthRead);

@@ -12,12 +12,12 @@ layout(set = 0, binding = kBindLayerImage) uniform sampler2D layerImage;  // tex
 layout(location = 0) in vec2 inShadingUv;
 layout(location = 0) out vec4 outColor;
 
-// SG_COMPOSITE_FILTER (a define from the pass): 0 point (nearest shadel of
-// the fine level), 1 bilinear (fine level only), 2 trilinear.
-#ifndef SG_COMPOSITE_FILTER
-#define SG_COMPOSITE_FILTER 2
+// SG_FILTER (shadel_level.glsl's SG_FILTER_*): the filter, the same define
+// shadel-mark is compiled with, so composite reads only what mark marked.
+#ifndef SG_FILTER
+#error "SG_FILTER: the composite filter (passes::filterDefine)"
 #endif
-const uint kFilter = SG_COMPOSITE_FILTER;
+const uint kFilter = SG_FILTER;
 
 vec4 fetchShadel(uvec2 shadel) {
   SgShadelAddress a = sgShadelAddress(shadel, params.entriesPerSideLog2);
@@ -32,10 +32,9 @@ vec4 fetchShadel(uvec2 shadel) {
 vec4 filterLevel(uint level) {
   SgLevelRect rect = sgLevelRect(object.objectId, level);
   SgBilinearTaps taps = sgBilinearTaps(inShadingUv, rect.size);
-  if (kFilter == 0u) {
-    uvec2 nearest = uvec2(mix(vec2(taps.lo), vec2(taps.hi), greaterThanEqual(taps.weight, vec2(0.5))));
-    return fetchShadel(rect.origin + nearest);
-  }
+  if (kFilter == SG_FILTER_POINT) return fetchShadel(rect.origin + sgNearestTap(taps));
+  // A remap read per tap: reading a level's shared entry once (a branch for
+  // taps that straddle an entry edge) measured no faster here (issue 14).
   vec4 c00 = fetchShadel(sgFootprintShadel(rect, taps, 0u)), c10 = fetchShadel(sgFootprintShadel(rect, taps, 1u));
   vec4 c01 = fetchShadel(sgFootprintShadel(rect, taps, 2u)), c11 = fetchShadel(sgFootprintShadel(rect, taps, 3u));
   return mix(mix(c00, c10, taps.weight.x), mix(c01, c11, taps.weight.x), taps.weight.y);
@@ -54,7 +53,7 @@ void main() {
   outColor = vec4(sgLevelColor(level) * (0.55 + 0.45 * clamp(dot(shaded.rgb, vec3(0.3, 0.5, 0.2)), 0.0, 1.0)), 1.0);
 #else
   vec4 color = filterLevel(sel.fine);
-  if (kFilter == 2u && sel.coarse != sel.fine) color = mix(color, filterLevel(sel.coarse), sel.blend);
+  if (kFilter == SG_FILTER_TRILINEAR && sel.coarse != sel.fine) color = mix(color, filterLevel(sel.coarse), sel.blend);
   outColor = vec4(color.rgb, 1.0);
 #endif
 }

@@ -1,6 +1,8 @@
 #include "shadel_mark.hpp"
 
 #include <array>
+#include <string>
+#include <vector>
 
 #include <shadelgraph/gpu/pass_context.hpp>
 
@@ -9,9 +11,11 @@ namespace {
 constexpr std::array kBindings{kBindFrame, kBindParams, kBindObjects, kBindShadelInstances, kBindLevelRects, kBindRemap};
 }  // namespace
 
-gpu::GraphicsPipelineDesc shadelMarkPipeline() {
+gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline) {
+  std::vector<std::pair<std::string, std::string>> defines{filterDefine(filter)};
+  if (baseline) defines.emplace_back("SG_MARK_BASELINE", "1");
   return {.vertex = {.path = "passes/shadel-mark/shadel_mark.vert"},
-          .fragment = {.path = "passes/shadel-mark/shadel_mark.frag"},
+          .fragment = {.path = "passes/shadel-mark/shadel_mark.frag", .defines = defines},
           .layout = decoupledLayout(kBindings, false, sizeof(render::ObjectConstants)),
           .vertexInput = render::sceneVertexInput(),
           .depthFormat = VK_FORMAT_D32_SFLOAT,
@@ -23,8 +27,11 @@ void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::Reso
   auto& pass = graph.addPass("shadel-mark", graph::QueueClass::Graphics);
   pass.read(depth, graph::Access::DepthRead);
   frame.remap = pass.write(frame.remap, graph::Access::StorageReadWrite, graph::ShaderStage::Fragment);
+  frame.markedFilter = frame.filter;
   pass.execute([frame, depth](PassContext& ctx) {
-    const auto& pipeline = ctx.device().pipeline("shadel-mark", shadelMarkPipeline);
+    const std::string variant = std::to_string(frame.filter) + (frame.baseline ? "/baseline" : "");
+    const auto& pipeline = ctx.device().pipeline(
+        "shadel-mark/" + variant, [&] { return shadelMarkPipeline(frame.filter, frame.baseline); });
     ctx.beginRendering({}, DepthTarget{depth, {}, true}, true);
     bindDecoupled(ctx, pipeline, frame, kBindings);
     frame.view.scene.bindGeometry(ctx.cmd());

@@ -5,8 +5,11 @@
 namespace sg::passes {
 
 // Rasterizes the decoupled objects against the z-prepass depth (early test,
-// no colour) and marks the chunks of the shadels composite will read.
+// no colour) and marks the chunks of the shadels composite will read with
+// frame.filter (recorded in frame.markedFilter).
 void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle depth);
-gpu::GraphicsPipelineDesc shadelMarkPipeline();
+// filter: 0 point, 1 bilinear, 2 trilinear (what composite filters with);
+// baseline: the mark before issue 14 (bench --baseline).
+gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline = false);
 
 }  // namespace sg::passes

@@ -104,16 +104,21 @@ void registerDecoupledPackage(plugin::Registry& registry) {
                     .reads = {"scene.hdr", "scene.depth", "shadel.shaded", "shadel.remap", "shadel.counters"},
                     .writes = {"scene.hdr", "shadel.counters"},
                     .parameters = {{"filter", -1, "0 point, 1 bilinear, 2 trilinear; -1: the renderer's setting"}},
-                    .prepare = prepare,
-                    .declare = [](FrameContext& ctx) {
+                    // The filter is settled here, before any pass declares: shadel-mark
+                    // marks the footprint of the same filter.
+                    .prepare = [](FrameContext& ctx) {
                       DecoupledShading& d = shading(ctx);
-                      if (!d.shading()) return;
-                      passes::DecoupledFrame& frame = d.frame(ctx);
+                      d.prepare(ctx);
                       const int filter = ctx.parameter<int>("filter");
                       if (filter > 2)
                         throw plugin::FrameError("pass 'composite': filter " + std::to_string(filter) +
                                                  " (0 point, 1 bilinear, 2 trilinear)");
-                      if (filter >= 0) frame.filter = filter;
+                      if (filter >= 0) d.setFrameFilter(filter);
+                    },
+                    .declare = [](FrameContext& ctx) {
+                      DecoupledShading& d = shading(ctx);
+                      if (!d.shading()) return;
+                      passes::DecoupledFrame& frame = d.frame(ctx);
                       ctx.write("scene.hdr", passes::addComposite(ctx.graph(), frame, ctx.read("scene.hdr"),
                                                                   ctx.read("scene.depth")));
                       d.publish(ctx, {"shadel.counters"});

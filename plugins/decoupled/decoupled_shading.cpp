@@ -199,6 +199,7 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
                                         .levelRects = levelRects_, .ownedEntries = ownedEntries_, .idMaps = idMapBuffer_,
                                         .ownedEntryCount = ownedEntryCount_, .objectCount = objectCount,
                                         .filter = settings_.filter,
+                                        .baseline = settings_.baseline,
                                         .levelView = settings_.view == DebugView::Level});
   passes::DecoupledFrame& frame = *frame_;
   declaredHistory_ = history_.declare(graph, in.device, in.executor, materials, layerPlan_.persistent,
@@ -226,6 +227,12 @@ constexpr ShadelResource kShadelResources[] = {{"shadel.remap", &passes::Decoupl
                                                {"shadel.args", &passes::DecoupledFrame::args},
                                                {"shadel.shaded", &passes::DecoupledFrame::shadedColor}};
 }  // namespace
+
+void DecoupledShading::setFrameFilter(int filter) {
+  if (!frame_) return;
+  if (frame_->markedFilter >= 0) throw std::logic_error("the composite filter changed after shadel-mark was declared");
+  frame_->filter = filter;
+}
 
 passes::DecoupledFrame& DecoupledShading::frame(render::FrameContext& ctx) {
   if (!frame_) throw plugin::FrameError("pass '" + ctx.passName() + "': decoupled shading was not prepared this frame");

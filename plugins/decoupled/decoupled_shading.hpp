@@ -41,7 +41,8 @@ struct DecoupledSettings {
   uint32_t sheetSizeLog2 = 16;  // 64K x 64K virtual shadels; up to 19 (512K)
   double storageFactor = shadel::kDefaultStorageFactor;  // shade storage = factor x output pixels
   uint32_t storageChunks = 0;  // when non-zero, the shade storage in chunks regardless of the output (tests)
-  int filter = 2;                      // composite: 0 point, 1 bilinear, 2 trilinear
+  int filter = 1;                      // composite (and what shadel-mark marks): 0 point, 1 bilinear (default: the most accurate, issue 14), 2 trilinear
+  bool baseline = false;           // bench --baseline: shadel-mark as before issue 14
   std::optional<float> fixedBias;      // else the adjuster decides
   DebugView view = DebugView::Final;
   ShadeSpaceAdjusterOptions adjuster;
@@ -87,6 +88,9 @@ class DecoupledShading {
   // One layer-shade pass per depth of the frame's layer plan.
   void addLayerPasses(graph::RenderGraph& graph, const plugin::Registry& materials);
   void addCountersReadback(graph::RenderGraph& graph);
+  // This frame's composite filter instead of the setting (composite's
+  // `filter` parameter): from a prepare step, before any pass declares.
+  void setFrameFilter(int filter);
   const DecoupledSettings& settings() const { return settings_; }
   glm::uvec2 sheetRegionOrigin() const { return sheetRegionOrigin_; }
   glm::uvec2 sheetRegionSize() const { return sheetRegionSize_; }

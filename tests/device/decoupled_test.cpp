@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <random>
+#include <tuple>
 #include <set>
 
 #include <shadelgraph/image/metrics.hpp>
@@ -42,46 +43,61 @@ class DecoupledScenes : public ::testing::TestWithParam<const char*> {};
 // blends two levels; at the silhouette, composite filters across the chart's
 // gutters (dilated texels). So a few edge pixels differ a lot and the bulk a
 // little: we bound the PSNR over the whole image.
+//
+// Both filters that matter: trilinear (the blur this tolerance was set for)
+// and bilinear, the default since issue 14 (the most accurate against the
+// bench's 16-spp reference). Bilinear at the fine level is sharper than
+// forward's mip-mapped texture sampling, so where both alias (the default
+// scene's gold sphere, a normal pattern finer than a pixel at 256²) they
+// differ more: its mean |d| bound is 3/255 instead of 2/255; PSNR stays >= 30 dB.
 TEST_P(DecoupledScenes, AgreesWithForward) {
   const std::string name = GetParam();
   LOAD_OR_SKIP(loaded, name);
-  gpu::HostImage forward, decoupled;
-  plugins::DecoupledStats stats;
+  gpu::HostImage forward;
   {
     Session f(*loaded, scene::ShadingMode::Forward);
     forward = f.render(256);
   }
-  {
-    // Ample storage: this compares the shading, not the adjuster (tested below).
-    Session d(*loaded, scene::ShadingMode::Decoupled, {.storageChunks = 16384});
-    decoupled = d.render(256);
-    stats = d.stats();
-  }
-  EXPECT_GT(stats.objects, 0u) << name << ": nothing was shaded decoupled";
-  EXPECT_EQ(stats.counters.compositeMisses, 0u);
-  EXPECT_EQ(stats.counters.overflowChunks, 0u);
-  const auto diff = image::compareRgba8(forward.rgba8, decoupled.rgba8);
-  std::printf("%-14s decoupled vs forward: PSNR %.2f dB, mean |d| %.2f/255, max |d| %d/255, %.2f%% pixels > 8/255, "
-              "%.2f shadels per covered pixel\n",
-              name.c_str(), diff.psnr, diff.meanAbs, diff.maxAbs, 100.0 * diff.fractionAbove8,
-              stats.counters.coveredPixels ? 64.0 * stats.counters.chunksAllocated / stats.counters.coveredPixels : 0.0);
-  RecordProperty("psnr", std::to_string(diff.psnr));
-  EXPECT_GE(diff.psnr, 30.0) << name;
-  EXPECT_LT(diff.meanAbs, 2.0) << name;
-  if (HasFailure()) {
-    const auto dir = std::filesystem::temp_directory_path();
-    image::writePng(dir / ("sg-agree-" + name + "-forward.png"), 256, 256, forward.rgba8.data());
-    image::writePng(dir / ("sg-agree-" + name + "-decoupled.png"), 256, 256, decoupled.rgba8.data());
+  for (int filter : {2, 1}) {
+    gpu::HostImage decoupled;
+    plugins::DecoupledStats stats;
+    {
+      // Ample storage: this compares the shading, not the adjuster (tested below).
+      Session d(*loaded, scene::ShadingMode::Decoupled, {.storageChunks = 16384, .filter = filter});
+      decoupled = d.render(256);
+      stats = d.stats();
+    }
+    const std::string label = name + (filter == 2 ? " trilinear" : " bilinear");
+    EXPECT_GT(stats.objects, 0u) << label << ": nothing was shaded decoupled";
+    EXPECT_EQ(stats.counters.compositeMisses, 0u) << label;
+    EXPECT_EQ(stats.counters.overflowChunks, 0u) << label;
+    const auto diff = image::compareRgba8(forward.rgba8, decoupled.rgba8);
+    std::printf("%-24s decoupled vs forward: PSNR %.2f dB, mean |d| %.2f/255, max |d| %d/255, %.2f%% pixels > 8/255, "
+                "%.2f shadels per covered pixel\n",
+                label.c_str(), diff.psnr, diff.meanAbs, diff.maxAbs, 100.0 * diff.fractionAbove8,
+                stats.counters.coveredPixels ? 64.0 * stats.counters.chunksAllocated / stats.counters.coveredPixels : 0.0);
+    RecordProperty(filter == 2 ? "psnr_trilinear" : "psnr_bilinear", std::to_string(diff.psnr));
+    EXPECT_GE(diff.psnr, 30.0) << label;
+    EXPECT_LT(diff.meanAbs, filter == 2 ? 2.0 : 3.0) << label;
+    if (HasFailure()) {
+      const auto dir = std::filesystem::temp_directory_path();
+      image::writePng(dir / ("sg-agree-" + name + "-forward.png"), 256, 256, forward.rgba8.data());
+      image::writePng(dir / ("sg-agree-" + name + "-decoupled-" + std::to_string(filter) + ".png"), 256, 256,
+                      decoupled.rgba8.data());
+    }
   }
 }
 
 // Watertightness: every shadel composite reads was marked and stored, from
 // 100 random cameras: close-ups (inside 0.6x the bounding radius), far views
-// (up to 25x), grazing elevations and narrow to wide fields of view.
-TEST_P(DecoupledScenes, NoCompositeMissesFromRandomCameras) {
-  const std::string name = GetParam();
-  LOAD_OR_SKIP(loaded, name);
-  Session d(*loaded, scene::ShadingMode::Decoupled, {.storageChunks = 16384});
+// (up to 25x), grazing elevations and narrow to wide fields of view. For each
+// filter: shadel-mark marks only that filter's footprint, so each must stay
+// watertight on its own. Returns the chunks marked over all cameras.
+uint64_t expectNoMissesFromRandomCameras(const scene::Scene& loaded, const std::string& name,
+                                         plugins::DecoupledSettings settings, const plugin::Registry& registry,
+                                         const std::string& frame = "decoupled") {
+  settings.storageChunks = 16384;
+  Session d(loaded, scene::ShadingMode::Decoupled, settings, registry, frame);
   const scene::Bounds bounds = scene::worldBounds(d.scene());
   std::mt19937 rng(1234);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
@@ -105,12 +121,48 @@ TEST_P(DecoupledScenes, NoCompositeMissesFromRandomCameras) {
   }
   EXPECT_GT(marked, 0u);
   EXPECT_EQ(overflow, 0u) << "the test's storage must be ample, or misses are expected";
-  EXPECT_EQ(misses, 0u) << name;
+  EXPECT_EQ(misses, 0u) << name << " filter " << settings.filter;
+  return marked;
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, DecoupledScenes,
                          ::testing::Values("DefaultScene", "Suzanne", "Duck", "DamagedHelmet"),
                          [](const auto& testInfo) { return std::string(testInfo.param); });
+
+class DecoupledFilters : public ::testing::TestWithParam<std::tuple<const char*, int>> {};
+
+std::string filterTestName(const std::tuple<const char*, int>& param) {
+  static const char* filters[] = {"Point", "Bilinear", "Trilinear"};
+  return std::string(std::get<0>(param)) + filters[std::get<1>(param)];
+}
+
+TEST_P(DecoupledFilters, NoCompositeMissesFromRandomCameras) {
+  const auto [scene, filter] = GetParam();
+  LOAD_OR_SKIP(loaded, scene);
+  expectNoMissesFromRandomCameras(*loaded, scene, {.filter = filter}, plugins::builtinRegistry());
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, DecoupledFilters,
+                         ::testing::Combine(::testing::Values("DefaultScene", "Suzanne", "Duck", "DamagedHelmet"),
+                                            ::testing::Values(0, 1, 2)),
+                         [](const auto& testInfo) { return filterTestName(testInfo.param); });
+
+// composite's `filter` parameter (a frame's) overrides the renderer's setting
+// for both passes: shadel-mark marks that filter's footprint (fewer chunks
+// for point than for trilinear) and composite still misses nothing.
+TEST(DecoupledFilterParameter, ShadelMarkFollowsComposite) {
+  const scene::Scene loaded = scene::makeDefaultScene();
+  uint64_t marked[3] = {};
+  for (int filter : {0, 2}) {
+    plugin::Registry registry = plugins::builtinRegistry();
+    registry.addFrame({.name = "decoupled-filter", .base = "decoupled",
+                       .parameters = {{"composite", nlohmann::json{{"filter", filter}}}}});
+    // The setting says the other filter: the frame's parameter wins for both passes.
+    marked[filter] = expectNoMissesFromRandomCameras(loaded, "DefaultScene", {.filter = 2 - filter}, registry,
+                                                     "decoupled-filter");
+  }
+  EXPECT_LT(marked[0], marked[2]) << "point marks one shadel at one level, trilinear eight at two";
+}
 
 // Mode auto: an object with a unique chart is decoupled unless it is tiny on
 // screen (projected radius under kTinyObjectPixels), then it is drawn forward.

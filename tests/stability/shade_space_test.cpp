@@ -109,7 +109,9 @@ TEST(ShadeSpace, ScreenFillingObjectAt2560x1440ExceedsOneDispatchDimension) {
   // From 9 units: 9 units of height and 16 of width in view.
   const scene::Camera camera =
       cameraAt({0.0f, 0.0f, 9.0f}, {0.0f, 0.0f, 0.0f}, 0.1f, 100.0f, 2.0f * std::atan(0.5f));
-  const BothPaths both = renderBothPaths(s, 2560, 1440, camera);
+  // Trilinear: it marks two levels, enough chunks to pass the dispatch limit
+  // (bilinear, the default, marks ~63000 here).
+  const BothPaths both = renderBothPaths(s, 2560, 1440, camera, {.filter = 2});
   const auto c = both.decoupled.stats.counters;
   std::printf("2560x1440: %u chunks allocated for one object (dispatch limit 65535), %u covered pixels\n",
               c.chunksAllocated, c.coveredPixels);

@@ -1,4 +1,4 @@
-// Detail-level selection and trilinear footprint: the GLSL twin of
+// Detail-level selection and the filters' footprints: the GLSL twin of
 // framework/shadel/level_selection.hpp/.cpp. shadel-mark and composite must
 // both call these, so every shadel composite reads was marked.
 #ifndef SG_SHADEL_LEVEL_GLSL
@@ -54,6 +54,44 @@ SgBilinearTaps sgBilinearTaps(vec2 uv, uint levelSize) {
 // (lo,lo), (hi,lo), (lo,hi), (hi,hi).
 uvec2 sgFootprintShadel(SgLevelRect rect, SgBilinearTaps taps, uint i) {
   return rect.origin + uvec2((i & 1u) != 0u ? taps.hi.x : taps.lo.x, (i & 2u) != 0u ? taps.hi.y : taps.lo.y);
+}
+
+// The composite filter, which also decides what shadel-mark marks:
+// sg::shadel::CompositeFilter. Both passes are compiled with SG_FILTER set
+// from the one DecoupledFrame::filter (passes::filterDefine).
+const uint SG_FILTER_POINT = 0u;      // the nearest shadel of the fine level
+const uint SG_FILTER_BILINEAR = 1u;   // the 2x2 taps of the fine level
+const uint SG_FILTER_TRILINEAR = 2u;  // the 2x2 taps of the fine and of the coarse level
+
+// Mirrors sg::shadel::nearestTap: the point filter's level-local shadel, the
+// bilinear tap nearest the sample (one of lo/hi per axis).
+uvec2 sgNearestTap(SgBilinearTaps taps) {
+  return uvec2(taps.weight.x >= 0.5 ? taps.hi.x : taps.lo.x, taps.weight.y >= 0.5 ? taps.hi.y : taps.lo.y);
+}
+
+// Mirrors sg::shadel::footprintEntryMask: the virtual-shadel rectangle
+// [lo, hi] (hi - lo in {0,1}², a filter's footprint at one level) touches at
+// most 2x2 remap entries; `side` (0..3: x bit, y bit) picks one. Returns
+// false when that side is the same entry as one already covered, else the
+// entry's index and the occupancy bits of every chunk of the rectangle in
+// it. shadel-mark reads each entry once and sets all its bits at once.
+bool sgFootprintEntryMask(uvec2 lo, uvec2 hi, uint side, uint entriesPerSideLog2, out uint entryIndex,
+                          out uint64_t mask) {
+  uvec2 eLo = lo >> SG_ENTRY_SIZE_LOG2, eHi = hi >> SG_ENTRY_SIZE_LOG2;
+  uvec2 cLo = (lo >> SG_CHUNK_SIZE_LOG2) & (SG_ENTRY_CHUNKS - 1u);
+  uvec2 cHi = (hi >> SG_CHUNK_SIZE_LOG2) & (SG_ENTRY_CHUNKS - 1u);
+  bool splitX = eLo.x != eHi.x, splitY = eLo.y != eHi.y;
+  bool sx = (side & 1u) != 0u, sy = (side & 2u) != 0u;
+  entryIndex = 0u;
+  mask = uint64_t(0u);
+  if ((sx && !splitX) || (sy && !splitY)) return false;
+  uvec2 entry = uvec2(sx ? eHi.x : eLo.x, sy ? eHi.y : eLo.y);
+  uint columns = splitX ? (1u << (sx ? cHi.x : cLo.x)) : ((1u << cLo.x) | (1u << cHi.x));
+  uint rowLo = splitY ? (sy ? cHi.y : cLo.y) : cLo.y;
+  uint rowHi = splitY ? rowLo : cHi.y;
+  entryIndex = (entry.y << entriesPerSideLog2) | entry.x;
+  mask = (uint64_t(columns) << (rowLo * SG_ENTRY_CHUNKS)) | (uint64_t(columns) << (rowHi * SG_ENTRY_CHUNKS));
+  return true;
 }
 
 #endif

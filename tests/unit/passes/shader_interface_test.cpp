@@ -221,7 +221,9 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   for (bool passthrough : {false, true})
     errors += mismatches("tonemap", passes::tonemapPipeline(VK_FORMAT_R8G8B8A8_SRGB, passthrough));
   errors += mismatches("shadel-clear", passes::shadelClearPipeline());
-  errors += mismatches("shadel-mark", passes::shadelMarkPipeline());
+  for (int filter : {0, 1, 2})
+    for (bool baseline : {false, true})
+      errors += mismatches("shadel-mark filter=" + std::to_string(filter), passes::shadelMarkPipeline(filter, baseline));
   for (bool apply : {false, true}) errors += mismatches("support-expand", passes::supportExpandPipeline(apply));
   errors += mismatches("shadel-allocate", passes::shadelAllocatePipeline());
   errors += mismatches("work-offsets", passes::workOffsetsPipeline());

@@ -83,6 +83,19 @@ std::string compareMirrorResults(const std::vector<uint32_t>& cases, const uint3
     static const char* tapNames[] = {"taps.lo.x", "taps.lo.y", "taps.hi.x", "taps.hi.y", "taps.weight.x", "taps.weight.y"};
     for (size_t k = 0; k < 6; ++k)
       if (r[15 + k] != tapWords[k]) return fail(tapNames[k], r[15 + k], tapWords[k]);
+    const glm::uvec2 nearest = nearestTap(taps);
+    if (r[21] != nearest.x || r[22] != nearest.y) return fail("nearestTap", r[21] * 1e6 + r[22], nearest.x * 1e6 + nearest.y);
+
+    const uint32_t sel = c[8];
+    const glm::uvec2 lo((sel & 4) ? (c[0] | 63u) : c[0], (sel & 8) ? (c[1] | 7u) : c[1]);
+    const glm::uvec2 hi = lo + glm::uvec2((sel >> 4) & 1, (sel >> 5) & 1);
+    const EntryMask m = footprintEntryMask(lo, hi, sel & 3, c[2]);
+    const uint32_t maskWords[] = {m.used ? m.entryIndex : 0xFFFFFFFFu, static_cast<uint32_t>(m.mask),
+                                  static_cast<uint32_t>(m.mask >> 32)};
+    static const char* maskNames[] = {"footprintEntryMask.entryIndex", "footprintEntryMask.mask.lo",
+                                      "footprintEntryMask.mask.hi"};
+    for (size_t k = 0; k < 3; ++k)
+      if (r[23 + k] != maskWords[k]) return fail(maskNames[k], r[23 + k], maskWords[k]);
   }
   return {};
 }

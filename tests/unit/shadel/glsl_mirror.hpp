@@ -12,7 +12,7 @@
 namespace sg::shadel::test {
 
 inline constexpr uint32_t kCaseWords = 20;
-inline constexpr uint32_t kResultWords = 24;
+inline constexpr uint32_t kResultWords = 28;
 
 inline const char* kMirrorShaderPath = "tests/shadel/glsl_mirror.comp";
 
@@ -27,7 +27,7 @@ layout(push_constant) uniform Push { uint count; };
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= count) return;
-  uint c = i * 20u, r = i * 24u;
+  uint c = i * 20u, r = i * 28u;
   uint log2 = cases[c + 2u];
   SgShadelAddress address = sgShadelAddress(uvec2(cases[c], cases[c + 1u]), log2);
   results[r + 0u] = address.entryIndex;
@@ -65,6 +65,21 @@ void main() {
   results[r + 18u] = corner.y - 2000u;
   results[r + 19u] = floatBitsToUint(taps.weight.x);
   results[r + 20u] = floatBitsToUint(taps.weight.y);
+  uvec2 nearest = sgNearestTap(taps);
+  results[r + 21u] = nearest.x;
+  results[r + 22u] = nearest.y;
+
+  // A footprint rectangle at (cases 0, 1), pushed to entry/chunk edges by bits of case 8.
+  uint sel = cases[c + 8u];
+  uvec2 lo = uvec2((sel & 4u) != 0u ? (cases[c] | 63u) : cases[c], (sel & 8u) != 0u ? (cases[c + 1u] | 7u) : cases[c + 1u]);
+  uvec2 hi = lo + uvec2((sel >> 4u) & 1u, (sel >> 5u) & 1u);
+  uint entryIndex;
+  uint64_t mask;
+  bool used = sgFootprintEntryMask(lo, hi, sel & 3u, log2, entryIndex, mask);
+  results[r + 23u] = used ? entryIndex : 0xFFFFFFFFu;
+  uvec2 maskWords = unpackUint2x32(mask);
+  results[r + 24u] = maskWords.x;
+  results[r + 25u] = maskWords.y;
 }
 )";
 

@@ -1,10 +1,12 @@
 // Detail-level selection and the trilinear footprint.
 #include <cmath>
+#include <map>
 #include <random>
 
 #include <gtest/gtest.h>
 
 #include <shadelgraph/shadel/level_selection.hpp>
+#include <shadelgraph/shadel/shadel_address.hpp>
 #include <shadelgraph/shadel/shadel_space.hpp>
 
 namespace sg::shadel {
@@ -115,6 +117,58 @@ TEST(TrilinearFootprint, StaysInsideTheInstanceLevels) {
       ASSERT_LT(shadel.x, rect.origin.x + rect.size) << "uv " << uv.x << " level size " << rect.size;
       ASSERT_LT(shadel.y, rect.origin.y + rect.size);
     }
+  }
+}
+
+TEST(FilterFootprint, PointAndBilinearAreInsideTrilinear) {
+  const LevelRect levels[] = {{{0, 0}, 64, 64}, {{64, 0}, 32, 32}};
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> uvDistribution(-0.02f, 1.02f), blend(0.0f, 1.0f);
+  for (int i = 0; i < 5000; ++i) {
+    const glm::vec2 uv(uvDistribution(rng), uvDistribution(rng));
+    const LevelSelection selection{0.5f, 0, 1, blend(rng)};
+    const TrilinearFootprint trilinear = trilinearFootprint(uv, selection, levels);
+    const FilterFootprint point = filterFootprint(CompositeFilter::Point, uv, selection, levels);
+    const FilterFootprint bilinear = filterFootprint(CompositeFilter::Bilinear, uv, selection, levels);
+    const FilterFootprint all = filterFootprint(CompositeFilter::Trilinear, uv, selection, levels);
+    ASSERT_EQ(point.count, 1u);
+    ASSERT_EQ(bilinear.count, 4u);
+    ASSERT_EQ(all.count, 8u);
+    // The nearest tap is one of the bilinear taps, the one of the largest weight.
+    const glm::vec2 w = trilinear.fineWeight;
+    const uint32_t nearest = (w.x >= 0.5f ? 1u : 0u) | (w.y >= 0.5f ? 2u : 0u);
+    ASSERT_EQ(point.shadels[0], trilinear.shadels[nearest]);
+    for (uint32_t k = 0; k < 8; ++k) ASSERT_EQ(all.shadels[k], trilinear.shadels[k]);
+    for (uint32_t k = 0; k < 4; ++k) ASSERT_EQ(bilinear.shadels[k], trilinear.shadels[k]);
+  }
+  // One level: trilinear reads the fine level only.
+  const LevelSelection single{0.0f, 1, 1, 0.0f};
+  EXPECT_EQ(filterFootprint(CompositeFilter::Trilinear, {0.3f, 0.6f}, single, levels).count, 4u);
+}
+
+// shadel-mark's per-entry masks mark exactly the chunks of the footprint's
+// shadels, each entry once, across chunk and entry boundaries.
+TEST(FootprintEntryMask, MarksExactlyTheChunksOfTheRectangle) {
+  std::mt19937 rng(11);
+  for (int i = 0; i < 20000; ++i) {
+    const uint32_t log2 = 10;
+    // Near entry and chunk boundaries half the time.
+    glm::uvec2 lo(rng() % 4000, rng() % 4000);
+    if (i % 2) lo = (lo & ~63u) + glm::uvec2(rng() % 2 ? 63 : 7, rng() % 2 ? 63 : 15);
+    const glm::uvec2 hi = lo + glm::uvec2(rng() % 2, rng() % 2);
+    std::map<uint32_t, uint64_t> expected, marked;
+    for (uint32_t y = lo.y; y <= hi.y; ++y)
+      for (uint32_t x = lo.x; x <= hi.x; ++x) {
+        const ShadelAddress a = addressOf({x, y}, log2);
+        expected[a.entryIndex] |= uint64_t{1} << a.chunkIndex;
+      }
+    for (uint32_t side = 0; side < 4; ++side) {
+      const EntryMask m = footprintEntryMask(lo, hi, side, log2);
+      if (!m.used) continue;
+      ASSERT_EQ(marked.count(m.entryIndex), 0u) << "entry read twice";
+      marked[m.entryIndex] = m.mask;
+    }
+    ASSERT_EQ(marked, expected) << "lo " << lo.x << "," << lo.y << " hi " << hi.x << "," << hi.y;
   }
 }
 
