@@ -7,34 +7,41 @@ namespace sg::graph {
 void orderAcrossQueues(const RenderGraph& graph, std::span<const PassId> order, const DependencyGraph& deps,
                        CrossQueueOrder& out) {
   out.batches.clear();
-  for (auto& list : out.batchesOfQueue) list.clear();
-  std::vector<uint32_t>& batchOf = out.batchOfPass;
-  batchOf.assign(graph.passCount(), kInvalidIndex);
+  out.batchAt.resize(order.size());
+  out.batchOfPass.assign(graph.passCount(), kInvalidIndex);
+  std::array<uint32_t, kQueueClassCount> submitted{};
   for (uint32_t position = 0; position < order.size(); ++position) {
     const QueueClass queue = graph.pass(order[position]).queue;
     if (out.batches.empty() || out.batches.back().queue != queue) {
-      out.batchesOfQueue[queueIndex(queue)].push_back(static_cast<uint32_t>(out.batches.size()));
-      const auto value = static_cast<uint32_t>(out.batchesOfQueue[queueIndex(queue)].size());
-      out.batches.push_back({.queue = queue, .firstPosition = position, .value = value});
+      ++submitted[queueIndex(queue)];
+      out.batches.push_back({.queue = queue, .firstPosition = position, .submitted = submitted});
     }
-    batchOf[order[position].index] = static_cast<uint32_t>(out.batches.size() - 1);
+    out.batchAt[position] = static_cast<uint32_t>(out.batches.size() - 1);
+    out.batchOfPass[order[position].index] = out.batchAt[position];
   }
   for (const Dependency& e : deps.edges) {
-    const uint32_t from = batchOf[e.from.index];
-    const uint32_t to = batchOf[e.to.index];
+    const uint32_t from = out.batchOfPass[e.from.index];
+    const uint32_t to = out.batchOfPass[e.to.index];
     if (from == kInvalidIndex || to == kInvalidIndex) continue;
-    const QueueClass producer = out.batches[from].queue;
-    if (producer == out.batches[to].queue) continue;
-    CrossQueueOrder::Wait& w = out.batches[to].waits[queueIndex(producer)];
-    w.value = std::max(w.value, out.batches[from].value);
-    w.stages |= any(e.dstStages) ? e.dstStages : PipelineStage::AllCommands;
+    const uint32_t producer = queueIndex(out.batches[from].queue);
+    CrossQueueOrder::Batch& waiter = out.batches[to];
+    if (producer == queueIndex(waiter.queue)) continue;
+    // A batch's value: its 1-based index among its queue's batches.
+    waiter.waitValue[producer] = std::max(waiter.waitValue[producer], out.batches[from].submitted[producer]);
+    waiter.waitStages[producer] |= any(e.dstStages) ? e.dstStages : PipelineStage::AllCommands;
   }
-  for (const auto& list : out.batchesOfQueue) {
-    std::array<uint32_t, kQueueClassCount> covered{};
-    for (const uint32_t b : list) {
-      for (uint32_t q = 0; q < kQueueClassCount; ++q) {
-        covered[q] = std::max(covered[q], out.batches[b].waits[q].value);
-        out.batches[b].waits[q].covered = covered[q];
+  for (uint32_t waiting = 0; waiting < kQueueClassCount; ++waiting) {
+    for (uint32_t producer = 0; producer < kQueueClassCount; ++producer) {
+      out.firstCover[waiting][producer].assign(submitted[producer], kInvalidIndex);
+    }
+  }
+  std::array<std::array<uint32_t, kQueueClassCount>, kQueueClassCount> covered{};  // [waiting][producer]
+  for (uint32_t b = 0; b < out.batches.size(); ++b) {
+    const CrossQueueOrder::Batch& batch = out.batches[b];
+    const uint32_t waiting = queueIndex(batch.queue);
+    for (uint32_t producer = 0; producer < kQueueClassCount; ++producer) {
+      for (uint32_t& c = covered[waiting][producer]; c < batch.waitValue[producer]; ++c) {
+        out.firstCover[waiting][producer][c] = b;
       }
     }
   }
@@ -42,37 +49,21 @@ void orderAcrossQueues(const RenderGraph& graph, std::span<const PassId> order, 
 
 uint32_t CrossQueueOrder::availableFrom(uint32_t last, QueueMask used, QueueClass queue,
                                         PipelineStage& waitStages) const {
-  const std::vector<uint32_t>& own = batchesOfQueue[queueIndex(queue)];
-  // The first batch on `queue` that may run after `last`: the one holding
-  // last + 1 or the next one (binary search by first position).
-  auto first = std::upper_bound(own.begin(), own.end(), last,
-                                [&](uint32_t position, uint32_t b) { return position < batches[b].firstPosition; });
-  if (first != own.begin()) --first;  // the batch that may hold last + 1
-  for (uint32_t q = 0; q < kQueueClassCount; ++q) {
-    const auto other = static_cast<QueueClass>(q);
-    if (other == queue || !any(used & toMask(other))) continue;
-    // The value of `other`'s last batch at or before `last`.
-    const std::vector<uint32_t>& theirs = batchesOfQueue[q];
-    const auto after = std::upper_bound(theirs.begin(), theirs.end(), last,
-                                        [&](uint32_t position, uint32_t b) { return position < batches[b].firstPosition; });
-    const auto needed = static_cast<uint32_t>(after - theirs.begin());
+  uint32_t position = last + 1;
+  const uint32_t waiting = queueIndex(queue);
+  const Batch& lastBatch = batches[batchAt[last]];
+  for (uint32_t producer = 0; producer < kQueueClassCount; ++producer) {
+    if (producer == waiting || !any(used & toMask(static_cast<QueueClass>(producer)))) continue;
+    // The value of the producer's last batch at or before `last`.
+    const uint32_t needed = lastBatch.submitted[producer];
     if (needed == 0) continue;  // not used there before `last`
-    // The first batch on `queue` whose waits cover it (`covered` only grows).
-    const auto proving = std::partition_point(own.begin(), own.end(),
-                                              [&](uint32_t b) { return batches[b].waits[q].covered < needed; });
-    if (proving == own.end()) return kInvalidIndex;
+    const uint32_t proving = firstCover[waiting][producer][needed - 1];
+    if (proving == kInvalidIndex) return kInvalidIndex;
     // That batch waits for `needed` or more itself: its stages are the ones to chain with.
-    waitStages |= batches[*proving].waits[q].stages;
-    first = std::max(first, proving);
+    waitStages |= batches[proving].waitStages[producer];
+    position = std::max(position, batches[proving].firstPosition);
   }
-  if (first == own.end()) return kInvalidIndex;
-  return std::max(last + 1, batches[*first].firstPosition);
-}
-
-QueueClass CrossQueueOrder::queueAt(uint32_t position) const {
-  const auto after = std::upper_bound(batches.begin(), batches.end(), position,
-                                      [](uint32_t p, const Batch& b) { return p < b.firstPosition; });
-  return std::prev(after)->queue;
+  return position;
 }
 
 }  // namespace sg::graph

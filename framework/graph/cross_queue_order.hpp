@@ -16,30 +16,30 @@
 namespace sg::graph {
 
 struct CrossQueueOrder {
-  struct Wait {
-    uint32_t value = 0;  // highest value of the producing queue this batch itself waits for (0: none)
-    PipelineStage stages = PipelineStage::None;
-    uint32_t covered = 0;  // highest value waited for by this batch or an earlier one on its queue
-  };
   struct Batch {
     QueueClass queue = QueueClass::Graphics;
     uint32_t firstPosition = 0;
-    uint32_t value = 0;  // its 1-based index among its queue's batches
-    std::array<Wait, kQueueClassCount> waits{};  // by producing queue
+    // Per producing queue: the highest value this batch itself waits for (0: none), at which stages.
+    std::array<uint32_t, kQueueClassCount> waitValue{};
+    std::array<PipelineStage, kQueueClassCount> waitStages{};
+    // Per queue: how many of its batches were submitted up to this one (included).
+    std::array<uint32_t, kQueueClassCount> submitted{};
   };
-  std::vector<Batch> batches;                                          // as assignQueues() splits the order
-  std::array<std::vector<uint32_t>, kQueueClassCount> batchesOfQueue;  // by value - 1
-  std::vector<uint32_t> batchOfPass;                                   // kInvalidIndex if not in the order
+  std::vector<Batch> batches;         // as assignQueues() splits the order
+  std::vector<uint32_t> batchAt;      // per position in the order
+  std::vector<uint32_t> batchOfPass;  // per pass; kInvalidIndex if not in the order
+  // [waiting queue][producing queue][value - 1]: the first batch on the
+  // waiting queue that waited for at least that value (kInvalidIndex: none).
+  std::array<std::array<std::vector<uint32_t>, kQueueClassCount>, kQueueClassCount> firstCover;
 
   // The first position in the order from which a pass on `queue` runs after
   // every command up to position `last` on the queues in `used`: right after
   // `last` if `used` has no other queue, else from the first batch on `queue`
   // that waited for each other queue's batch at or before `last` (kInvalidIndex
   // if none does). `waitStages` gets the stages of those waits: a barrier
-  // chaining with them needs them in its source.
+  // chaining with them needs them in its source. O(1).
   uint32_t availableFrom(uint32_t last, QueueMask used, QueueClass queue, PipelineStage& waitStages) const;
-  // The queue of the pass at `position`.
-  QueueClass queueAt(uint32_t position) const;
+  QueueClass queueAt(uint32_t position) const { return batches[batchAt[position]].queue; }
 };
 
 // Batches of `order` and their waits for the dependencies of `deps`, the way

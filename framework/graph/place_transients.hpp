@@ -4,6 +4,7 @@
 #include <shadelgraph/graph/cross_queue_order.hpp>
 #include <shadelgraph/graph/memory_requirements.hpp>
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -19,27 +20,38 @@ namespace detail {
 // others once a semaphore wait proves its work done (CrossQueueOrder).
 class FreeList {
  public:
-  // Best fit: the smallest run of adjacent free ranges that `queue` may take
-  // holding `size` bytes at `alignment`; otherwise at the end of the heap
-  // (which grows). Appends the transients that last used the bytes taken to
-  // `previous`.
+  // Best fit: the smallest free range `queue` may take holding `size` bytes at
+  // `alignment`; otherwise at the end of the heap (which grows). Appends the
+  // transients that last used the bytes taken to `previous`.
   uint64_t allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
                     std::vector<uint32_t>& previous);
   // [offset, offset + size), last used by `occupant`, is free for `queues`.
   void release(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues);
   // What is still free of `occupant`'s range [offset, offset + size) may now be taken by `queues` too.
   void allow(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues);
-  void clear() { free_.clear(); }
+  void clear() {
+    for (auto& blocks : blocks_) blocks.clear();
+    lastUsers_.clear();
+  }
 
- private:
-  struct Free {
+  struct Block {
     uint64_t begin;
     uint64_t end;
-    uint32_t occupant;  // kInvalidIndex: never used (alignment padding)
-    QueueMask queues;
   };
 
-  std::vector<Free> free_;  // by offset, disjoint, not coalesced
+ private:
+  struct LastUser {
+    uint64_t begin;
+    uint64_t end;
+    uint32_t occupant;
+    QueueMask queues;  // the queues whose free list holds it
+  };
+
+  void takeOver(uint64_t begin, uint64_t end, std::vector<uint32_t>& previous);
+
+  // Per queue: the ranges it may take, by offset, coalesced (never adjacent).
+  std::array<std::vector<Block>, kQueueClassCount> blocks_;
+  std::vector<LastUser> lastUsers_;  // freed ranges by offset, not coalesced
 };
 
 }  // namespace detail
