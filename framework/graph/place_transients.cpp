@@ -72,13 +72,17 @@ uint64_t FreeList::allocate(uint64_t size, uint64_t alignment, QueueMask queue, 
     offset = alignUp(start, alignment);
     // Fresh padding below the new range is free for every queue.
     if (offset > heapSize) {
-      for (Blocks& other : blocks_) insertBlock(other, heapSize, offset);
+      for (uint32_t other = 0; other < kQueueClassCount; ++other) {
+        if (any(queues_ & toMask(static_cast<QueueClass>(other)))) insertBlock(blocks_[other], heapSize, offset);
+      }
     }
     heapSize = offset + size;
   } else {
     offset = alignUp(blocks[best].begin, alignment);
   }
-  for (Blocks& other : blocks_) removeRange(other, offset, offset + size);
+  for (uint32_t other = 0; other < kQueueClassCount; ++other) {
+    if (any(queues_ & toMask(static_cast<QueueClass>(other)))) removeRange(blocks_[other], offset, offset + size);
+  }
   takeOver(offset, offset + size, previous);
   return offset;
 }
@@ -86,6 +90,7 @@ uint64_t FreeList::allocate(uint64_t size, uint64_t alignment, QueueMask queue, 
 void FreeList::release(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues) {
   auto at = std::lower_bound(lastUsers_.begin(), lastUsers_.end(), offset,
                              [](const LastUser& u, uint64_t o) { return u.begin < o; });
+  queues &= queues_;
   lastUsers_.insert(at, {offset, offset + size, occupant, queues});
   for (uint32_t q = 0; q < kQueueClassCount; ++q) {
     if (any(queues & toMask(static_cast<QueueClass>(q)))) insertBlock(blocks_[q], offset, offset + size);
@@ -93,6 +98,8 @@ void FreeList::release(uint64_t offset, uint64_t size, uint32_t occupant, QueueM
 }
 
 void FreeList::allow(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues) {
+  queues &= queues_;
+  if (!any(queues)) return;
   auto it = std::lower_bound(lastUsers_.begin(), lastUsers_.end(), offset,
                              [](const LastUser& u, uint64_t o) { return u.end <= o; });
   for (; it != lastUsers_.end() && it->begin < offset + size; ++it) {
@@ -179,9 +186,11 @@ void placeTransients(std::span<const TransientLifetime> transients, uint32_t res
   MemoryPlan::Scratch& scratch = plan.scratch;
 
   uint32_t positions = 0;
+  QueueMask used = QueueMask::None;  // only these queues take memory over
   for (const TransientLifetime& t : transients) {
     if (t.id >= requirements.size()) throw std::invalid_argument("placeTransients: missing memory requirements");
     positions = std::max(positions, t.lastUse + 1);
+    used |= t.queues;
   }
   const auto sizeOf = [&](uint32_t index) { return requirements[transients[index].id].size; };
   // Transients by first use, larger first at the same position (the tie
@@ -226,6 +235,7 @@ void placeTransients(std::span<const TransientLifetime> transients, uint32_t res
       if (!plan.heaps[m.heap].aliasing) continue;
       QueueMask now = QueueMask::None;
       for (const QueueClass q : kQueues) {
+        if (!any(used & toMask(q))) continue;
         PipelineStage unused = PipelineStage::None;
         const uint32_t from = availableFrom(done, q, queues, unused);
         if (from <= t.firstUse) {
@@ -254,7 +264,7 @@ void placeTransients(std::span<const TransientLifetime> transients, uint32_t res
     if (heap == plan.heaps.size()) {
       plan.heaps.push_back({req.memoryTypeBits, 0, 1, QueueMask::None, enableAliasing});
       if (freeLists.size() < plan.heaps.size()) freeLists.emplace_back();
-      freeLists[heap].clear();
+      freeLists[heap].clear(used);
       unaliasedSize.push_back(0);
     }
     Heap& h = plan.heaps[heap];

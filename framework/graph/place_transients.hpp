@@ -29,9 +29,11 @@ class FreeList {
   void release(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues);
   // What is still free of `occupant`'s range [offset, offset + size) may now be taken by `queues` too.
   void allow(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues);
-  void clear() {
+  // Empties the list; only `queues` will ever take ranges from it.
+  void clear(QueueMask queues) {
     for (auto& blocks : blocks_) blocks.clear();
     lastUsers_.clear();
+    queues_ = queues;
   }
 
   struct Block {
@@ -52,6 +54,7 @@ class FreeList {
   // Per queue: the ranges it may take, by offset, coalesced (never adjacent).
   std::array<std::vector<Block>, kQueueClassCount> blocks_;
   std::vector<LastUser> lastUsers_;  // freed ranges by offset, not coalesced
+  QueueMask queues_ = ~QueueMask::None;  // the queues with a free list
 };
 
 }  // namespace detail
