@@ -78,8 +78,10 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
                    plan.memoryEstimated);
   lendTo(plan.aliases, memory_.aliases, [&] {
     lendTo(plan.heaps, memory_.heaps, [&] {
+      // Aliasing across queues relies on the semaphore waits the dependencies make.
+      if (options.enableAliasing) orderAcrossQueues(graph, plan.order, deps_, queueOrder_);
       placeTransients(transients_, static_cast<uint32_t>(plan.resources.size()), requirements_,
-                      options.enableAliasing, memory_);
+                      options.enableAliasing, memory_, options.enableAliasing ? &queueOrder_ : nullptr);
     });
   });
   for (uint32_t r = 0; r < plan.resources.size(); ++r) {
@@ -92,7 +94,7 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
 
   lendTo(plan.barriers, barriers_.barriers, [&] {
     lendTo(plan.finalBarriers, barriers_.finals,
-           [&] { planBarriers(graph, plan.order, plan.resources, plan.aliases, barriers_); });
+           [&] { planBarriers(graph, plan.order, plan.resources, plan.aliases, memory_.takeOverWaits, barriers_); });
   });
   lendTo(plan.batches, schedule_.batches, [&] {
     lendTo(plan.waits, schedule_.waits,

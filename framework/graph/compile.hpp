@@ -3,6 +3,7 @@
 #include <shadelgraph/graph/assign_queues.hpp>
 #include <shadelgraph/graph/compile_options.hpp>
 #include <shadelgraph/graph/compiled_plan.hpp>
+#include <shadelgraph/graph/cross_queue_order.hpp>
 #include <shadelgraph/graph/dependencies.hpp>
 #include <shadelgraph/graph/place_transients.hpp>
 #include <shadelgraph/graph/plan_barriers.hpp>
@@ -36,6 +37,7 @@ class PlanCompiler {
   std::vector<MemoryRequirements> requirements_;
   std::vector<TransientLifetime> transients_;
   std::vector<uint32_t> positions_;  // per pass: its position in the order
+  CrossQueueOrder queueOrder_;
   MemoryPlan memory_;
   BarrierPlan barriers_;
   QueueSchedule schedule_;

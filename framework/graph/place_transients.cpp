@@ -1,6 +1,7 @@
 #include <shadelgraph/graph/place_transients.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 
 namespace sg::graph {
@@ -15,53 +16,101 @@ uint64_t alignUp(uint64_t value, uint64_t alignment) {
 }  // namespace
 
 namespace detail {
+namespace {
 
-uint64_t FreeList::allocate(uint64_t size, uint64_t alignment, uint64_t& heapSize, std::vector<uint32_t>& previous) {
-  std::size_t best = blocks_.size();
-  for (std::size_t i = 0; i < blocks_.size(); ++i) {
-    const Block& b = blocks_[i];
+using Blocks = std::vector<FreeList::Block>;
+
+// Adds [begin, end) to `blocks`, merging it with its neighbours.
+void insertBlock(Blocks& blocks, uint64_t begin, uint64_t end) {
+  FreeList::Block block{begin, end};
+  auto next = std::lower_bound(blocks.begin(), blocks.end(), begin,
+                               [](const FreeList::Block& b, uint64_t o) { return b.begin < o; });
+  if (next != blocks.end() && next->begin == block.end) {
+    block.end = next->end;
+    next = blocks.erase(next);
+  }
+  if (next != blocks.begin() && std::prev(next)->end == block.begin) {
+    std::prev(next)->end = block.end;
+    return;
+  }
+  blocks.insert(next, block);
+}
+
+// Removes [begin, end) from `blocks`, wherever it overlaps them.
+void removeRange(Blocks& blocks, uint64_t begin, uint64_t end) {
+  auto first = std::lower_bound(blocks.begin(), blocks.end(), begin,
+                                [](const FreeList::Block& b, uint64_t o) { return b.end <= o; });
+  auto last = first;
+  while (last != blocks.end() && last->begin < end) ++last;
+  if (first == last) return;
+  FreeList::Block rest[2];
+  std::size_t count = 0;
+  if (first->begin < begin) rest[count++] = {first->begin, begin};
+  if (std::prev(last)->end > end) rest[count++] = {end, std::prev(last)->end};
+  blocks.insert(blocks.erase(first, last), rest, rest + count);
+}
+
+}  // namespace
+
+uint64_t FreeList::allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
+                            std::vector<uint32_t>& previous) {
+  static const Blocks kNone;
+  const uint32_t q = queueCount(queue) == 1 ? queueIndex(static_cast<QueueClass>(std::countr_zero(
+                                                  static_cast<uint32_t>(queue))))
+                                            : kQueueClassCount;
+  const Blocks& blocks = q < kQueueClassCount ? blocks_[q] : kNone;
+  std::size_t best = blocks.size();
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const Block& b = blocks[i];
     if (b.end - b.begin < size || alignUp(b.begin, alignment) + size > b.end) continue;
-    if (best == blocks_.size() || b.end - b.begin < blocks_[best].end - blocks_[best].begin) best = i;
+    if (best == blocks.size() || b.end - b.begin < blocks[best].end - blocks[best].begin) best = i;
   }
   uint64_t offset = 0;
-  if (best == blocks_.size()) {
+  if (best == blocks.size()) {
     // Grow the heap, starting inside a free range that ends at its top.
-    uint64_t start = heapSize;
-    if (!blocks_.empty() && blocks_.back().end == heapSize) {
-      start = blocks_.back().begin;
-      blocks_.pop_back();
-    }
+    const uint64_t start = !blocks.empty() && blocks.back().end == heapSize ? blocks.back().begin : heapSize;
     offset = alignUp(start, alignment);
-    if (offset > start) blocks_.push_back({start, offset});
+    // Fresh padding below the new range is free for every queue.
+    if (offset > heapSize) {
+      for (uint32_t other = 0; other < kQueueClassCount; ++other) {
+        if (any(queues_ & toMask(static_cast<QueueClass>(other)))) insertBlock(blocks_[other], heapSize, offset);
+      }
+    }
     heapSize = offset + size;
   } else {
-    const Block b = blocks_[best];
-    offset = alignUp(b.begin, alignment);
-    auto at = blocks_.erase(blocks_.begin() + static_cast<std::ptrdiff_t>(best));
-    // What is left on either side stays free, in offset order.
-    if (offset + size < b.end) at = blocks_.insert(at, {offset + size, b.end});
-    if (b.begin < offset) blocks_.insert(at, {b.begin, offset});
+    offset = alignUp(blocks[best].begin, alignment);
+  }
+  for (uint32_t other = 0; other < kQueueClassCount; ++other) {
+    if (any(queues_ & toMask(static_cast<QueueClass>(other)))) removeRange(blocks_[other], offset, offset + size);
   }
   takeOver(offset, offset + size, previous);
   return offset;
 }
 
-void FreeList::release(uint64_t offset, uint64_t size, uint32_t occupant) {
-  Block block{offset, offset + size};
-  auto next = std::lower_bound(blocks_.begin(), blocks_.end(), block.begin,
-                               [](const Block& b, uint64_t o) { return b.begin < o; });
-  auto at = std::lower_bound(lastUsers_.begin(), lastUsers_.end(), block.begin,
+void FreeList::release(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues) {
+  auto at = std::lower_bound(lastUsers_.begin(), lastUsers_.end(), offset,
                              [](const LastUser& u, uint64_t o) { return u.begin < o; });
-  lastUsers_.insert(at, {block.begin, block.end, occupant});
-  if (next != blocks_.end() && next->begin == block.end) {
-    block.end = next->end;
-    next = blocks_.erase(next);
+  queues &= queues_;
+  lastUsers_.insert(at, {offset, offset + size, occupant, queues});
+  for (uint32_t q = 0; q < kQueueClassCount; ++q) {
+    if (any(queues & toMask(static_cast<QueueClass>(q)))) insertBlock(blocks_[q], offset, offset + size);
   }
-  if (next != blocks_.begin() && std::prev(next)->end == block.begin) {
-    std::prev(next)->end = block.end;
-    return;
+}
+
+void FreeList::allow(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues) {
+  queues &= queues_;
+  if (!any(queues)) return;
+  auto it = std::lower_bound(lastUsers_.begin(), lastUsers_.end(), offset,
+                             [](const LastUser& u, uint64_t o) { return u.end <= o; });
+  for (; it != lastUsers_.end() && it->begin < offset + size; ++it) {
+    if (it->occupant != occupant) continue;
+    for (uint32_t q = 0; q < kQueueClassCount; ++q) {
+      const QueueMask m = toMask(static_cast<QueueClass>(q));
+      if (!any(queues & m) || any(it->queues & m)) continue;
+      it->queues |= m;
+      insertBlock(blocks_[q], it->begin, it->end);
+    }
   }
-  blocks_.insert(next, block);
 }
 
 // [begin, end) is allocated again: report and forget its last users.
@@ -73,8 +122,8 @@ void FreeList::takeOver(uint64_t begin, uint64_t end, std::vector<uint32_t>& pre
   if (first == last) return;
   LastUser rest[2];
   std::size_t count = 0;
-  if (first->begin < begin) rest[count++] = {first->begin, begin, first->occupant};
-  if (std::prev(last)->end > end) rest[count++] = {end, std::prev(last)->end, std::prev(last)->occupant};
+  if (first->begin < begin) rest[count++] = {first->begin, begin, first->occupant, first->queues};
+  if (std::prev(last)->end > end) rest[count++] = {end, std::prev(last)->end, std::prev(last)->occupant, std::prev(last)->queues};
   lastUsers_.insert(lastUsers_.erase(first, last), rest, rest + count);
 }
 
@@ -94,39 +143,54 @@ void bucketBy(std::span<const TransientLifetime> transients, uint32_t positions,
   for (uint32_t i = 0; i < transients.size(); ++i) sorted[starts[position(transients[i])]++] = i;
 }
 
+constexpr QueueClass kQueues[] = {QueueClass::Graphics, QueueClass::AsyncCompute, QueueClass::Transfer};
+
+// From which position a transient's memory may be taken over on `queue`
+// (kInvalidIndex: never), and the waits that prove it.
+uint32_t availableFrom(const TransientLifetime& t, QueueClass queue, const CrossQueueOrder* queues,
+                       PipelineStage& waitStages) {
+  if (queues) return queues->availableFrom(t.lastUse, t.queues, queue, waitStages);
+  return t.queues == toMask(queue) ? t.lastUse + 1 : kInvalidIndex;
+}
+
 }  // namespace
 
 MemoryPlan placeTransients(std::span<const PlannedResource> resources,
-                           std::span<const MemoryRequirements> requirements, bool enableAliasing) {
+                           std::span<const MemoryRequirements> requirements, bool enableAliasing,
+                           const CrossQueueOrder* queues) {
   MemoryPlan plan;
-  placeTransients(resources, requirements, enableAliasing, plan);
+  placeTransients(resources, requirements, enableAliasing, plan, queues);
   return plan;
 }
 
 void placeTransients(std::span<const PlannedResource> resources, std::span<const MemoryRequirements> requirements,
-                     bool enableAliasing, MemoryPlan& plan) {
+                     bool enableAliasing, MemoryPlan& plan, const CrossQueueOrder* queues) {
   std::vector<TransientLifetime> transients;
   for (uint32_t r = 0; r < resources.size(); ++r) {
     const PlannedResource& resource = resources[r];
     if (!isTransient(resource.kind) || resource.culled) continue;
     transients.push_back({r, resource.firstUse, resource.lastUse, resource.desc.queues});
   }
-  placeTransients(transients, static_cast<uint32_t>(resources.size()), requirements, enableAliasing, plan);
+  placeTransients(transients, static_cast<uint32_t>(resources.size()), requirements, enableAliasing, plan, queues);
 }
 
 void placeTransients(std::span<const TransientLifetime> transients, uint32_t resourceCount,
-                     std::span<const MemoryRequirements> requirements, bool enableAliasing, MemoryPlan& plan) {
+                     std::span<const MemoryRequirements> requirements, bool enableAliasing, MemoryPlan& plan,
+                     const CrossQueueOrder* queues) {
   plan.placements.assign(resourceCount, MemoryPlacement{});
   plan.aliasesWith.assign(resourceCount, Range{});
+  plan.takeOverWaits.assign(resourceCount, PipelineStage::None);
   plan.heaps.clear();
   plan.heapBytes = 0;
   plan.heapBytesWithoutAliasing = 0;
   MemoryPlan::Scratch& scratch = plan.scratch;
 
   uint32_t positions = 0;
+  QueueMask used = QueueMask::None;  // only these queues take memory over
   for (const TransientLifetime& t : transients) {
     if (t.id >= requirements.size()) throw std::invalid_argument("placeTransients: missing memory requirements");
     positions = std::max(positions, t.lastUse + 1);
+    used |= t.queues;
   }
   const auto sizeOf = [&](uint32_t index) { return requirements[transients[index].id].size; };
   // Transients by first use, larger first at the same position (the tie
@@ -152,38 +216,64 @@ void placeTransients(std::span<const TransientLifetime> transients, uint32_t res
   std::vector<uint64_t>& unaliasedSize = scratch.unaliasedSize;
   std::vector<std::pair<uint32_t, uint32_t>>& aliasPairs = scratch.aliasPairs;
   std::vector<uint32_t>& previous = scratch.previous;
+  auto& allowances = scratch.allowances;
+  const auto laterFirst = [](const MemoryPlan::Scratch::Allowance& a, const MemoryPlan::Scratch::Allowance& b) {
+    return a.position > b.position;
+  };
   unaliasedSize.clear();
   aliasPairs.clear();
+  allowances.clear();
   std::size_t ended = 0;
   for (const uint32_t index : byStart) {
     const TransientLifetime& t = transients[index];
-    // Give back the memory of transients whose last use is behind us.
+    // Give back the memory of transients whose last use is behind us, to the
+    // queues they are over for now; the other queues get it as their waits come.
     for (; ended < byEnd.size() && transients[byEnd[ended]].lastUse < t.firstUse; ++ended) {
-      const TransientLifetime& done = transients[byEnd[ended]];
+      const uint32_t doneIndex = byEnd[ended];
+      const TransientLifetime& done = transients[doneIndex];
       const MemoryPlacement& m = plan.placements[done.id];
-      if (plan.heaps[m.heap].aliasing) freeLists[m.heap].release(m.offset, m.size, done.id);
+      if (!plan.heaps[m.heap].aliasing) continue;
+      QueueMask now = QueueMask::None;
+      for (const QueueClass q : kQueues) {
+        if (!any(used & toMask(q))) continue;
+        PipelineStage unused = PipelineStage::None;
+        const uint32_t from = availableFrom(done, q, queues, unused);
+        if (from <= t.firstUse) {
+          now |= toMask(q);
+        } else if (from != kInvalidIndex) {
+          allowances.push_back({from, doneIndex, toMask(q)});
+          std::push_heap(allowances.begin(), allowances.end(), laterFirst);
+        }
+      }
+      freeLists[m.heap].release(m.offset, m.size, doneIndex, now);
+    }
+    while (!allowances.empty() && allowances.front().position <= t.firstUse) {
+      const auto a = allowances.front();
+      std::pop_heap(allowances.begin(), allowances.end(), laterFirst);
+      allowances.pop_back();
+      const MemoryPlacement& m = plan.placements[transients[a.index].id];
+      freeLists[m.heap].allow(m.offset, m.size, a.index, a.queues);
     }
 
     const MemoryRequirements& req = requirements[t.id];
-    const bool aliases = enableAliasing && queueCount(t.queues) == 1;
     uint32_t heap = 0;
     for (; heap < plan.heaps.size(); ++heap) {
       const Heap& h = plan.heaps[heap];
-      if (h.aliasing == aliases && (!aliases || h.queues == t.queues) &&
-          (h.memoryTypeBits & req.memoryTypeBits) != 0) {
-        break;
-      }
+      if (h.aliasing == enableAliasing && (h.memoryTypeBits & req.memoryTypeBits) != 0) break;
     }
     if (heap == plan.heaps.size()) {
-      plan.heaps.push_back({req.memoryTypeBits, 0, 1, QueueMask::None, aliases});
+      plan.heaps.push_back({req.memoryTypeBits, 0, 1, QueueMask::None, enableAliasing});
       if (freeLists.size() < plan.heaps.size()) freeLists.emplace_back();
-      freeLists[heap].clear();
+      freeLists[heap].clear(used);
       unaliasedSize.push_back(0);
     }
     Heap& h = plan.heaps[heap];
     previous.clear();
-    const uint64_t offset =
-        aliases ? freeLists[heap].allocate(req.size, req.alignment, h.size, previous) : alignUp(h.size, req.alignment);
+    // The queue taking the memory over: its first use's (unknown without `queues` if several use it).
+    QueueMask taker = queueCount(t.queues) == 1 ? t.queues : QueueMask::None;
+    if (queues) taker = toMask(queues->queueAt(t.firstUse));
+    const uint64_t offset = enableAliasing ? freeLists[heap].allocate(req.size, req.alignment, taker, h.size, previous)
+                                           : alignUp(h.size, req.alignment);
     h.size = std::max(h.size, offset + req.size);
     h.alignment = std::max(h.alignment, req.alignment);
     h.memoryTypeBits &= req.memoryTypeBits;
@@ -191,11 +281,18 @@ void placeTransients(std::span<const TransientLifetime> transients, uint32_t res
     unaliasedSize[heap] = alignUp(unaliasedSize[heap], req.alignment) + req.size;
     plan.placements[t.id] = {heap, offset, req.size};
 
-    std::sort(previous.begin(), previous.end());
+    std::sort(previous.begin(), previous.end(),
+              [&](uint32_t a, uint32_t b) { return transients[a].id < transients[b].id; });
     previous.erase(std::unique(previous.begin(), previous.end()), previous.end());
     for (const uint32_t p : previous) {
-      aliasPairs.emplace_back(t.id, p);
-      aliasPairs.emplace_back(p, t.id);
+      const TransientLifetime& before = transients[p];
+      if (before.queues != taker) {
+        for (const QueueClass q : kQueues) {
+          if (toMask(q) == taker) availableFrom(before, q, queues, plan.takeOverWaits[t.id]);
+        }
+      }
+      aliasPairs.emplace_back(t.id, before.id);
+      aliasPairs.emplace_back(before.id, t.id);
     }
   }
   for (uint32_t heap = 0; heap < plan.heaps.size(); ++heap) {

@@ -1,8 +1,10 @@
 #pragma once
 
 #include <shadelgraph/graph/compiled_plan.hpp>
+#include <shadelgraph/graph/cross_queue_order.hpp>
 #include <shadelgraph/graph/memory_requirements.hpp>
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -12,35 +14,47 @@ namespace sg::graph {
 
 namespace detail {
 
-// Free byte ranges of one aliasing heap, and who used each freed range last
-// (that transient is what the next one placed there aliases with).
+// Free byte ranges of one aliasing heap. Each range remembers who used it last
+// (what the next transient placed there aliases with, and waits for) and the
+// queues allowed to take it over yet: the last user's queues at once, the
+// others once a semaphore wait proves its work done (CrossQueueOrder).
 class FreeList {
  public:
-  // Best fit: the smallest free range holding `size` bytes at `alignment`;
-  // otherwise at the end of the heap (which grows). Appends the transients
-  // that last used the range to `previous`.
-  uint64_t allocate(uint64_t size, uint64_t alignment, uint64_t& heapSize, std::vector<uint32_t>& previous);
-  void release(uint64_t offset, uint64_t size, uint32_t occupant);
-  void clear() {
-    blocks_.clear();
+  // Best fit: the smallest free range `queue` may take holding `size` bytes at
+  // `alignment`; otherwise at the end of the heap (which grows). Appends the
+  // transients that last used the bytes taken to `previous`.
+  uint64_t allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
+                    std::vector<uint32_t>& previous);
+  // [offset, offset + size), last used by `occupant`, is free for `queues`.
+  void release(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues);
+  // What is still free of `occupant`'s range [offset, offset + size) may now be taken by `queues` too.
+  void allow(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues);
+  // Empties the list; only `queues` will ever take ranges from it.
+  void clear(QueueMask queues) {
+    for (auto& blocks : blocks_) blocks.clear();
     lastUsers_.clear();
+    queues_ = queues;
   }
 
- private:
   struct Block {
     uint64_t begin;
     uint64_t end;
   };
+
+ private:
   struct LastUser {
     uint64_t begin;
     uint64_t end;
     uint32_t occupant;
+    QueueMask queues;  // the queues whose free list holds it
   };
 
   void takeOver(uint64_t begin, uint64_t end, std::vector<uint32_t>& previous);
 
-  std::vector<Block> blocks_;        // by offset, never adjacent
+  // Per queue: the ranges it may take, by offset, coalesced (never adjacent).
+  std::array<std::vector<Block>, kQueueClassCount> blocks_;
   std::vector<LastUser> lastUsers_;  // freed ranges by offset, not coalesced
+  QueueMask queues_ = ~QueueMask::None;  // the queues with a free list
 };
 
 }  // namespace detail
@@ -58,6 +72,9 @@ struct MemoryPlan {
   std::vector<Range> aliasesWith;           // per resource, into `aliases` (see PlannedResource::aliasesWith)
   std::vector<ResourceId> aliases;
   std::vector<Heap> heaps;
+  // Per resource: the stages of the semaphore waits that let it take over
+  // memory last used on another queue; its discard barrier chains with them.
+  std::vector<PipelineStage> takeOverWaits;
   uint64_t heapBytes = 0;
   uint64_t heapBytesWithoutAliasing = 0;
 
@@ -73,34 +90,49 @@ struct MemoryPlan {
     std::vector<uint64_t> unaliasedSize;      // per heap: its size if nothing aliased
     std::vector<std::pair<uint32_t, uint32_t>> aliasPairs;
     std::vector<uint32_t> previous;
+    struct Allowance {
+      uint32_t position;  // from here on
+      uint32_t index;     // into transients
+      QueueMask queues;   // may take over its memory
+    };
+    std::vector<Allowance> allowances;  // a min-heap by position
   } scratch;
 };
 
 // Places every used transient in a heap, from real memory requirements
 // (indexed by ResourceId; other resources' entries are ignored).
 //
-// Heaps are keyed by memoryTypeBits compatibility and by queue: two transients
-// only share memory if all their accesses are on the same logical queue
-// (handing memory over between queues would need a semaphore); transients used
-// by several queues, and all transients when aliasing is off, go to heaps where
-// nothing aliases. Persistent, history and imported resources are never placed.
+// Heaps are keyed by memoryTypeBits compatibility; all transients go to heaps
+// where nothing aliases when aliasing is off. Persistent, history and imported
+// resources are never placed. A transient may take over memory another one
+// used only if every use of that one is over for the queue of its first use:
+// on the same queue the submission order and its discard barrier see to it;
+// for uses on another queue, `queues` must show a semaphore wait of that queue,
+// at or before its first use, for a batch at or after those uses (the barrier
+// then chains with the wait: takeOverWaits). Without `queues` (nullptr),
+// memory used on one queue goes only to transients starting on that queue, and
+// memory used on several queues is never reused.
 //
 // Aliasing is a sweep over the order, like linear-scan register allocation:
 // at each position the transients whose lifetime ([firstUse, lastUse]) ended
-// give their range back to the heap's free list (coalesced), then the ones
-// starting there (largest first) take the best-fitting aligned free range, or
-// grow the heap. O(n log n) whatever the lifetimes; sorting all transients by
-// size and first-fitting each against every overlapping one packs a little
-// tighter in contrived cases but costs O(n k log k) for k overlapping lifetimes.
+// give their range back to the heap's free list, for the queues they are over
+// for (others are allowed later, as the waits come), then the ones starting
+// there (largest first) take the best-fitting aligned free range their queue
+// may take, or grow the heap. O(n log n) whatever the lifetimes; sorting all
+// transients by size and first-fitting each against every overlapping one
+// packs a little tighter in contrived cases but costs O(n k log k) for k
+// overlapping lifetimes.
 MemoryPlan placeTransients(std::span<const PlannedResource> resources,
-                           std::span<const MemoryRequirements> requirements, bool enableAliasing);
+                           std::span<const MemoryRequirements> requirements, bool enableAliasing,
+                           const CrossQueueOrder* queues = nullptr);
 // The same into `plan`, reusing its memory.
 void placeTransients(std::span<const PlannedResource> resources, std::span<const MemoryRequirements> requirements,
-                     bool enableAliasing, MemoryPlan& plan);
+                     bool enableAliasing, MemoryPlan& plan, const CrossQueueOrder* queues = nullptr);
 // The same from the used transients alone (in any order; each id once), for
 // `resourceCount` resources: what PlanCompiler gathers in the sweep that also
 // collects requirements, so that placement does not walk the resources again.
 void placeTransients(std::span<const TransientLifetime> transients, uint32_t resourceCount,
-                     std::span<const MemoryRequirements> requirements, bool enableAliasing, MemoryPlan& plan);
+                     std::span<const MemoryRequirements> requirements, bool enableAliasing, MemoryPlan& plan,
+                     const CrossQueueOrder* queues = nullptr);
 
 }  // namespace sg::graph

@@ -315,14 +315,15 @@ class ResourceBarrierPlanner {
 }  // namespace
 
 BarrierPlan planBarriers(const RenderGraph& graph, std::span<const PassId> order,
-                         std::span<const PlannedResource> resources, std::span<const ResourceId> aliases) {
+                         std::span<const PlannedResource> resources, std::span<const ResourceId> aliases,
+                         std::span<const PipelineStage> takeOverWaits) {
   BarrierPlan plan;
-  planBarriers(graph, order, resources, aliases, plan);
+  planBarriers(graph, order, resources, aliases, takeOverWaits, plan);
   return plan;
 }
 
 void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::span<const PlannedResource> resources,
-                  std::span<const ResourceId> aliases, BarrierPlan& plan) {
+                  std::span<const ResourceId> aliases, std::span<const PipelineStage> takeOverWaits, BarrierPlan& plan) {
   const auto resourceCount = static_cast<uint32_t>(resources.size());
   const UseTable uses = collectUses(graph, order, resourceCount);
 
@@ -356,6 +357,8 @@ void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::
       aliasedStages |= previous.stages;
       aliasedWrites |= previous.writes;
     }
+    // Occupants on other queues: chain with the semaphore waits that ordered them first.
+    if (aliased && r < takeOverWaits.size()) aliasedStages |= takeOverWaits[r];
     ResourceBarrierPlanner(ResourceId{r}, resource, uses.of(r), order, emitted)
         .run(aliasedStages, aliasedWrites, aliased);
   }

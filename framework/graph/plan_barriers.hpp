@@ -38,15 +38,18 @@ struct BarrierPlan {
 //   version present at frame start, the first reader transitions it and the
 //   other queues' readers wait for it (a hand-off).
 // - A transient that takes over aliased memory gets a discard barrier whose
-//   source covers every stage of the previous occupants on its queue.
+//   source covers every stage and write of the previous occupants and, where
+//   they ran on another queue, the stages of the semaphore waits that ordered
+//   them before it (`takeOverWaits`, per resource; may be empty), to chain with them.
 // - External resources start in their initial state; final barriers leave them
 //   in their final state, after their last use (hand-offs make the other
 //   queues' last readers finish first).
 // `aliases` is the storage the resources' aliasesWith ranges point into.
 BarrierPlan planBarriers(const RenderGraph& graph, std::span<const PassId> order,
-                         std::span<const PlannedResource> resources, std::span<const ResourceId> aliases);
+                         std::span<const PlannedResource> resources, std::span<const ResourceId> aliases,
+                         std::span<const PipelineStage> takeOverWaits = {});
 // The same into `plan`, reusing its memory.
 void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::span<const PlannedResource> resources,
-                  std::span<const ResourceId> aliases, BarrierPlan& plan);
+                  std::span<const ResourceId> aliases, std::span<const PipelineStage> takeOverWaits, BarrierPlan& plan);
 
 }  // namespace sg::graph

@@ -151,22 +151,84 @@ TEST(GraphAliasing, HistoryPersistentAndImportsAreNeverPlaced) {
   EXPECT_EQ(aliasesOf(plan, late), std::vector<ResourceId>{scratch.id});
 }
 
-TEST(GraphAliasing, TransientsUsedOnTwoQueuesNeverAlias) {
+// "early" lives on async compute only; "consume" on graphics reads its
+// neighbour "x", so the graphics batch waits for the async batch before
+// "next" writes "late": late may take early's memory.
+TEST(GraphAliasing, TransientsOnTwoQueuesOrderedByAWaitShareMemory) {
+  RenderGraph g;
+  auto early = g.createBuffer("early", BufferDesc{.size = 1000});
+  auto x = g.createBuffer("x", BufferDesc{.size = 64});
+  auto late = g.createBuffer("late", BufferDesc{.size = 1000});
+  auto& fill = g.addPass("fill", QueueClass::AsyncCompute);
+  early = fill.write(early, Access::StorageWrite);
+  x = fill.write(x, Access::StorageWrite);
+  auto& use = g.addPass("use", QueueClass::AsyncCompute);
+  use.read(early, Access::StorageRead);
+  use.sideEffect();
+  g.addPass("consume", QueueClass::Graphics).sideEffect().read(x, Access::StorageRead);
+  auto& next = g.addPass("next", QueueClass::Graphics, PassKind::Compute);
+  (void)next.write(late, Access::StorageWrite);
+  next.sideEffect();
+
+  const CompiledPlan plan = compile(g, extent());
+  const MemoryPlacement& e = plan.resources[early.id.index].memory;
+  const MemoryPlacement& l = plan.resources[late.id.index].memory;
+  EXPECT_EQ(e.heap, l.heap);
+  EXPECT_EQ(e.offset, l.offset);
+  EXPECT_EQ(aliasesOf(plan, late), std::vector<ResourceId>{early.id});
+  // The discard barrier chains with the wait that orders the async work first.
+  const std::vector<SemaphoreWait> waits = test::waitsBefore(plan, "next");
+  ASSERT_EQ(waits.size(), 1u);
+  EXPECT_EQ(waits[0].queue, QueueClass::AsyncCompute);
+  const std::vector<Barrier> discard = barriersBefore(plan, "next", late);
+  ASSERT_EQ(discard.size(), 1u);
+  EXPECT_TRUE(discard[0].discard);
+  EXPECT_TRUE(contains(discard[0].srcStages, waits[0].dstStages));
+}
+
+// Nothing on graphics waits for the async pass: "late" could run while
+// "early" is still in use, however the order lists them.
+TEST(GraphAliasing, TransientsOnTwoQueuesThatMayRunConcurrentlyDoNotShare) {
+  RenderGraph g;
+  auto early = g.createBuffer("early", BufferDesc{.size = 1000});
+  auto late = g.createBuffer("late", BufferDesc{.size = 1000});
+  auto& fill = g.addPass("fill", QueueClass::AsyncCompute);
+  (void)fill.write(early, Access::StorageWrite);
+  fill.sideEffect();
+  auto& next = g.addPass("next", QueueClass::Graphics, PassKind::Compute);
+  (void)next.write(late, Access::StorageWrite);
+  next.sideEffect();
+
+  const CompiledPlan plan = compile(g, extent());
+  ASSERT_LT(plan.resources[early.id.index].lastUse, plan.resources[late.id.index].firstUse);
+  EXPECT_TRUE(test::waitsBefore(plan, "next").empty());
+  const MemoryPlacement& e = plan.resources[early.id.index].memory;
+  const MemoryPlacement& l = plan.resources[late.id.index].memory;
+  EXPECT_TRUE(e.heap != l.heap || e.offset + e.size <= l.offset || l.offset + l.size <= e.offset);
+  EXPECT_TRUE(aliasesOf(plan, late).empty());
+}
+
+// A transient used on both queues gives its memory to a later graphics
+// transient only once graphics waited for its async use.
+TEST(GraphAliasing, ATransientUsedOnTwoQueuesIsReusedOnlyAfterTheWait) {
   RenderGraph g;
   auto shared = g.createBuffer("shared", BufferDesc{.size = 1000});
+  auto tmp = g.createBuffer("tmp", BufferDesc{.size = 1000});
   auto later = g.createBuffer("later", BufferDesc{.size = 1000});
-  auto& fill = g.addPass("fill", QueueClass::AsyncCompute);
-  shared = fill.write(shared, Access::StorageWrite);
-  g.addPass("read", QueueClass::Graphics, PassKind::Compute).sideEffect().read(shared, Access::StorageRead);
-  auto& next = g.addPass("next", QueueClass::Graphics, PassKind::Compute);
-  (void)next.write(later, Access::StorageWrite);
-  next.sideEffect();
+  auto& produce = g.addPass("produce", QueueClass::Graphics, PassKind::Compute);
+  shared = produce.write(shared, Access::StorageWrite);
+  auto& async = g.addPass("async", QueueClass::AsyncCompute);
+  async.read(shared, Access::StorageRead);
+  tmp = async.write(tmp, Access::StorageWrite);
+  auto& after = g.addPass("after", QueueClass::Graphics, PassKind::Compute);
+  after.read(tmp, Access::StorageRead);
+  (void)after.write(later, Access::StorageWrite);
+  after.sideEffect();
+
   const CompiledPlan plan = compile(g, extent());
-  const PlannedResource& s = plan.resources[shared.id.index];
-  EXPECT_TRUE(s.desc.concurrent);
-  EXPECT_FALSE(plan.heaps[s.memory.heap].aliasing);
-  EXPECT_NE(s.memory.heap, plan.resources[later.id.index].memory.heap);
-  EXPECT_TRUE(aliasesOf(plan, shared).empty());
+  EXPECT_TRUE(plan.resources[shared.id.index].desc.concurrent);
+  EXPECT_EQ(plan.resources[later.id.index].memory.offset, plan.resources[shared.id.index].memory.offset);
+  EXPECT_EQ(aliasesOf(plan, later), std::vector<ResourceId>{shared.id});
 }
 
 TEST(GraphAliasing, PlaceTransientsOnHandMadeLifetimes) {

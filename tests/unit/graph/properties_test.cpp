@@ -53,6 +53,39 @@ RenderGraph randomGraph(uint32_t passCount, uint32_t seed) {
   return g;
 }
 
+// `later` shares bytes with `earlier`: every use of `earlier` on another queue
+// than `later`'s first use is in a batch that queue waited for by then, and
+// `later`'s discard barrier chains with such a wait.
+void checkTakeOverIsOrdered(const CompiledPlan& plan, const std::vector<uint64_t>& value, uint32_t earlier,
+                            uint32_t later) {
+  const PlannedPass& taker = plan.passes[plan.order[plan.resources[later].firstUse].index];
+  PipelineStage waited = PipelineStage::None;
+  for (uint32_t p = 0; p < plan.passes.size(); ++p) {
+    const PlannedPass& pass = plan.passes[p];
+    if (pass.culled || pass.queue == taker.queue) continue;
+    bool uses = false;
+    for (const ResourceAccess& a : plan.accessesOf(PassId{p})) uses = uses || a.resource.index == earlier;
+    if (!uses) continue;
+    bool covered = false;
+    for (uint32_t b = 0; b <= taker.batch; ++b) {
+      if (plan.batches[b].queue != taker.queue) continue;
+      for (const SemaphoreWait& w : plan.waitsOf(plan.batches[b])) {
+        if (w.queue != pass.queue || w.value < value[pass.batch]) continue;
+        covered = true;
+        waited |= w.dstStages;
+      }
+    }
+    EXPECT_TRUE(covered) << plan.resources[later].name << " takes over " << plan.resources[earlier].name
+                         << " while " << pass.name << " may still use it";
+  }
+  if (!any(waited)) return;
+  bool chained = false;
+  for (const Barrier& b : plan.barriersBefore(PassId{static_cast<uint32_t>(&taker - plan.passes.data())})) {
+    chained = chained || (b.resource.index == later && b.discard && any(b.srcStages & waited));
+  }
+  EXPECT_TRUE(chained) << plan.resources[later].name << "'s discard barrier does not chain with the wait";
+}
+
 void checkInvariants(const RenderGraph& g, const CompiledPlan& plan) {
   const VersionTable versions = indexVersions(g);
   const DependencyGraph deps = buildDependencies(g, versions);
@@ -99,6 +132,7 @@ void checkInvariants(const RenderGraph& g, const CompiledPlan& plan) {
       const bool bytes = x.memory.offset < y.memory.offset + y.memory.size && y.memory.offset < x.memory.offset + x.memory.size;
       const bool times = x.firstUse <= y.lastUse && y.firstUse <= x.lastUse;
       EXPECT_FALSE(bytes && times) << x.name << " and " << y.name << " overlap";
+      if (bytes) checkTakeOverIsOrdered(plan, value, x.lastUse < y.firstUse ? a : b, x.lastUse < y.firstUse ? b : a);
     }
   }
 }

@@ -1,0 +1,69 @@
+#include <shadelgraph/graph/cross_queue_order.hpp>
+
+#include <algorithm>
+
+namespace sg::graph {
+
+void orderAcrossQueues(const RenderGraph& graph, std::span<const PassId> order, const DependencyGraph& deps,
+                       CrossQueueOrder& out) {
+  out.batches.clear();
+  out.batchAt.resize(order.size());
+  out.batchOfPass.assign(graph.passCount(), kInvalidIndex);
+  std::array<uint32_t, kQueueClassCount> submitted{};
+  for (uint32_t position = 0; position < order.size(); ++position) {
+    const QueueClass queue = graph.pass(order[position]).queue;
+    if (out.batches.empty() || out.batches.back().queue != queue) {
+      ++submitted[queueIndex(queue)];
+      out.batches.push_back({.queue = queue, .firstPosition = position, .submitted = submitted});
+    }
+    out.batchAt[position] = static_cast<uint32_t>(out.batches.size() - 1);
+    out.batchOfPass[order[position].index] = out.batchAt[position];
+  }
+  for (const Dependency& e : deps.edges) {
+    const uint32_t from = out.batchOfPass[e.from.index];
+    const uint32_t to = out.batchOfPass[e.to.index];
+    if (from == kInvalidIndex || to == kInvalidIndex) continue;
+    const uint32_t producer = queueIndex(out.batches[from].queue);
+    CrossQueueOrder::Batch& waiter = out.batches[to];
+    if (producer == queueIndex(waiter.queue)) continue;
+    // A batch's value: its 1-based index among its queue's batches.
+    waiter.waitValue[producer] = std::max(waiter.waitValue[producer], out.batches[from].submitted[producer]);
+    waiter.waitStages[producer] |= any(e.dstStages) ? e.dstStages : PipelineStage::AllCommands;
+  }
+  for (uint32_t waiting = 0; waiting < kQueueClassCount; ++waiting) {
+    for (uint32_t producer = 0; producer < kQueueClassCount; ++producer) {
+      out.firstCover[waiting][producer].assign(submitted[producer], kInvalidIndex);
+    }
+  }
+  std::array<std::array<uint32_t, kQueueClassCount>, kQueueClassCount> covered{};  // [waiting][producer]
+  for (uint32_t b = 0; b < out.batches.size(); ++b) {
+    const CrossQueueOrder::Batch& batch = out.batches[b];
+    const uint32_t waiting = queueIndex(batch.queue);
+    for (uint32_t producer = 0; producer < kQueueClassCount; ++producer) {
+      for (uint32_t& c = covered[waiting][producer]; c < batch.waitValue[producer]; ++c) {
+        out.firstCover[waiting][producer][c] = b;
+      }
+    }
+  }
+}
+
+uint32_t CrossQueueOrder::availableFrom(uint32_t last, QueueMask used, QueueClass queue,
+                                        PipelineStage& waitStages) const {
+  uint32_t position = last + 1;
+  const uint32_t waiting = queueIndex(queue);
+  const Batch& lastBatch = batches[batchAt[last]];
+  for (uint32_t producer = 0; producer < kQueueClassCount; ++producer) {
+    if (producer == waiting || !any(used & toMask(static_cast<QueueClass>(producer)))) continue;
+    // The value of the producer's last batch at or before `last`.
+    const uint32_t needed = lastBatch.submitted[producer];
+    if (needed == 0) continue;  // not used there before `last`
+    const uint32_t proving = firstCover[waiting][producer][needed - 1];
+    if (proving == kInvalidIndex) return kInvalidIndex;
+    // That batch waits for `needed` or more itself: its stages are the ones to chain with.
+    waitStages |= batches[proving].waitStages[producer];
+    position = std::max(position, batches[proving].firstPosition);
+  }
+  return position;
+}
+
+}  // namespace sg::graph
