@@ -108,24 +108,7 @@ struct Config {
   bool baseline = false;      // decoupled: shadel-mark as before issue 14
 };
 
-<<<<<<< HEAD
-std::vector<Config> sweep() {
-=======
-struct BenchArgs {
-  std::vector<std::string> scenes;
-  std::string out = "out/bench";
-  std::vector<std::string> sizes{"640x360"};
-  int repetitions = 5;
-  int flickerFrames = 12;
-  int referenceScale = 4;  // reference: this many samples per pixel side (4 -> 16 spp)
-  bool shimmer = false;    // also the shimmer case: the default scene's gold sphere close up
-  std::vector<std::string> materials;  // non-empty: the material sweep instead (bench_materials.cpp)
-  bool baseline = false;     // each filter also with shadel-mark as before issue 14
-  bool filtersOnly = false;  // no bias sweep
-};
-
 std::vector<Config> sweep(const BenchArgs& args) {
->>>>>>> h-mark
   std::vector<Config> configs{{"forward", false}};
   for (int filter : {0, 1, 2}) {
     const std::string name = std::string("decoupled ") + (filter == 0 ? "point" : filter == 1 ? "bilinear" : "trilinear");
@@ -338,29 +321,8 @@ void runBench(const BenchArgs& args) {
 void addBenchCommand(CLI::App& app) {
   static BenchArgs args;
   auto* cmd = app.add_subcommand("bench", "Measure what accuracy costs in time: configurations side by side");
-<<<<<<< HEAD
   static GraphBenchArgs graphArgs;
   auto* graph = addBenchOptions(*cmd, args, graphArgs);
-=======
-  cmd->add_option("scenes", args.scenes, "scenes (default: the built-in scene)");
-  cmd->add_option("--out", args.out, "output directory")->capture_default_str();
-  cmd->add_option("--sizes", args.sizes, "output sizes, e.g. 640x360 1280x720 (each side 1 to " + std::to_string(kMaxOutputSide) + ")")->capture_default_str();
-  cmd->add_option("--repetitions", args.repetitions, "timed frames per configuration, 1 or more")->capture_default_str();
-  cmd->add_option("--flicker-frames", args.flickerFrames, "frames along the sub-pixel camera path, 2 or more")->capture_default_str();
-  cmd->add_option("--reference-scale", args.referenceScale, "reference samples per pixel side, 1 to 8")->capture_default_str();
-  cmd->add_flag("--baseline", args.baseline,
-                "each decoupled filter also with shadel-mark as before issue 14 (the trilinear footprint whatever "
-                "the filter, a remap read per tap), alternated in the same run");
-  cmd->add_flag("--filters-only", args.filtersOnly, "forward and the three filters only (no bias sweep)");
-  auto* shimmer = cmd->add_flag("--shimmer", args.shimmer, "add the shimmer case (default scene's gold sphere, close up)");
-  cmd->add_option("--materials", args.materials,
-                  "instead of the configuration sweep: for each of these materials (comma-separated, e.g. "
-                  "gltf-pbr,bumps,skin,marble) forward and decoupled trilinear with the adjuster, against a forward "
-                  "reference of the same material; writes materials.json and materials.csv (--flicker-frames and "
-                  "--shimmer do not apply)")
-      ->delimiter(',')
-      ->excludes(shimmer);
->>>>>>> h-mark
   cmd->callback([cmd] {
     if (cmd->got_subcommand("graph")) return;
     runBench(args);

@@ -120,6 +120,10 @@ CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& gr
   command.add_option("--repetitions", args.repetitions, "timed frames per configuration, 1 or more")->capture_default_str();
   command.add_option("--flicker-frames", args.flickerFrames, "frames along the sub-pixel camera path, 2 or more")->capture_default_str();
   command.add_option("--reference-scale", args.referenceScale, "reference samples per pixel side, 1 to 8")->capture_default_str();
+  command.add_flag("--baseline", args.baseline,
+                   "each decoupled filter also with shadel-mark as before issue 14 (the trilinear footprint whatever "
+                   "the filter, a remap read per tap), alternated in the same run");
+  command.add_flag("--filters-only", args.filtersOnly, "forward and the three filters only (no bias sweep)");
   auto* shimmer = command.add_flag("--shimmer", args.shimmer, "add the shimmer case (default scene's gold sphere, close up)");
   command.add_option("--materials", args.materials,
                   "instead of the configuration sweep: for each of these materials (comma-separated, e.g. "

@@ -74,6 +74,8 @@ struct BenchArgs {
   int referenceScale = 4;  // reference: this many samples per pixel side (4 -> 16 spp)
   bool shimmer = false;    // also the shimmer case: the default scene's gold sphere close up
   std::vector<std::string> materials;  // non-empty: the material sweep instead (bench_materials.cpp)
+  bool baseline = false;     // each filter also with shadel-mark as before issue 14
+  bool filtersOnly = false;  // no bias sweep
 };
 // bench's options, and its subcommand "graph" (returned) with graphArgs'.
 CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& graphArgs);
