@@ -2,7 +2,6 @@
 // render graph, a per-pass timing table, optional stats JSON and Chrome trace.
 #include <algorithm>
 #include <cstdio>
-#include <limits>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -11,7 +10,6 @@
 
 #include <shadelgraph/gpu/chrome_trace.hpp>
 #include <shadelgraph/image/png.hpp>
-#include <shadelgraph/shadel/shadel_storage.hpp>
 
 #include "app_session.hpp"
 #include "command_options.hpp"
