@@ -5,6 +5,7 @@
 #include <functional>
 #include <initializer_list>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -28,9 +29,9 @@ class ShapeChecker {
     if (!json.is_object()) fail("the document", "an object", json);
     property(json, "");
     requireObject(json, "asset", "", [&](const Json& asset, const std::string& path) {
-      requireString(asset, "version", path);
+      required(asset, "version", path, glTF2Version);
       optionalString(asset, "generator", path);
-      optionalString(asset, "minVersion", path);
+      optional(asset, "minVersion", path, glTF2Version);
     });
     optionalStringArray(json, "extensionsUsed", "");
     optionalStringArray(json, "extensionsRequired", "");
@@ -206,10 +207,38 @@ class ShapeChecker {
     uint(value, path);
     if (value.get<uint64_t>() == 0) fail(path, "an integer >= 1", value);
   }
-  static void numbers(const Json& value, const std::string& path, size_t count) {
+  // Material factors the schema bounds to [0, 1]: outside it they change
+  // what is drawn (a metallic of -1 or a base colour of 3 is no material).
+  static void unitNumber(const Json& value, const std::string& path) {
+    number(value, path);
+    if (!(value.get<double>() >= 0.0 && value.get<double>() <= 1.0)) fail(path, "a number in [0, 1]", value);
+  }
+  static void nonNegativeNumber(const Json& value, const std::string& path) {
+    number(value, path);
+    if (!(value.get<double>() >= 0.0)) fail(path, "a number >= 0", value);
+  }
+  // "2.0", "2.1": a major version other than 2 is a format this loader does
+  // not know (the validator's UNKNOWN_ASSET_MAJOR_VERSION); minVersion above
+  // 2.0 asks for features it does not have.
+  static void glTF2Version(const Json& value, const std::string& path) {
+    string(value, path);
+    const std::string text = value.get<std::string>();
+    const size_t dot = text.find('.');
+    const auto digits = [](std::string_view s) {
+      return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+    };
+    if (dot == std::string::npos || !digits(std::string_view(text).substr(0, dot)) ||
+        !digits(std::string_view(text).substr(dot + 1)))
+      fail(path, "a version written <major>.<minor>", value);
+    const bool minimum = path.ends_with("minVersion");
+    if (text.substr(0, dot) != "2" || (minimum && text != "2.0"))
+      fail(path, minimum ? "2.0 (this loader reads glTF 2.0)" : "a glTF 2.x version (this loader reads glTF 2.0)",
+           value);
+  }
+  static void numbers(const Json& value, const std::string& path, size_t count, void (*each)(const Json&, const std::string&) = number) {
     if (!value.is_array() || (count && value.size() != count))
       fail(path, count ? "an array of " + std::to_string(count) + " numbers" : "an array of numbers", value);
-    for (size_t i = 0; i < value.size(); ++i) number(value[i], path + "/" + std::to_string(i));
+    for (size_t i = 0; i < value.size(); ++i) each(value[i], path + "/" + std::to_string(i));
   }
 
   void optionalString(const Json& o, const char* key, const std::string& path) { optional(o, key, path, string); }
@@ -225,6 +254,10 @@ class ShapeChecker {
   void optionalInt32(const Json& o, const char* key, const std::string& path) { optional(o, key, path, int32); }
   void optionalNumbers(const Json& o, const char* key, const std::string& path, size_t count) {
     optional(o, key, path, [count](const Json& value, const std::string& p) { numbers(value, p, count); });
+  }
+  void optionalUnitNumber(const Json& o, const char* key, const std::string& path) { optional(o, key, path, unitNumber); }
+  void optionalUnitNumbers(const Json& o, const char* key, const std::string& path, size_t count) {
+    optional(o, key, path, [count](const Json& value, const std::string& p) { numbers(value, p, count, unitNumber); });
   }
   void optionalIndexArray(const Json& o, const char* key, const std::string& path) {
     optional(o, key, path, [](const Json& value, const std::string& p) {
@@ -327,11 +360,12 @@ class ShapeChecker {
     optionalInt32(view, "target", path);
   }
 
-  void textureInfo(const Json& parent, const char* key, const std::string& path, const char* extraNumber = nullptr) {
+  void textureInfo(const Json& parent, const char* key, const std::string& path, const char* extraNumber = nullptr,
+                   void (*extraCheck)(const Json&, const std::string&) = number) {
     optionalObject(parent, key, path, [&](const Json& info, const std::string& p) {
       requireIndex(info, "index", p);
       optionalInt32(info, "texCoord", p);
-      if (extraNumber) optionalNumber(info, extraNumber, p);
+      if (extraNumber) optional(info, extraNumber, p, extraCheck);
       if (const Json* extensions = member(info, "extensions"))
         optionalObject(*extensions, "KHR_texture_transform", join(p, "extensions"),
                        [&](const Json& transform, const std::string& tp) {
@@ -345,18 +379,18 @@ class ShapeChecker {
 
   void material(const Json& material, const std::string& path) {
     optionalObject(material, "pbrMetallicRoughness", path, [&](const Json& pbr, const std::string& p) {
-      optionalNumbers(pbr, "baseColorFactor", p, 4);
+      optionalUnitNumbers(pbr, "baseColorFactor", p, 4);
       textureInfo(pbr, "baseColorTexture", p);
-      optionalNumber(pbr, "metallicFactor", p);
-      optionalNumber(pbr, "roughnessFactor", p);
+      optionalUnitNumber(pbr, "metallicFactor", p);
+      optionalUnitNumber(pbr, "roughnessFactor", p);
       textureInfo(pbr, "metallicRoughnessTexture", p);
     });
     textureInfo(material, "normalTexture", path, "scale");
-    textureInfo(material, "occlusionTexture", path, "strength");
+    textureInfo(material, "occlusionTexture", path, "strength", unitNumber);
     textureInfo(material, "emissiveTexture", path);
-    optionalNumbers(material, "emissiveFactor", path, 3);
+    optionalUnitNumbers(material, "emissiveFactor", path, 3);
     optionalEnum(material, "alphaMode", path, {"OPAQUE", "MASK", "BLEND"});
-    optionalNumber(material, "alphaCutoff", path);
+    optional(material, "alphaCutoff", path, nonNegativeNumber);
     optionalBool(material, "doubleSided", path);
   }
 

@@ -270,6 +270,20 @@ const Mutation kValidatorClasses[] = {
     {"MatrixWithTrs", "/nodes/1/matrix", "[1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,3,1]", "/nodes/1: has both a matrix and translation"},
     {"ShearedMatrix", "/nodes/0/matrix", "[1,0,0,0, 1,1,0,0, 0,0,1,0, 0,0,0,1]", "/nodes/0/matrix: is not decomposable"},
     {"ProjectiveMatrix", "/nodes/0/matrix", "[1,0,0,0.5, 0,1,0,0, 0,0,1,0, 0,0,0,1]", "last row is not 0, 0, 0, 1"},
+    // Material factors outside [0, 1] (VALUE_NOT_IN_RANGE) are no material.
+    {"BaseColorAboveOne", "/materials/0/pbrMetallicRoughness/baseColorFactor", "[1, 3, 1, 1]",
+     "/materials/0/pbrMetallicRoughness/baseColorFactor/1: expected a number in [0, 1], got the number 3"},
+    {"MetallicNegative", "/materials/0/pbrMetallicRoughness/metallicFactor", "-1",
+     "/materials/0/pbrMetallicRoughness/metallicFactor: expected a number in [0, 1], got the number -1"},
+    {"RoughnessAboveOne", "/materials/0/pbrMetallicRoughness/roughnessFactor", "1.5", "roughnessFactor: expected a number in [0, 1]"},
+    {"EmissiveAboveOne", "/materials/0/emissiveFactor", "[0, 0, 2]", "/materials/0/emissiveFactor/2: expected a number in [0, 1]"},
+    {"OcclusionStrengthNegative", "/materials/0/occlusionTexture", R"({"index": 0, "strength": -0.5})",
+     "/materials/0/occlusionTexture/strength: expected a number in [0, 1]"},
+    {"AlphaCutoffNegative", "/materials/0/alphaCutoff", "-0.5", "/materials/0/alphaCutoff: expected a number >= 0"},
+    // UNKNOWN_ASSET_MAJOR_VERSION, and a minVersion this loader cannot meet.
+    {"AssetVersion3", "/asset/version", R"("3.0")", "/asset/version: expected a glTF 2.x version (this loader reads glTF 2.0), got the string \"3.0\""},
+    {"AssetVersionMalformed", "/asset/version", R"("2")", "/asset/version: expected a version written <major>.<minor>"},
+    {"AssetMinVersion21", "/asset/minVersion", R"("2.1")", "/asset/minVersion: expected 2.0 (this loader reads glTF 2.0)"},
 };
 
 class ValidatorClass : public ::testing::TestWithParam<Mutation> {};
@@ -461,7 +475,12 @@ TEST(HostileInput, ErrorsQuoteAtMostAFewHundredCharacters) {
     document["asset"]["version"] = std::string(100000, 'z');
     document["nodes"][0]["mesh"] = std::string(100000, 'w');
     const std::string message = gltfError(writeGltf(dir, document));
-    EXPECT_THAT(message, HasSubstr("/nodes/0/mesh: expected an integer >= 0, got the string \"www"));
+    EXPECT_THAT(message, HasSubstr("/asset/version: expected a version written <major>.<minor>, got the string \"zzz"));
+    EXPECT_LT(message.size(), 400u);
+    document["asset"]["version"] = "2.0";
+    const std::string meshMessage = gltfError(writeGltf(dir, document));
+    EXPECT_THAT(meshMessage, HasSubstr("/nodes/0/mesh: expected an integer >= 0, got the string \"www"));
+    EXPECT_LT(meshMessage.size(), 400u);
   }
 }
 
