@@ -21,39 +21,38 @@ void FreeRanges::clear(QueueMask queues) {
 uint64_t FreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
                               std::vector<uint32_t>& previous) {
   const QueueMask taker = queueCount(queue) == 1 ? queue : QueueMask::None;
-  // One walk: runs of adjacent fragments `taker` may take, the best fitting kept.
-  std::size_t best = 0, bestEnd = 0;  // fragments of the best run: [best, bestEnd)
-  uint64_t bestBegin = 0, bestLength = ~uint64_t{0};
-  bool found = false;
-  uint64_t runBegin = 0, runEnd = 0;
+  // One walk over runs of adjacent fragments `taker` may take, the best fitting kept.
+  constexpr uint64_t kNoRun = ~uint64_t{0};  // runEnd while not in a run: no fragment begins there
+  std::size_t best = 0, bestEnd = 0;          // fragments of the best run: [best, bestEnd)
+  uint64_t bestBegin = 0, bestLength = kNoRun;
+  uint64_t runBegin = 0, runEnd = kNoRun;
   std::size_t runFirst = 0;
-  bool inRun = false;
   const auto closeRun = [&](std::size_t runLast) {
     const uint64_t length = runEnd - runBegin;
-    if (length < size || length >= bestLength || alignUp(runBegin, alignment) + size > runEnd) return;
+    if (runEnd == kNoRun || length < size || length >= bestLength || alignUp(runBegin, alignment) + size > runEnd) return;
     best = runFirst;
     bestEnd = runLast;
     bestBegin = runBegin;
     bestLength = length;
-    found = true;
   };
   const std::size_t n = fragments_.size();
   for (std::size_t i = 0; i < n; ++i) {
     const Fragment& f = fragments_[i];
     if (!any(f.queues & taker)) {
-      if (inRun) closeRun(i);
-      inRun = false;
-    } else if (inRun && f.begin == runEnd) {
-      runEnd = f.end;
+      closeRun(i);
+      runEnd = kNoRun;
     } else {
-      if (inRun) closeRun(i);
-      inRun = true;
-      runFirst = i;
-      runBegin = f.begin;
+      if (f.begin != runEnd) {
+        closeRun(i);
+        runFirst = i;
+        runBegin = f.begin;
+      }
       runEnd = f.end;
     }
   }
-  if (inRun) closeRun(n);
+  closeRun(n);
+  const bool found = bestLength != kNoRun;
+  const bool inRun = runEnd != kNoRun;
 
   uint64_t offset = 0;
   if (found) {

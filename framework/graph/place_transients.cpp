@@ -34,6 +34,7 @@ constexpr QueueClass kQueues[] = {QueueClass::Graphics, QueueClass::AsyncCompute
 // (kInvalidIndex: never), and the waits that prove it.
 uint32_t availableFrom(const TransientLifetime& t, QueueClass queue, const CrossQueueOrder* queues,
                        PipelineStage& waitStages) {
+  if (t.queues == toMask(queue)) return t.lastUse + 1;  // its own queue: submission order (and the discard barrier)
   if (queues) return queues->availableFrom(t.lastUse, t.queues, queue, waitStages);
   return t.queues == toMask(queue) ? t.lastUse + 1 : kInvalidIndex;
 }
