@@ -46,7 +46,9 @@ void assignQueues(const RenderGraph& graph, std::span<const PassId> order, const
   schedule.batches.clear();
   schedule.waits.clear();
   schedule.passBatch.assign(graph.passCount(), kInvalidIndex);
+  // Sized once (a batch per position at most) instead of regrown batch by batch.
   std::vector<uint64_t> batchValue;
+  batchValue.reserve(order.size());
   std::array<std::vector<uint32_t>, kQueueClassCount> batchesOfQueue;  // by value - 1
 
   for (uint32_t position = 0; position < order.size(); ++position) {
@@ -54,6 +56,7 @@ void assignQueues(const RenderGraph& graph, std::span<const PassId> order, const
     const QueueClass queue = graph.pass(p).queue;
     if (schedule.batches.empty() || schedule.batches.back().queue != queue) {
       auto& ofQueue = batchesOfQueue[queueIndex(queue)];
+      if (ofQueue.empty()) ofQueue.reserve(order.size() - position);
       ofQueue.push_back(static_cast<uint32_t>(schedule.batches.size()));
       batchValue.push_back(ofQueue.size());
       schedule.batches.push_back({.queue = queue, .passes = {position, 0}});

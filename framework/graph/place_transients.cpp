@@ -1,7 +1,6 @@
 #include <shadelgraph/graph/place_transients.hpp>
 
 #include <algorithm>
-#include <bit>
 #include <stdexcept>
 
 namespace sg::graph {
@@ -14,120 +13,6 @@ uint64_t alignUp(uint64_t value, uint64_t alignment) {
 }
 
 }  // namespace
-
-namespace detail {
-namespace {
-
-using Blocks = std::vector<FreeList::Block>;
-
-// Adds [begin, end) to `blocks`, merging it with its neighbours.
-void insertBlock(Blocks& blocks, uint64_t begin, uint64_t end) {
-  FreeList::Block block{begin, end};
-  auto next = std::lower_bound(blocks.begin(), blocks.end(), begin,
-                               [](const FreeList::Block& b, uint64_t o) { return b.begin < o; });
-  if (next != blocks.end() && next->begin == block.end) {
-    block.end = next->end;
-    next = blocks.erase(next);
-  }
-  if (next != blocks.begin() && std::prev(next)->end == block.begin) {
-    std::prev(next)->end = block.end;
-    return;
-  }
-  blocks.insert(next, block);
-}
-
-// Removes [begin, end) from `blocks`, wherever it overlaps them.
-void removeRange(Blocks& blocks, uint64_t begin, uint64_t end) {
-  auto first = std::lower_bound(blocks.begin(), blocks.end(), begin,
-                                [](const FreeList::Block& b, uint64_t o) { return b.end <= o; });
-  auto last = first;
-  while (last != blocks.end() && last->begin < end) ++last;
-  if (first == last) return;
-  FreeList::Block rest[2];
-  std::size_t count = 0;
-  if (first->begin < begin) rest[count++] = {first->begin, begin};
-  if (std::prev(last)->end > end) rest[count++] = {end, std::prev(last)->end};
-  blocks.insert(blocks.erase(first, last), rest, rest + count);
-}
-
-}  // namespace
-
-uint64_t FreeList::allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
-                            std::vector<uint32_t>& previous) {
-  static const Blocks kNone;
-  const uint32_t q = queueCount(queue) == 1 ? queueIndex(static_cast<QueueClass>(std::countr_zero(
-                                                  static_cast<uint32_t>(queue))))
-                                            : kQueueClassCount;
-  const Blocks& blocks = q < kQueueClassCount ? blocks_[q] : kNone;
-  std::size_t best = blocks.size();
-  for (std::size_t i = 0; i < blocks.size(); ++i) {
-    const Block& b = blocks[i];
-    if (b.end - b.begin < size || alignUp(b.begin, alignment) + size > b.end) continue;
-    if (best == blocks.size() || b.end - b.begin < blocks[best].end - blocks[best].begin) best = i;
-  }
-  uint64_t offset = 0;
-  if (best == blocks.size()) {
-    // Grow the heap, starting inside a free range that ends at its top.
-    const uint64_t start = !blocks.empty() && blocks.back().end == heapSize ? blocks.back().begin : heapSize;
-    offset = alignUp(start, alignment);
-    // Fresh padding below the new range is free for every queue.
-    if (offset > heapSize) {
-      for (uint32_t other = 0; other < kQueueClassCount; ++other) {
-        if (any(queues_ & toMask(static_cast<QueueClass>(other)))) insertBlock(blocks_[other], heapSize, offset);
-      }
-    }
-    heapSize = offset + size;
-  } else {
-    offset = alignUp(blocks[best].begin, alignment);
-  }
-  for (uint32_t other = 0; other < kQueueClassCount; ++other) {
-    if (any(queues_ & toMask(static_cast<QueueClass>(other)))) removeRange(blocks_[other], offset, offset + size);
-  }
-  takeOver(offset, offset + size, previous);
-  return offset;
-}
-
-void FreeList::release(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues) {
-  auto at = std::lower_bound(lastUsers_.begin(), lastUsers_.end(), offset,
-                             [](const LastUser& u, uint64_t o) { return u.begin < o; });
-  queues &= queues_;
-  lastUsers_.insert(at, {offset, offset + size, occupant, queues});
-  for (uint32_t q = 0; q < kQueueClassCount; ++q) {
-    if (any(queues & toMask(static_cast<QueueClass>(q)))) insertBlock(blocks_[q], offset, offset + size);
-  }
-}
-
-void FreeList::allow(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues) {
-  queues &= queues_;
-  if (!any(queues)) return;
-  auto it = std::lower_bound(lastUsers_.begin(), lastUsers_.end(), offset,
-                             [](const LastUser& u, uint64_t o) { return u.end <= o; });
-  for (; it != lastUsers_.end() && it->begin < offset + size; ++it) {
-    if (it->occupant != occupant) continue;
-    for (uint32_t q = 0; q < kQueueClassCount; ++q) {
-      const QueueMask m = toMask(static_cast<QueueClass>(q));
-      if (!any(queues & m) || any(it->queues & m)) continue;
-      it->queues |= m;
-      insertBlock(blocks_[q], it->begin, it->end);
-    }
-  }
-}
-
-// [begin, end) is allocated again: report and forget its last users.
-void FreeList::takeOver(uint64_t begin, uint64_t end, std::vector<uint32_t>& previous) {
-  auto first = std::lower_bound(lastUsers_.begin(), lastUsers_.end(), begin,
-                                [](const LastUser& u, uint64_t o) { return u.end <= o; });
-  auto last = first;
-  while (last != lastUsers_.end() && last->begin < end) previous.push_back((last++)->occupant);
-  if (first == last) return;
-  LastUser rest[2];
-  std::size_t count = 0;
-  if (first->begin < begin) rest[count++] = {first->begin, begin, first->occupant, first->queues};
-  if (std::prev(last)->end > end) rest[count++] = {end, std::prev(last)->end, std::prev(last)->occupant, std::prev(last)->queues};
-  lastUsers_.insert(lastUsers_.erase(first, last), rest, rest + count);
-}
-
-}  // namespace detail
 
 namespace {
 
@@ -149,6 +34,7 @@ constexpr QueueClass kQueues[] = {QueueClass::Graphics, QueueClass::AsyncCompute
 // (kInvalidIndex: never), and the waits that prove it.
 uint32_t availableFrom(const TransientLifetime& t, QueueClass queue, const CrossQueueOrder* queues,
                        PipelineStage& waitStages) {
+  if (t.queues == toMask(queue)) return t.lastUse + 1;  // its own queue: submission order (and the discard barrier)
   if (queues) return queues->availableFrom(t.lastUse, t.queues, queue, waitStages);
   return t.queues == toMask(queue) ? t.lastUse + 1 : kInvalidIndex;
 }
@@ -212,7 +98,7 @@ void placeTransients(std::span<const TransientLifetime> transients, uint32_t res
     begin = end;
   }
 
-  std::vector<detail::FreeList>& freeLists = scratch.freeLists;  // kept for their memory; cleared when a heap reuses one
+  std::vector<FreeRanges>& freeLists = scratch.freeLists;  // kept for their memory; cleared when a heap reuses one
   std::vector<uint64_t>& unaliasedSize = scratch.unaliasedSize;
   std::vector<std::pair<uint32_t, uint32_t>>& aliasPairs = scratch.aliasPairs;
   std::vector<uint32_t>& previous = scratch.previous;

@@ -2,62 +2,15 @@
 
 #include <shadelgraph/graph/compiled_plan.hpp>
 #include <shadelgraph/graph/cross_queue_order.hpp>
+#include <shadelgraph/graph/free_ranges.hpp>
 #include <shadelgraph/graph/memory_requirements.hpp>
 
-#include <array>
 #include <cstdint>
 #include <span>
 #include <utility>
 #include <vector>
 
 namespace sg::graph {
-
-namespace detail {
-
-// Free byte ranges of one aliasing heap. Each range remembers who used it last
-// (what the next transient placed there aliases with, and waits for) and the
-// queues allowed to take it over yet: the last user's queues at once, the
-// others once a semaphore wait proves its work done (CrossQueueOrder).
-class FreeList {
- public:
-  // Best fit: the smallest free range `queue` may take holding `size` bytes at
-  // `alignment`; otherwise at the end of the heap (which grows). Appends the
-  // transients that last used the bytes taken to `previous`.
-  uint64_t allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
-                    std::vector<uint32_t>& previous);
-  // [offset, offset + size), last used by `occupant`, is free for `queues`.
-  void release(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues);
-  // What is still free of `occupant`'s range [offset, offset + size) may now be taken by `queues` too.
-  void allow(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues);
-  // Empties the list; only `queues` will ever take ranges from it.
-  void clear(QueueMask queues) {
-    for (auto& blocks : blocks_) blocks.clear();
-    lastUsers_.clear();
-    queues_ = queues;
-  }
-
-  struct Block {
-    uint64_t begin;
-    uint64_t end;
-  };
-
- private:
-  struct LastUser {
-    uint64_t begin;
-    uint64_t end;
-    uint32_t occupant;
-    QueueMask queues;  // the queues whose free list holds it
-  };
-
-  void takeOver(uint64_t begin, uint64_t end, std::vector<uint32_t>& previous);
-
-  // Per queue: the ranges it may take, by offset, coalesced (never adjacent).
-  std::array<std::vector<Block>, kQueueClassCount> blocks_;
-  std::vector<LastUser> lastUsers_;  // freed ranges by offset, not coalesced
-  QueueMask queues_ = ~QueueMask::None;  // the queues with a free list
-};
-
-}  // namespace detail
 
 // A used transient as placement sees it (requirements are looked up by id).
 struct TransientLifetime {
@@ -86,7 +39,7 @@ struct MemoryPlan {
     std::vector<uint32_t> byStart;  // into transients
     std::vector<uint32_t> byEnd;
     std::vector<uint32_t> bucketStarts;
-    std::vector<detail::FreeList> freeLists;  // per heap (aliasing heaps only use theirs)
+    std::vector<FreeRanges> freeLists;        // per heap (aliasing heaps only use theirs)
     std::vector<uint64_t> unaliasedSize;      // per heap: its size if nothing aliased
     std::vector<std::pair<uint32_t, uint32_t>> aliasPairs;
     std::vector<uint32_t> previous;

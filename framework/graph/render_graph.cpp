@@ -6,26 +6,35 @@ namespace sg::graph {
 
 RenderGraph::RenderGraph() : declaration_(std::make_unique<GraphDeclaration>()) {}
 
-ResourceHandle RenderGraph::add(ResourceDecl decl) {
-  std::vector<ResourceDecl>& resources = declaration_->resources;
-  declaration_->traits.push_back({decl.kind, decl.type, decl.readOnly, decl.image.format});
-  resources.push_back(std::move(decl));
-  declaration_->versionCounts.push_back(1);
-  return {ResourceId{static_cast<uint32_t>(resources.size() - 1)}, 0};
+ResourceHandle RenderGraph::add(ResourceDecl&& decl) {
+  declaration_->resources.push_back(std::move(decl));
+  return added();
 }
 
+ResourceHandle RenderGraph::added() {
+  const ResourceDecl& decl = declaration_->resources.back();
+  declaration_->traits.push_back({decl.kind, decl.type, decl.readOnly, decl.image.format});
+  declaration_->versionCounts.push_back(1);
+  return {ResourceId{static_cast<uint32_t>(declaration_->resources.size() - 1)}, 0};
+}
+
+// Transients (most resources of a frame) are built in place: no decl to move.
 ResourceHandle RenderGraph::createImage(std::string name, const ImageDesc& desc) {
-  ResourceDecl decl{.kind = ResourceKind::TransientImage, .type = ResourceType::Image};
+  ResourceDecl& decl = declaration_->resources.emplace_back();
+  decl.kind = ResourceKind::TransientImage;
+  decl.type = ResourceType::Image;
   decl.name = std::move(name);
   decl.image = desc;
-  return add(std::move(decl));
+  return added();
 }
 
 ResourceHandle RenderGraph::createBuffer(std::string name, const BufferDesc& desc) {
-  ResourceDecl decl{.kind = ResourceKind::TransientBuffer, .type = ResourceType::Buffer};
+  ResourceDecl& decl = declaration_->resources.emplace_back();
+  decl.kind = ResourceKind::TransientBuffer;
+  decl.type = ResourceType::Buffer;
   decl.name = std::move(name);
   decl.buffer = desc;
-  return add(std::move(decl));
+  return added();
 }
 
 namespace {

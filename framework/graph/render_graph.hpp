@@ -62,7 +62,9 @@ class RenderGraph {
   std::span<const ResourceHandle> outputs() const { return declaration_->outputs; }
 
  private:
-  ResourceHandle add(ResourceDecl decl);
+  ResourceHandle add(ResourceDecl&& decl);
+  // Registers the resource last appended to the declaration (its traits and version count).
+  ResourceHandle added();
 
   // On the heap so that Pass builders keep pointing at it when the graph moves.
   std::unique_ptr<GraphDeclaration> declaration_;

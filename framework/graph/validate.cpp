@@ -72,12 +72,42 @@ class Validator {
         error(nameOf(id), "", "uses an invalid resource handle");
         continue;
       }
-      checkAccess(id, a);
+      // The common case (nothing to report but maybe the version) without the calls that build messages.
+      if (accessLooksFine(pass, graph_.declaration().traits[a.resource.index], a)) {
+        checkVersion(id, a);
+      } else {
+        checkAccess(id, a);
+      }
       // Compare with earlier accesses of the same resource in this pass (passes touch few resources).
       for (std::size_t j = 0; j < i; ++j) {
         if (accesses[j].resource == a.resource) checkAccessPair(id, accesses[j], a);
       }
     }
+  }
+
+  // True when checkAccess() finds nothing wrong but maybe the version: the same conditions, as one test.
+  static bool accessLooksFine(const PassDecl& pass, const ResourceTraits& r, const ResourceAccess& a) {
+    const detail::AccessTraits& t = detail::traits(a.access);
+    if (a.write != t.write) return false;
+    if ((r.type == ResourceType::Buffer && t.imageOnly) || (r.type == ResourceType::Image && t.bufferOnly)) return false;
+    if (!allowedInPass(a.access, pass.kind)) return false;
+    if (any(a.shaderStages & ~(t.shader ? shaderStagesOf(pass.kind) : ShaderStage::None))) return false;
+    if (r.type == ResourceType::Image && !formatFits(r, a)) return false;
+    return !(a.write && (r.kind == ResourceKind::History || r.readOnly));
+  }
+
+  // The shader stages a pass of `kind` runs.
+  static ShaderStage shaderStagesOf(PassKind kind) {
+    return kind == PassKind::Raster    ? ShaderStage::Vertex | ShaderStage::Fragment
+           : kind == PassKind::Compute ? ShaderStage::Compute
+                                       : ShaderStage::None;
+  }
+
+  // Color attachments need a color format, depth attachments a depth format.
+  static bool formatFits(const ResourceTraits& r, const ResourceAccess& a) {
+    const bool colorAttachment = a.access == Access::ColorAttachment || a.access == Access::ColorAttachmentRead;
+    const bool depthAttachment = a.access == Access::DepthAttachment || a.access == Access::DepthRead;
+    return !(colorAttachment && isDepth(r.format)) && !(depthAttachment && !isDepth(r.format));
   }
 
   void checkAccess(PassId passId, const ResourceAccess& a) {
@@ -116,10 +146,7 @@ class Validator {
       }
       return;
     }
-    const ShaderStage allowed = pass.kind == PassKind::Raster    ? ShaderStage::Vertex | ShaderStage::Fragment
-                                : pass.kind == PassKind::Compute ? ShaderStage::Compute
-                                                                   : ShaderStage::None;
-    if (any(a.shaderStages & ~allowed)) {
+    if (any(a.shaderStages & ~shaderStagesOf(pass.kind))) {
       error(nameOf(passId), nameOf(a.resource),
             "uses shader stage " + toString(a.shaderStages) + " in a " + str(toString(pass.kind)) + " pass");
     }

@@ -1,0 +1,136 @@
+#include <shadelgraph/graph/free_ranges.hpp>
+
+#include <algorithm>
+
+namespace sg::graph {
+namespace {
+
+uint64_t alignUp(uint64_t value, uint64_t alignment) {
+  if (alignment <= 1) return value;
+  if ((alignment & (alignment - 1)) == 0) return (value + alignment - 1) & ~(alignment - 1);  // Vulkan's case
+  return (value + alignment - 1) / alignment * alignment;
+}
+
+}  // namespace
+
+void FreeRanges::clear(QueueMask queues) {
+  fragments_.clear();
+  queues_ = queues;
+}
+
+uint64_t FreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
+                              std::vector<uint32_t>& previous) {
+  const QueueMask taker = queueCount(queue) == 1 ? queue : QueueMask::None;
+  // One walk over runs of adjacent fragments `taker` may take, the best fitting kept.
+  constexpr uint64_t kNoRun = ~uint64_t{0};  // runEnd while not in a run: no fragment begins there
+  std::size_t best = 0, bestEnd = 0;          // fragments of the best run: [best, bestEnd)
+  uint64_t bestBegin = 0, bestLength = kNoRun;
+  uint64_t runBegin = 0, runEnd = kNoRun;
+  std::size_t runFirst = 0;
+  const auto closeRun = [&](std::size_t runLast) {
+    const uint64_t length = runEnd - runBegin;
+    if (runEnd == kNoRun || length < size || length >= bestLength || alignUp(runBegin, alignment) + size > runEnd) return;
+    best = runFirst;
+    bestEnd = runLast;
+    bestBegin = runBegin;
+    bestLength = length;
+  };
+  const std::size_t n = fragments_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Fragment& f = fragments_[i];
+    if (!any(f.queues & taker)) {
+      closeRun(i);
+      runEnd = kNoRun;
+    } else {
+      if (f.begin != runEnd) {
+        closeRun(i);
+        runFirst = i;
+        runBegin = f.begin;
+      }
+      runEnd = f.end;
+    }
+  }
+  closeRun(n);
+  const bool found = bestLength != kNoRun;
+  const bool inRun = runEnd != kNoRun;
+
+  uint64_t offset = 0;
+  if (found) {
+    offset = alignUp(bestBegin, alignment);
+  } else {
+    // Grow the heap, starting inside the last run if it ends at the top.
+    const bool fromTop = inRun && runEnd == heapSize;
+    best = fromTop ? runFirst : n;
+    offset = alignUp(fromTop ? runBegin : heapSize, alignment);
+    if (offset > heapSize) {  // fresh padding below the new range: free for every queue
+      fragments_.push_back({heapSize, offset, kNobody, queues_});
+    }
+    heapSize = offset + size;
+    bestEnd = fragments_.size();
+  }
+
+  // Take [offset, end) out of the fragments that overlap it; report their users.
+  const uint64_t end = offset + size;
+  std::size_t first = best;
+  while (first < bestEnd && fragments_[first].end <= offset) ++first;
+  std::size_t last = first;
+  for (; last < bestEnd && fragments_[last].begin < end; ++last) {
+    if (fragments_[last].occupant != kNobody) previous.push_back(fragments_[last].occupant);
+  }
+  if (first == last) return offset;
+  Fragment rest[2];
+  std::size_t count = 0;
+  if (fragments_[first].begin < offset) {
+    rest[count] = fragments_[first];
+    rest[count++].end = offset;
+  }
+  if (fragments_[last - 1].end > end) {
+    rest[count] = fragments_[last - 1];
+    rest[count++].begin = end;
+  }
+  splice(first, last, rest, count);
+  return offset;
+}
+
+void FreeRanges::release(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues) {
+  const auto at = std::lower_bound(fragments_.begin(), fragments_.end(), offset,
+                                   [](const Fragment& f, uint64_t o) { return f.begin < o; });
+  fragments_.insert(at, {offset, offset + size, occupant, queues & queues_});
+}
+
+void FreeRanges::allow(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues) {
+  queues &= queues_;
+  if (!any(queues)) return;
+  auto it = std::lower_bound(fragments_.begin(), fragments_.end(), offset,
+                             [](const Fragment& f, uint64_t o) { return f.end <= o; });
+  for (; it != fragments_.end() && it->begin < offset + size; ++it) {
+    if (it->occupant == occupant) it->queues |= queues;
+  }
+}
+
+std::vector<FreeRanges::Span> FreeRanges::rangesFor(QueueClass queue) const {
+  std::vector<Span> spans;
+  for (const Fragment& f : fragments_) {
+    if (!any(f.queues & toMask(queue))) continue;
+    if (!spans.empty() && spans.back().end == f.begin) {
+      spans.back().end = f.end;
+    } else {
+      spans.push_back({f.begin, f.end});
+    }
+  }
+  return spans;
+}
+
+void FreeRanges::splice(std::size_t first, std::size_t last, const Fragment* rest, std::size_t count) {
+  const std::size_t removed = last - first;
+  const auto at = fragments_.begin() + static_cast<std::ptrdiff_t>(first);
+  if (count <= removed) {
+    std::copy(rest, rest + count, at);
+    fragments_.erase(at + static_cast<std::ptrdiff_t>(count), at + static_cast<std::ptrdiff_t>(removed));
+  } else {
+    std::copy(rest, rest + removed, at);
+    fragments_.insert(at + static_cast<std::ptrdiff_t>(removed), rest + removed, rest + count);
+  }
+}
+
+}  // namespace sg::graph
