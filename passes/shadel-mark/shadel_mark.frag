@@ -19,7 +19,9 @@ layout(location = 0) in vec2 inShadingUv;
 
 #ifdef SG_MARK_BASELINE
 // The mark before issue 14 (bench --baseline only): the trilinear footprint
-// whatever the filter, one remap read per tap.
+// whatever the filter, one remap read per tap. It marks the levels composite
+// reads: for point and bilinear that is now one (the nearest), so the
+// baseline compares the marking code, not the level choice.
 void markShadel(uvec2 shadel) {
   SgShadelAddress a = sgShadelAddress(shadel, params.entriesPerSideLog2);
   uint64_t bit = sgChunkBit(a.chunkIndex);
