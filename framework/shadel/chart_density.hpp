@@ -6,8 +6,8 @@
 // included, to under 1/30 of the mean density), those triangles get shadels
 // much coarser than the rest at every level, and many are smaller than a
 // texel: their pixels take a neighbour's extrapolated shading. Raising level 0
-// until they reach the mean density would take 2^6 more shadels a side on
-// Suzanne, so such a chart is refused instead: decoupled mode gives the mesh
+// until the sparsest tenth reaches the mean density would take 23x (2^4.5)
+// more shadels a side on Suzanne, so such a chart is refused instead: decoupled mode gives the mesh
 // an automatic chart (uniform density by construction), auto mode shades it
 // forward and says why.
 #include <string>
