@@ -4,6 +4,7 @@
 #include <set>
 
 #include <shadelgraph/scene/uv_chart.hpp>
+#include <shadelgraph/shadel/chart_density.hpp>
 
 #include "commands.hpp"
 #include "scene_source.hpp"
@@ -38,6 +39,12 @@ void addInspectCommand(CLI::App& app) {
                     verdict.uvSet, verdict.overlappingPairs, verdict.countsTruncated ? "+" : "",
                     verdict.overlappingTriangles, verdict.outOfRangeUvs, verdict.zeroAreaTriangles);
       if (!verdict.reason.empty()) std::printf(" - %s", verdict.reason.c_str());
+      if (verdict.unique) {
+        // What decoupled shading makes of a unique chart: even enough, or automatic chart / forward.
+        const shadel::ChartDensity density = shadel::chartDensity(mesh, verdict.uvSet);
+        std::printf("\n  density: %s%s", density.describe().c_str(),
+                    density.even ? "" : " (uneven: decoupled shading charts it anew, auto mode shades it forward)");
+      }
       std::printf("\n  materials:");
       for (int m : materials) std::printf(" '%s'", s.materials[size_t(m)].name.c_str());
       std::printf("\n");

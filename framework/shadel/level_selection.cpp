@@ -27,6 +27,17 @@ LevelSelection selectDetailLevel(glm::vec2 dShadelDx, glm::vec2 dShadelDy, float
   return selection;
 }
 
+LevelSelection selectFilterLevel(CompositeFilter filter, glm::vec2 dShadelDx, glm::vec2 dShadelDy, float bias,
+                                 uint32_t levelCount) {
+  LevelSelection selection = selectDetailLevel(dShadelDx, dShadelDy, bias, levelCount);
+  if (filter == CompositeFilter::Trilinear) return selection;
+  // fine + blend is the clamped level; rounding it cannot pass levelCount - 1.
+  selection.fine = selection.blend >= 0.5f ? selection.coarse : selection.fine;
+  selection.coarse = selection.fine;
+  selection.blend = 0.0f;
+  return selection;
+}
+
 BilinearTaps bilinearTaps(glm::vec2 uv, uint32_t levelSize) {
   const float size = static_cast<float>(levelSize);
   const glm::vec2 p = uv * size - 0.5f;

@@ -55,12 +55,22 @@ TrilinearFootprint trilinearFootprint(glm::vec2 uv, const LevelSelection& select
 // The composite filter; shadel-mark marks exactly its footprint. GLSL: SG_FILTER_*.
 enum class CompositeFilter : int { Point = 0, Bilinear = 1, Trilinear = 2 };
 
+// The level selection a filter uses. Trilinear: selectDetailLevel (fine =
+// floor, blended towards coarse). Point and bilinear read one level: the
+// nearest one, round(level) (GL's *_MIPMAP_NEAREST rule), so its shadel
+// spacing is within a factor sqrt(2) of the pixel footprint's longer axis;
+// floor would shade 1-4 shadels per pixel instead of 0.5-2. fine == coarse,
+// blend 0. GLSL: sgSelectFilterLevel.
+LevelSelection selectFilterLevel(CompositeFilter filter, glm::vec2 dShadelDx, glm::vec2 dShadelDy, float bias,
+                                 uint32_t levelCount);
+
 // The point filter's level-local shadel: the bilinear tap nearest the sample
 // (weight >= 0.5 picks hi). GLSL: sgNearestTap.
 glm::uvec2 nearestTap(const BilinearTaps& taps);
 
 // The virtual shadels a filter reads: point 1 (fine level), bilinear 4 (fine
 // level), trilinear 8, or 4 when the coarse level is the fine one.
+// `selection`: selectFilterLevel's for the same filter.
 struct FilterFootprint {
   std::array<glm::uvec2, 8> shadels{};
   uint32_t count = 0;

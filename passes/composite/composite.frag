@@ -1,7 +1,7 @@
 #version 460
-// Filters the shaded samples: the same level selection as shadel-mark, then
-// manual bilinear at the fine and coarse levels through the remap table,
-// blended (trilinear). A lookup that finds no stored shadel is counted
+// Filters the shaded samples: the same level selection as shadel-mark
+// (sgSelectFilterLevel: the nearest level for point and bilinear, fine and
+// coarse for trilinear), then the filter's taps through the remap table. A lookup that finds no stored shadel is counted
 // (composite misses: must be zero, the watertightness guarantee).
 #include <framework/render/shaders/object.glsl>
 #include <framework/shadel/shaders/decoupled.glsl>
@@ -45,7 +45,8 @@ void main() {
   SgShadelInstance instance = shadelInstances[object.objectId];
   float size0 = float(instance.level0Size);
   SgLevelSelection sel =
-      sgSelectDetailLevel(dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0, params.bias, instance.levelCount);
+      sgSelectFilterLevel(SG_FILTER, dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0, params.bias,
+                          instance.levelCount);
 #ifdef SG_VIEW_LEVEL
   // --view level: the detail level the pixel reads (fractional: fine + blend), shaded lightly.
   vec4 shaded = filterLevel(sel.fine);

@@ -1,8 +1,9 @@
 #version 460
 // Marks the chunks of every shadel composite will read for this pixel: the
 // footprint of the composite filter (SG_FILTER, the same define composite is
-// compiled with): point, the nearest shadel of the fine level; bilinear, the
-// 2x2 taps of the fine level; trilinear, those and the 2x2 of the coarse one.
+// compiled with) at the levels sgSelectFilterLevel picks for it: point, the
+// nearest shadel of the nearest level; bilinear, the 2x2 taps of the nearest
+// level; trilinear, the 2x2 of the fine and of the coarse level.
 // Each remap entry the footprint touches is read once (the taps of a level
 // usually share it) and atomically updated only when a bit is missing.
 // Early depth test: hidden surfaces mark nothing. No colour output.
@@ -18,7 +19,9 @@ layout(location = 0) in vec2 inShadingUv;
 
 #ifdef SG_MARK_BASELINE
 // The mark before issue 14 (bench --baseline only): the trilinear footprint
-// whatever the filter, one remap read per tap.
+// whatever the filter, one remap read per tap. It marks the levels composite
+// reads: for point and bilinear that is now one (the nearest), so the
+// baseline compares the marking code, not the level choice.
 void markShadel(uvec2 shadel) {
   SgShadelAddress a = sgShadelAddress(shadel, params.entriesPerSideLog2);
   uint64_t bit = sgChunkBit(a.chunkIndex);
@@ -63,7 +66,8 @@ void main() {
   SgShadelInstance instance = shadelInstances[object.objectId];
   float size0 = float(instance.level0Size);
   SgLevelSelection sel =
-      sgSelectDetailLevel(dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0, params.bias, instance.levelCount);
+      sgSelectFilterLevel(SG_FILTER, dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0, params.bias,
+                          instance.levelCount);
   markLevel(sel.fine);
   if (kMarkCoarse && sel.coarse != sel.fine) markLevel(sel.coarse);
 }

@@ -6,6 +6,7 @@
 
 #include <shadelgraph/scene/uv_chart.hpp>
 #include <shadelgraph/shadel/auto_chart.hpp>
+#include <shadelgraph/shadel/chart_density.hpp>
 #include <shadelgraph/shadel/level0_resolution.hpp>
 
 namespace sg::plugins {
@@ -27,6 +28,17 @@ std::vector<ShadingChoice> chooseShading(scene::Scene& scene, std::optional<scen
       auto it = verdicts.find(instance.mesh);
       if (it == verdicts.end()) {
         scene::ChartVerdict verdict = scene::chooseShadingChart(mesh);
+        bool uneven = false;
+        if (verdict.unique) {
+          // A unique chart that starves part of the surface of shadels shades it
+          // coarser than the screen asks at every level (chart_density.hpp).
+          const shadel::ChartDensity density = shadel::chartDensity(mesh, verdict.uvSet);
+          if (!density.even) {
+            uneven = true;
+            verdict.unique = false;
+            verdict.reason = "TEXCOORD_" + std::to_string(verdict.uvSet) + " is unique but uneven: " + density.describe();
+          }
+        }
         if (!verdict.unique && mode == scene::ShadingMode::Decoupled) {
           // Gutters measured at the resolution the mesh's textures suggest (what level 0 will be near).
           const auto texture = shadel::meshTextureDensity(scene, mesh);
@@ -34,8 +46,10 @@ std::vector<ShadingChoice> chooseShading(scene::Scene& scene, std::optional<scen
           auto charted = shadel::autoChartMesh(mesh, {.resolution = resolution, .replaceUv1 = true});
           if (charted.ok()) {
             mesh = std::move(charted.mesh);
+            const std::string refused = verdict.reason;
             verdict = scene::chooseShadingChart(mesh);
-            verdict.reason = "automatic chart (" + std::to_string(charted.stats.charts) + " charts)";
+            verdict.reason = "automatic chart (" + std::to_string(charted.stats.charts) + " charts" +
+                             (uneven ? "; " + refused : "") + ")";
           } else {
             verdict.reason += "; automatic chart failed: " + charted.error;
           }

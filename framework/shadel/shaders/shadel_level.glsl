@@ -29,6 +29,24 @@ SgLevelSelection sgSelectDetailLevel(vec2 dShadelDx, vec2 dShadelDy, float bias,
   return selection;
 }
 
+// The composite filter, which also decides what shadel-mark marks:
+// sg::shadel::CompositeFilter. Both passes are compiled with SG_FILTER set
+// from the one DecoupledFrame::filter (passes::filterDefine).
+const uint SG_FILTER_POINT = 0u;      // the nearest shadel of the nearest level
+const uint SG_FILTER_BILINEAR = 1u;   // the 2x2 taps of the nearest level
+const uint SG_FILTER_TRILINEAR = 2u;  // the 2x2 taps of the fine and of the coarse level
+
+// Mirrors sg::shadel::selectFilterLevel: trilinear as sgSelectDetailLevel;
+// point and bilinear the nearest level (round), in `fine` and `coarse`.
+SgLevelSelection sgSelectFilterLevel(uint compositeFilter, vec2 dShadelDx, vec2 dShadelDy, float bias, uint levelCount) {
+  SgLevelSelection selection = sgSelectDetailLevel(dShadelDx, dShadelDy, bias, levelCount);
+  if (compositeFilter == SG_FILTER_TRILINEAR) return selection;
+  selection.fine = selection.blend >= 0.5 ? selection.coarse : selection.fine;
+  selection.coarse = selection.fine;
+  selection.blend = 0.0;
+  return selection;
+}
+
 // sg::shadel::BilinearTaps: level-local shadels {lo.x, hi.x} x {lo.y, hi.y}.
 struct SgBilinearTaps {
   uvec2 lo;
@@ -55,13 +73,6 @@ SgBilinearTaps sgBilinearTaps(vec2 uv, uint levelSize) {
 uvec2 sgFootprintShadel(SgLevelRect rect, SgBilinearTaps taps, uint i) {
   return rect.origin + uvec2((i & 1u) != 0u ? taps.hi.x : taps.lo.x, (i & 2u) != 0u ? taps.hi.y : taps.lo.y);
 }
-
-// The composite filter, which also decides what shadel-mark marks:
-// sg::shadel::CompositeFilter. Both passes are compiled with SG_FILTER set
-// from the one DecoupledFrame::filter (passes::filterDefine).
-const uint SG_FILTER_POINT = 0u;      // the nearest shadel of the fine level
-const uint SG_FILTER_BILINEAR = 1u;   // the 2x2 taps of the fine level
-const uint SG_FILTER_TRILINEAR = 2u;  // the 2x2 taps of the fine and of the coarse level
 
 // Mirrors sg::shadel::nearestTap: the point filter's level-local shadel, the
 // bilinear tap nearest the sample (one of lo/hi per axis).

@@ -77,6 +77,11 @@ std::string compareMirrorResults(const std::vector<uint32_t>& cases, const uint3
       if (r[13] != selection.coarse) return fail("coarse", r[13], selection.coarse);
       if (std::abs(value(r[14]) - selection.blend) > 1e-5f) return fail("blend", value(r[14]), selection.blend);
     }
+    // The nearest level's boundaries are the half levels.
+    const LevelSelection nearestLevel = selectFilterLevel(CompositeFilter::Bilinear, {value(c[11]), value(c[12])},
+                                                          {value(c[13]), value(c[14])}, value(c[15]), c[16]);
+    const bool nearHalf = std::abs(selection.level - 0.5f - std::round(selection.level - 0.5f)) < 1e-4f;
+    if (!nearHalf && r[26] != nearestLevel.fine) return fail("nearest level", r[26], nearestLevel.fine);
 
     const BilinearTaps taps = bilinearTaps({value(c[17]), value(c[18])}, c[19]);
     const uint32_t tapWords[] = {taps.lo.x, taps.lo.y, taps.hi.x, taps.hi.y, bits(taps.weight.x), bits(taps.weight.y)};

@@ -55,6 +55,7 @@ void main() {
   results[r + 12u] = selection.fine;
   results[r + 13u] = selection.coarse;
   results[r + 14u] = floatBitsToUint(selection.blend);
+  results[r + 26u] = sgSelectFilterLevel(SG_FILTER_BILINEAR, dx, dy, uintBitsToFloat(cases[c + 15u]), cases[c + 16u]).fine;
 
   SgBilinearTaps taps = sgBilinearTaps(uintBitsToFloat(uvec2(cases[c + 17u], cases[c + 18u])), cases[c + 19u]);
   SgLevelRect rect = SgLevelRect(uvec2(1000u, 2000u), cases[c + 19u], 64u);

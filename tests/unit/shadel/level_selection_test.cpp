@@ -71,6 +71,34 @@ TEST(LevelSelection, ClampsAtBothEnds) {
   EXPECT_EQ(s.coarse, 0u);
 }
 
+// Point and bilinear read the nearest level, so its shadel spacing is within
+// sqrt(2) of the pixel footprint's longer axis; trilinear keeps floor + blend.
+TEST(LevelSelection, OneLevelFiltersTakeTheNearestLevel) {
+  struct Case {
+    float shadelsPerPixel;
+    uint32_t nearest;
+  };
+  for (const Case c : {Case{1.0f, 0u}, Case{1.41f, 0u}, Case{1.42f, 1u}, Case{2.0f, 1u}, Case{2.82f, 1u},
+                       Case{2.83f, 2u}, Case{0.2f, 0u}, Case{1000.0f, 4u}}) {
+    for (CompositeFilter filter : {CompositeFilter::Point, CompositeFilter::Bilinear}) {
+      const LevelSelection s = selectFilterLevel(filter, {c.shadelsPerPixel, 0}, {0, 0.5f}, 0.0f, 5);
+      EXPECT_EQ(s.fine, c.nearest) << c.shadelsPerPixel << " shadels per pixel";
+      EXPECT_EQ(s.coarse, s.fine);
+      EXPECT_FLOAT_EQ(s.blend, 0.0f);
+    }
+    const LevelSelection trilinear = selectFilterLevel(CompositeFilter::Trilinear, {c.shadelsPerPixel, 0}, {0, 0.5f}, 0.0f, 5);
+    const LevelSelection detail = selectDetailLevel({c.shadelsPerPixel, 0}, {0, 0.5f}, 0.0f, 5);
+    EXPECT_EQ(trilinear.fine, detail.fine);
+    EXPECT_EQ(trilinear.coarse, detail.coarse);
+    EXPECT_FLOAT_EQ(trilinear.blend, detail.blend);
+  }
+  // The bias moves the rounding point: +0.5 turns 1.2 shadels per pixel (level 0.26) into level 1.
+  EXPECT_EQ(selectFilterLevel(CompositeFilter::Bilinear, {1.2f, 0}, {0, 1}, 0.0f, 5).fine, 0u);
+  EXPECT_EQ(selectFilterLevel(CompositeFilter::Bilinear, {1.2f, 0}, {0, 1}, 0.5f, 5).fine, 1u);
+  // A single level.
+  EXPECT_EQ(selectFilterLevel(CompositeFilter::Bilinear, {8, 0}, {0, 8}, 0.0f, 1).fine, 0u);
+}
+
 TEST(BilinearTaps, TexelCentresAndEdges) {
   // The centre of texel (3, 5) of an 8x8 level: that texel, zero weight.
   BilinearTaps taps = bilinearTaps({3.5f / 8, 5.5f / 8}, 8);
