@@ -26,10 +26,11 @@ Run run(const std::string& args, const std::string& stderrTo = "&1", const std::
   return sg::test::runCli(args, stderrTo, redirect);
 }
 
+// One directory per test process (ctest runs each test alone), removed at
+// exit: suites running side by side never share files.
 std::filesystem::path tempDir() {
-  auto dir = std::filesystem::temp_directory_path() / "sg-cli-test";
-  std::filesystem::create_directories(dir);
-  return dir;
+  static const sg::test::TempDir dir;
+  return dir.path();
 }
 
 TEST(Cli, VersionAndHelp) {
