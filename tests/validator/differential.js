@@ -13,6 +13,7 @@
 //   loader rejects) is counted in the agreement figure and listed by class.
 //
 // usage: differential.js --loader PATH/shadelgraph --corpus DIR [--report FILE.json] [--verbose]
+//        [--hang-seconds N]  (a loader run longer than N s counts as a hang; 20)
 // Exit: 0 pass, 1 fail, 77 skipped (the validator is not installed: ./sg deps).
 'use strict';
 const fs = require('fs');
@@ -95,9 +96,9 @@ function skippedByLoader(issue, warnings) {
   return warnings.some((w) => primitive.test(w));
 }
 
-function runLoader(loader, file) {
+function runLoader(loader, file, hangSeconds) {
   return new Promise((resolve) => {
-    execFile(loader, ['inspect', file], { timeout: 20000, maxBuffer: 1 << 26 }, (error, stdout, stderr) => {
+    execFile(loader, ['inspect', file], { timeout: hangSeconds * 1000, maxBuffer: 1 << 26 }, (error, stdout, stderr) => {
       const code = error ? (typeof error.code === 'number' ? error.code : null) : 0;
       const warnings = stdout.split('\n').filter((line) => line.startsWith('warning: '));
       resolve({ code, signal: error && error.signal, killed: error && error.killed, stderr: stderr.trim(), warnings });
@@ -129,6 +130,7 @@ async function main() {
   const option = (name) => { const i = args.indexOf(name); return i >= 0 ? args[i + 1] : undefined; };
   const loader = option('--loader'), corpus = option('--corpus'), reportPath = option('--report');
   const verbose = args.includes('--verbose');
+  const hangSeconds = Number(option('--hang-seconds') || 20);
   if (!loader || !corpus) {
     console.error('usage: differential.js --loader PATH/shadelgraph --corpus DIR [--report FILE.json] [--verbose]');
     process.exit(2);
@@ -158,7 +160,7 @@ async function main() {
     } catch (e) {
       issues = [{ code: e.depthCode || 'VALIDATOR_FAILED', message: String(e), severity: 0 }];
     }
-    return { name, issues, pointers, loader: await runLoader(loader, file) };
+    return { name, issues, pointers, loader: await runLoader(loader, file, hangSeconds) };
   });
 
   let agree = 0, mustRejectFiles = 0, mustRejectNamed = 0;
