@@ -1,0 +1,29 @@
+#pragma once
+// shadelgraph bench --shade-rates 1,2,4: what reusing shading across raster
+// frames buys. For each scene and size, forward and decoupled at each shade
+// rate render the same moving-camera path, alternated frame by frame (each
+// configuration keeps its own state across the path: its reuse needs the
+// frame before). Reports median raster-frame GPU time over the path (shade
+// frames included), its ratio to forward, per-pass medians, and the image
+// difference staleness adds against the rate-1 frame at the same pose.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <shadelgraph/gpu/context.hpp>
+#include <shadelgraph/gpu/device.hpp>
+
+namespace sg::app {
+
+struct ShadeRateBenchArgs {
+  std::vector<int> rates;
+  std::vector<std::string> scenes;  // empty: the built-in scene
+  std::vector<std::string> sizes;
+  int pathFrames = 24;
+};
+
+// Writes shade-rate.json into `out` and prints a table.
+void runShadeRateBench(gpu::Context& context, gpu::Device& device, const ShadeRateBenchArgs& args,
+                       const std::filesystem::path& out);
+
+}  // namespace sg::app
