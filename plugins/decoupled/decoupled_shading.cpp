@@ -246,7 +246,8 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
   passes::DecoupledFrame& frame = *frame_;
   const bool keepShading = rate > 1;
   declaredHistory_ = history_.declare(graph, in.device, in.executor, materials, layerPlan_.persistent, keepShading,
-                                      storage_.widthTexels(), storage_.heightTexels(), remapBytes_, frames_);
+                                      storage_.widthTexels(), storage_.heightTexels(), remapBytes_, frames_,
+                                      std::to_string(in.width) + "x" + std::to_string(in.height));
   chooseReuse(materials, declaredHistory_.valid);
   countersPending_ = true;  // counters-readback runs whenever objects are allocated
   frame.remap = declaredHistory_.remap;
@@ -279,6 +280,11 @@ constexpr ShadelResource kShadelResources[] = {{"shadel.remap", &passes::Decoupl
                                                {"shadel.args", &passes::DecoupledFrame::args},
                                                {"shadel.shaded", &passes::DecoupledFrame::shadedColor}};
 }  // namespace
+
+void DecoupledShading::setFixedBias(std::optional<float> bias) {
+  settings_.fixedBias = bias;
+  bias_ = bias.value_or(adjuster_.bias());
+}
 
 void DecoupledShading::setFrameFilter(int filter) {
   if (!frame_) return;

@@ -100,6 +100,8 @@ class DecoupledShading {
   // This frame's composite filter instead of the setting (composite's
   // `filter` parameter): from a prepare step, before any pass declares.
   void setFrameFilter(int filter);
+  // From the next frame on: a fixed bias, or the adjuster's (empty).
+  void setFixedBias(std::optional<float> bias);
   const DecoupledSettings& settings() const { return settings_; }
   glm::uvec2 sheetRegionOrigin() const { return sheetRegionOrigin_; }
   glm::uvec2 sheetRegionSize() const { return sheetRegionSize_; }

@@ -53,7 +53,8 @@ PersistentLayerHandles LayerHistory::declareImagePair(graph::RenderGraph& graph,
 LayerHistory::Declared LayerHistory::declare(graph::RenderGraph& graph, gpu::Device& device,
                                              gpu::GraphExecutor& executor, const plugin::Registry& registry,
                                              const std::vector<std::string>& layers, bool keepShading,
-                                             uint32_t width, uint32_t height, uint64_t remapBytes, uint64_t frame) {
+                                             uint32_t width, uint32_t height, uint64_t remapBytes, uint64_t frame,
+                                             const std::string& outputKey) {
   Declared out;
   // Without persistent layers or reuse one remap serves every frame; with
   // them the two swap, so last frame's stays readable.
@@ -70,7 +71,7 @@ LayerHistory::Declared LayerHistory::declare(graph::RenderGraph& graph, gpu::Dev
   out.previousRemap = graph.history(out.remap);
   executor.bindBuffer(out.previousRemap, remap(device, 1 - current, remapBytes));
 
-  std::string key = std::to_string(width) + "x" + std::to_string(height) + (keepShading ? " reuse" : "");
+  std::string key = outputKey + " " + std::to_string(width) + "x" + std::to_string(height) + (keepShading ? " reuse" : "");
   for (const auto& name : layers) {
     const auto& layer = registry.layer(name);
     key += " " + name;

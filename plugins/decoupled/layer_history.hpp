@@ -38,9 +38,11 @@ class LayerHistory {
     // persistent layers and reuse with this storage size.
     bool valid = false;
   };
+  // `outputKey`: what else stored values depend on (the output size: a
+  // resize reshades everything); history is valid only while it stays equal.
   Declared declare(graph::RenderGraph& graph, gpu::Device& device, gpu::GraphExecutor& executor,
                    const plugin::Registry& registry, const std::vector<std::string>& layers, bool keepShading,
-                   uint32_t width, uint32_t height, uint64_t remapBytes, uint64_t frame);
+                   uint32_t width, uint32_t height, uint64_t remapBytes, uint64_t frame, const std::string& outputKey);
   uint64_t bytes() const;  // history storage held (second remap and the layer images)
 
  private:
