@@ -3,9 +3,9 @@
 // frames buys. For each scene and size, forward and decoupled at each shade
 // rate render the same moving-camera path, alternated frame by frame (each
 // configuration keeps its own state across the path: its reuse needs the
-// frame before). Reports median raster-frame GPU time over the path (shade
-// frames included), its ratio to forward, per-pass medians, and the image
-// difference staleness adds against the rate-1 frame at the same pose.
+// frame before). Reports median and mean raster-frame GPU time over the path
+// (shade frames included), their ratio to forward, per-pass medians of shade
+// and fill frames, and what staleness costs (PSNR against rate 1, fill frames).
 #include <filesystem>
 #include <string>
 #include <vector>
