@@ -279,7 +279,7 @@ void runBench(const BenchArgs& args) {
   if (!args.shadeRates.empty()) {
     runShadeRateBench(context, device,
                       {.rates = args.shadeRates, .scenes = args.scenes, .sizes = args.sizes,
-                       .pathFrames = args.pathFrames},
+                       .pathFrames = args.pathFrames, .movingObject = args.moveObject},
                       out);
     setExitCode(context.validationLog().count() ? 1 : 0);
     return;

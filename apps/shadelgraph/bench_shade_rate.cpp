@@ -4,7 +4,10 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <optional>
+#include <stdexcept>
 
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
@@ -34,6 +37,17 @@ scene::Camera orbitCamera(scene::Camera camera, const scene::Scene& s, int frame
                          glm::translate(glm::mat4(1.0f), -center);
   camera.world = turn * camera.world;
   return camera;
+}
+
+// The moving object's offset at `frame`: a circle of this radius (in the
+// scene's units) once every kObjectPeriod frames, in the horizontal plane.
+constexpr float kObjectRadius = 0.25f;
+constexpr int kObjectPeriod = 96;
+
+glm::mat4 movedWorld(const glm::mat4& world, int frame) {
+  const float angle = glm::two_pi<float>() * float(frame) / float(kObjectPeriod);
+  const glm::vec3 offset(kObjectRadius * (std::cos(angle) - 1.0f), 0.0f, kObjectRadius * std::sin(angle));
+  return glm::translate(glm::mat4(1.0f), offset) * world;
 }
 
 struct RateConfig {
@@ -71,12 +85,19 @@ nlohmann::json runScene(gpu::Device& device, const ShadeRateBenchArgs& args, con
     s.renderer = std::move(made.renderer);
     if (configs[c].decoupled && configs[c].rate == 1) rate1 = int(c);
   }
+  std::optional<uint32_t> moving;
+  if (!args.movingObject.empty()) {
+    for (uint32_t i = 0; i < loaded.scene.instances.size(); ++i)
+      if (loaded.scene.instances[i].name == args.movingObject) moving = i;
+    if (!moving) throw std::invalid_argument("--move-object '" + args.movingObject + "': no such object in " + sceneName);
+  }
   const scene::Camera start = sessions[0].renderer->camera({.width = width, .height = height});
   for (int f = -kWarmupFrames; f < args.pathFrames; ++f) {
     const scene::Camera camera = orbitCamera(start, loaded.scene, std::max(f, 0));
     std::vector<gpu::HostImage> images(configs.size());
     for (size_t c = 0; c < configs.size(); ++c) {
       auto& s = sessions[c];
+      if (moving) s.renderer->setObjectTransform(*moving, movedWorld(loaded.scene.instances[*moving].world, std::max(f, 0)));
       auto frame = s.renderer->render({.width = width, .height = height, .cameraOverride = camera});
       if (f < 0) continue;
       const auto stats = s.decoupled->stats();
@@ -133,6 +154,7 @@ nlohmann::json runScene(gpu::Device& device, const ShadeRateBenchArgs& args, con
                                                                        : nlohmann::json(median(s.psnrVsRate1))}});
   }
   return {{"scene", sceneName}, {"width", width}, {"height", height}, {"path_frames", args.pathFrames},
+          {"moving_object", args.movingObject},
           {"degrees_per_frame", kDegreesPerFrame}, {"warmup_frames", kWarmupFrames}, {"configs", results}};
 }
 

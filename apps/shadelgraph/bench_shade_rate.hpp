@@ -20,6 +20,7 @@ struct ShadeRateBenchArgs {
   std::vector<std::string> scenes;  // empty: the built-in scene
   std::vector<std::string> sizes;
   int pathFrames = 24;
+  std::string movingObject;  // non-empty: this object (by name) also moves, on a small circle
 };
 
 // Writes shade-rate.json into `out` and prints a table.

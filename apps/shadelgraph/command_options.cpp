@@ -145,6 +145,9 @@ CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& gr
       ->delimiter(',');
   command.add_option("--path-frames", args.pathFrames, "--shade-rates: raster frames along the path, 2 or more")
       ->capture_default_str();
+  command.add_option("--move-object", args.moveObject,
+                     "--shade-rates: this object (by name, e.g. 'gold sphere') also moves, on a circle of 0.25 units "
+                     "every 96 frames (it is reshaded every frame)");
   auto* graph = command.add_subcommand("graph",
                                        "Instead: declare + compile time of synthetic render graphs by size (no device); "
                                        "writes graph.json and graph.csv into --out");
