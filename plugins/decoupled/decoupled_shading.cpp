@@ -76,13 +76,13 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
     if (want && slot.allocated &&
         (slot.record.world != draw.world || slot.record.material != draw.material ||
          slot.materialStack != draw.materialStack)) {
-      // Moved or given another material: what it stored no longer holds.
+      // Moved or given another material: what it stored no longer holds. The
+      // record reaches the GPU with this frame's reuse flags (chooseReuse).
       slot.record.world = draw.world;
       slot.record.material = draw.material;
       slot.record.supportChunks = supportRadius(materials, material) > 0 ? 1u : 0u;
       slot.materialStack = draw.materialStack;
       slot.changedFrame = frames_;
-      tablesDirty_ = true;
     }
     if (want == slot.allocated) continue;
     tablesDirty_ = true;
@@ -181,9 +181,10 @@ void DecoupledShading::chooseReuse(const plugin::Registry& materials, bool histo
     slot.record.reuse = !shadeFrame_ && historyValid && slot.changedFrame != frames_ && !ownInputs ? 1u : 0u;
     reuseAny_ = reuseAny_ || slot.record.reuse;
   }
+  // Every record, rewritten each frame (reuse flags, transforms, materials):
+  // the last frame that read the buffer has completed (the executor waits for each).
   std::vector<DecoupledObject> objects;
   for (const auto& slot : slots_) objects.push_back(slot.record);
-  // The last frame that read this buffer has completed (the executor waits for each).
   if (!objects.empty()) objects_.write(objects.data(), objects.size() * sizeof(DecoupledObject));
 }
 

@@ -117,7 +117,8 @@ class DecoupledShading {
   // This frame's decoupled objects (frameDraws_, frameObjects_, frameMaterials_), taken from ctx's forward draws.
   void selectFrameObjects(render::FrameContext& ctx);
   void uploadTables(gpu::Device& device);
-  // Which objects may keep last frame's shading this frame (their records' `reuse`).
+  // Which objects may keep last frame's shading this frame (their records' `reuse`);
+  // writes every record to the GPU.
   void chooseReuse(const plugin::Registry& materials, bool historyValid);
 
   std::vector<ShadingChoice> choices_;
