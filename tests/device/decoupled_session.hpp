@@ -43,10 +43,12 @@ class Session {
     return renderer_->plan({.width = size, .height = size, .cameraOverride = camera});
   }
   plugins::DecoupledStats stats() const { return shading_->stats(); }
-  plugins::DecoupledShading& shading() { return *shading_; }
   const gpu::Device& device() const { return *device_; }
   const scene::Scene& scene() const { return scene_; }
   render::Renderer& renderer() { return *renderer_; }
+
+  // The decoupled package's state, e.g. to set a fixed bias between frames.
+  plugins::DecoupledShading& shading() { return *shading_; }
 
  private:
   scene::Scene scene_;
