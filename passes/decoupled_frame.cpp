@@ -40,6 +40,7 @@ void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const Decoup
       case kBindShadelInstances: buffer(f.shadelInstances.handle()); break;
       case kBindLevelRects: buffer(f.levelRects.handle()); break;
       case kBindRemap: buffer(ctx.buffer(f.remap).handle()); break;
+      case kBindPreviousRemap: buffer(ctx.buffer(f.previousRemap.valid() ? f.previousRemap : f.remap).handle()); break;
       case kBindOwnedEntries: buffer(f.ownedEntries.handle()); break;
       case kBindCounters: buffer(ctx.buffer(f.counters).handle()); break;
       case kBindWork: buffer(ctx.buffer(f.work).handle()); break;

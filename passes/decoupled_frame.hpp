@@ -45,6 +45,11 @@ struct DecoupledFrame {
   bool levelView = false;  // composite shows the detail level instead of the shading
   graph::ResourceHandle remap, counters, work, args;
   graph::ResourceHandle shadedColor;  // what composite filters: the last layer of every material writes it
+  // Last frame's remap table and shade storage, when this frame keeps them
+  // (persistent layers; a shade rate above 1): what reuse copies from.
+  // Invalid handles otherwise (kBindPreviousRemap then binds `remap`: no
+  // object may reuse, so it is not read).
+  graph::ResourceHandle previousRemap, previousShaded;
 };
 
 // The define shadel-mark and composite are both compiled with: the filter

@@ -27,6 +27,7 @@
 
 #include "bench_graph.hpp"
 #include "bench_materials.hpp"
+#include "bench_shade_rate.hpp"
 #include "command_options.hpp"
 #include "commands.hpp"
 #include "option_checks.hpp"
@@ -272,6 +273,14 @@ void runBench(const BenchArgs& args) {
                      {.materials = args.materials, .scenes = args.scenes, .sizes = args.sizes,
                       .repetitions = args.repetitions, .referenceScale = args.referenceScale},
                      out);
+    setExitCode(context.validationLog().count() ? 1 : 0);
+    return;
+  }
+  if (!args.shadeRates.empty()) {
+    runShadeRateBench(context, device,
+                      {.rates = args.shadeRates, .scenes = args.scenes, .sizes = args.sizes,
+                       .pathFrames = args.pathFrames, .movingObject = args.moveObject},
+                      out);
     setExitCode(context.validationLog().count() ? 1 : 0);
     return;
   }

@@ -15,6 +15,7 @@ namespace {
 constexpr double kMinStorage = shadel::kMinStorageFactor, kMaxStorage = 64.0;
 constexpr double kMaxAbsBias = 8.0;
 constexpr int kMaxFrames = 100'000'000;
+constexpr int kMaxShadeRate = 1'000'000;
 
 // The scene, output size and shading mode, as render and graph take them.
 void addSceneOptions(CLI::App& command, std::string& scene, std::string& size, std::string& mode) {
@@ -73,6 +74,10 @@ void addRenderOptions(CLI::App& command, RenderArgs& args) {
       "decides)");
   command.add_option("--storage", args.storage, "shade storage in shadels per output pixel, 1.25 to 64")
       ->capture_default_str();
+  command.add_option("--shade-rate", args.shadeRate,
+                     "a shade frame (every visible chunk shaded) every N raster frames, 1 or more; the frames between "
+                     "shade only what has no shading from the frame before and reuse the rest (1: every frame)")
+      ->capture_default_str();
   command.add_option("--stats", args.stats, "write frame statistics as JSON");
   command.add_option("--trace", args.trace, "write per-pass timings as a Chrome trace (Perfetto)");
   command.add_option("--frames", args.frames, "frames to render; the last is reported")->capture_default_str();
@@ -95,6 +100,7 @@ void checkRenderArgs(const RenderArgs& args) {
   requireInRange("--path", args.path, 0, kIntMax);
   requireInRange("--frames", args.frames, 1, kMaxFrames);
   requireInRange("--soak-every", args.soakEvery, 1, kIntMax);
+  requireInRange("--shade-rate", args.shadeRate, 1, kMaxShadeRate);
   requireFiniteInRange("--storage", args.storage, kMinStorage, kMaxStorage);
   if (args.bias) requireFiniteInRange("--bias", *args.bias, -kMaxAbsBias, kMaxAbsBias);
 }
@@ -132,6 +138,16 @@ CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& gr
                   "--shimmer do not apply)")
       ->delimiter(',')
       ->excludes(shimmer);
+  command.add_option("--shade-rates", args.shadeRates,
+                     "instead of the configuration sweep: forward and decoupled at each of these shade rates "
+                     "(comma-separated, each 1 or more, e.g. 1,2,4), alternated frame by frame along a moving camera "
+                     "path; median raster-frame times and their ratio to forward; writes shade-rate.json")
+      ->delimiter(',');
+  command.add_option("--path-frames", args.pathFrames, "--shade-rates: raster frames along the path, 2 or more")
+      ->capture_default_str();
+  command.add_option("--move-object", args.moveObject,
+                     "--shade-rates: this object (by name, e.g. 'gold sphere') also moves, on a circle of 0.25 units "
+                     "every 96 frames (it is reshaded every frame)");
   auto* graph = command.add_subcommand("graph",
                                        "Instead: declare + compile time of synthetic render graphs by size (no device); "
                                        "writes graph.json and graph.csv into --out");
@@ -148,6 +164,8 @@ void checkBenchArgs(const BenchArgs& args) {
   requireInRange("--repetitions", args.repetitions, 1, 100000);
   requireInRange("--flicker-frames", args.flickerFrames, 2, 10000);  // flicker is the change between frames
   requireInRange("--reference-scale", args.referenceScale, 1, 8);
+  for (const int rate : args.shadeRates) requireInRange("--shade-rates", rate, 1, kMaxShadeRate);
+  requireInRange("--path-frames", args.pathFrames, 2, 100000);
   if (args.sizes.empty()) throw std::invalid_argument("--sizes: expected at least one WIDTHxHEIGHT");
   for (const auto& size : args.sizes) {
     uint32_t w = 0, h = 0;

@@ -41,6 +41,7 @@ struct RenderArgs {
   int filter = 1;  // bilinear: the most accurate decoupled filter (docs/decoupled-shading.md)
   std::optional<double> bias;  // empty: the adjuster decides
   double storage = 2.0;
+  int shadeRate = 1;  // a shade frame every this many raster frames (docs/decoupled-shading.md)
   std::string stats;
   std::string trace;
   int frames = 2;
@@ -76,6 +77,9 @@ struct BenchArgs {
   std::vector<std::string> materials;  // non-empty: the material sweep instead (bench_materials.cpp)
   bool baseline = false;     // each filter also with shadel-mark as before issue 14
   bool filtersOnly = false;  // no bias sweep
+  std::vector<int> shadeRates;  // non-empty: the shade-rate sweep instead (bench_shade_rate.cpp)
+  int pathFrames = 24;          // the shade-rate sweep: raster frames along its moving camera path
+  std::string moveObject;       // the shade-rate sweep: an object (by name) that moves too
 };
 // bench's options, and its subcommand "graph" (returned) with graphArgs'.
 CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& graphArgs);

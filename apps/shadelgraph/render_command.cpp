@@ -43,7 +43,7 @@ void printTable(const gpu::FrameTimings& t, uint64_t transientBytes, const gpu::
 void writeStats(const std::string& path, const AppSession& session, const render::FrameResult& frame,
                 const gpu::MemoryTotals& memory) {
   const auto d = session.decoupled->stats();
-  const uint64_t shaded = uint64_t(d.counters.chunksAllocated) * 64;
+  const uint64_t shaded = uint64_t(d.counters.chunksShaded) * 64;
   nlohmann::json passMs = nlohmann::json::object(), passCpuMs = nlohmann::json::object();
   for (const auto& p : frame.timings.passes) {
     passMs[p.name] = p.gpuMs;
@@ -71,7 +71,18 @@ void writeStats(const std::string& path, const AppSession& session, const render
                        {"shadels_marked", uint64_t(d.counters.chunksMarked) * 64},
                        {"shadels_allocated", uint64_t(d.counters.chunksAllocated) * 64},
                        {"shadels_shaded", shaded},
-                       {"shadels_per_pixel", d.counters.coveredPixels ? double(shaded) / d.counters.coveredPixels : 0.0},
+                       // Stored (shaded or reused) per covered pixel: at shade rate 1 all are shaded.
+                       {"shadels_per_pixel", d.counters.coveredPixels
+                                                 ? 64.0 * d.counters.chunksAllocated / d.counters.coveredPixels
+                                                 : 0.0},
+                       {"shadels_reused_last_frame", uint64_t(d.counters.chunksReused) * 64},
+                       // Over all --frames: raster frames, shade frames among them, shadels the
+                       // other frames shaded because nothing valid was stored (the fill), and
+                       // shadels copied from the frame before instead of shaded.
+                       {"raster_frames", d.rasterFrames},
+                       {"shade_frames", d.shadeFrames},
+                       {"shadels_filled", d.chunksFilled * 64},
+                       {"shadels_reused", d.chunksReused * 64},
                        {"overflow_chunks", d.counters.overflowChunks},
                        {"composite_misses", d.counters.compositeMisses},
                        {"global_bias", d.bias},
@@ -117,7 +128,8 @@ void runRender(const RenderArgs& args) {
   if (args.camera) settings.camera = *args.camera;
   settings.aliasing = !args.noAliasing;
 
-  plugins::DecoupledSettings decoupled{.storageFactor = args.storage, .filter = args.filter};
+  plugins::DecoupledSettings decoupled{.storageFactor = args.storage, .filter = args.filter,
+                                      .shadeRate = uint32_t(args.shadeRate)};
   const std::map<std::string, plugins::DebugView> views{{"final", plugins::DebugView::Final},
                                                         {"level", plugins::DebugView::Level},
                                                         {"occupancy", plugins::DebugView::Occupancy},
@@ -151,6 +163,12 @@ void runRender(const RenderArgs& args) {
                 double(d.bias), d.counters.chunksMarked, d.counters.chunksAllocated, d.capacityChunks,
                 d.counters.overflowChunks, d.counters.compositeMisses,
                 d.counters.coveredPixels ? 64.0 * d.counters.chunksAllocated / d.counters.coveredPixels : 0.0);
+  if (d.objects && args.shadeRate > 1)
+    std::printf("shade rate %d: %llu shade frames of %llu; last frame %s, %u chunks shaded, %u reused; over the run "
+                "%llu chunks filled, %llu reused\n",
+                args.shadeRate, (unsigned long long)d.shadeFrames, (unsigned long long)d.rasterFrames,
+                d.shadeFrame ? "a shade frame" : "a fill frame", d.counters.chunksShaded, d.counters.chunksReused,
+                (unsigned long long)d.chunksFilled, (unsigned long long)d.chunksReused);
   if (soak) soak->finish();
   if (!args.stats.empty()) writeStats(args.stats, session, frame, memory);
   if (!args.trace.empty()) {

@@ -233,4 +233,14 @@ size_t GpuScene::triangleCount() const {
   return n;
 }
 
+void GpuScene::setInstanceWorld(uint32_t instance, const glm::mat4& world) {
+  for (auto& draw : draws_)
+    if (draw.instance == instance) draw.world = world;
+}
+
+void GpuScene::setInstanceMaterialStack(uint32_t instance, const std::string& materialStack) {
+  for (auto& draw : draws_)
+    if (draw.instance == instance) draw.materialStack = materialStack;
+}
+
 }  // namespace sg::render

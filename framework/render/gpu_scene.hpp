@@ -50,6 +50,9 @@ class GpuScene {
   GpuScene& operator=(const GpuScene&) = delete;
 
   const std::vector<DrawItem>& draws() const { return draws_; }
+  // Every draw of scene instance `instance` gets this world transform / layer stack.
+  void setInstanceWorld(uint32_t instance, const glm::mat4& world);
+  void setInstanceMaterialStack(uint32_t instance, const std::string& materialStack);
   VkDescriptorSetLayout materialSetLayout() const { return materialLayout_; }
   VkDescriptorSet materialSet(uint32_t material) const { return materialSets_[material]; }
   VkBuffer vertexBuffer() const { return vertices_.handle(); }

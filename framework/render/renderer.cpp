@@ -51,6 +51,25 @@ void Renderer::setObjectMode(uint32_t instance, scene::ShadingMode mode) {
   modes_[instance] = mode;
 }
 
+void Renderer::setObjectTransform(uint32_t instance, const glm::mat4& world) {
+  setObjectMode(instance, instance < modes_.size() ? modes_[instance] : scene::ShadingMode::Auto);  // checks the index
+  gpuScene_.setInstanceWorld(instance, world);
+  const auto& draws = gpuScene_.draws();
+  for (uint32_t d = 0; d < draws.size(); ++d) {
+    if (draws[d].instance != instance) continue;
+    const auto bounds = scene::transformBounds(scene_.meshes[size_t(scene_.instances[instance].mesh)].bounds, world);
+    drawSpheres_[d] = glm::vec4(bounds.center(), bounds.radius());
+  }
+}
+
+void Renderer::setObjectMaterial(uint32_t instance, const std::string& materialStack) {
+  setObjectMode(instance, instance < modes_.size() ? modes_[instance] : scene::ShadingMode::Auto);  // checks the index
+  if (!registry_.hasMaterial(materialStack))
+    throw plugin::PluginError("object '" + scene_.instances[instance].name + "': material '" + materialStack +
+                              "' is not registered");
+  gpuScene_.setInstanceMaterialStack(instance, materialStack);
+}
+
 scene::Camera Renderer::camera(const RenderSettings& settings) const {
   if (settings.cameraOverride) return *settings.cameraOverride;
   if (settings.camera >= 0) {

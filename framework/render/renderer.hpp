@@ -46,6 +46,10 @@ class Renderer {
   // An object's requested shading mode, from the next frame on (initially the scene's).
   void setObjectMode(uint32_t instance, scene::ShadingMode mode);
   const std::vector<scene::ShadingMode>& objectModes() const { return modes_; }
+  // An object's world transform (rigid or not) and its material (a registered
+  // layer stack), from the next frame on.
+  void setObjectTransform(uint32_t instance, const glm::mat4& world);
+  void setObjectMaterial(uint32_t instance, const std::string& materialStack);
 
   // Declares and compiles the frame `render` would run (with real memory requirements).
   graph::CompiledPlan plan(const RenderSettings& settings);

@@ -4,8 +4,11 @@
 // of the entry (so allocation does not serialize on one counter). A full
 // partition passes the request on to the next ones, so storage runs out only
 // when no partition has room; then the overflow is counted and the entry left
-// without storage: never a write out of bounds.
+// without storage: never a write out of bounds. Chunks that keep last frame's
+// shading (reuse.glsl) get storage like the others but go on the reuse list,
+// not on their object's list of chunks to shade.
 #include <framework/shadel/shaders/decoupled.glsl>
+#include <framework/shadel/shaders/reuse.glsl>
 #include <framework/shadel/shaders/work.glsl>
 
 layout(local_size_x = 64) in;
@@ -41,5 +44,14 @@ void main() {
   }
   remap[owned.entryIndex].storageBase = base;
   atomicAdd(counters.chunksAllocated, count);
-  atomicAdd(work[sgObjectChunksSlot(owned.instanceId)], count);
+  uvec2 reusedHalves = unpackUint2x32(sgReusedChunks(owned, remap[owned.entryIndex].occupancy));
+  uint reused = uint(bitCount(reusedHalves.x) + bitCount(reusedHalves.y));
+  if (reused > 0u) {
+    atomicAdd(work[sgReuseCountSlot()], reused);
+    atomicAdd(counters.chunksReused, reused);
+  }
+  if (count > reused) {
+    atomicAdd(work[sgObjectChunksSlot(owned.instanceId)], count - reused);
+    atomicAdd(counters.chunksShaded, count - reused);
+  }
 }

@@ -6,7 +6,8 @@
 
 namespace sg::passes {
 namespace {
-constexpr std::array kBindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindCounters, kBindWork};
+constexpr std::array kBindings{kBindParams, kBindObjects, kBindRemap, kBindOwnedEntries, kBindCounters, kBindWork,
+                               kBindPreviousRemap};
 }  // namespace
 
 gpu::ComputePipelineDesc shadelAllocatePipeline() {
@@ -16,6 +17,7 @@ gpu::ComputePipelineDesc shadelAllocatePipeline() {
 void addShadelAllocate(graph::RenderGraph& graph, DecoupledFrame& frame) {
   auto& pass = graph.addPass("shadel-allocate", graph::QueueClass::AsyncCompute);
   frame.remap = pass.write(frame.remap, graph::Access::StorageReadWrite);
+  if (frame.previousRemap.valid()) pass.read(frame.previousRemap, graph::Access::StorageRead);
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);
   frame.work = pass.write(frame.work, graph::Access::StorageReadWrite);
   pass.execute([frame](PassContext& ctx) {

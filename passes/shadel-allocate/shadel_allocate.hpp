@@ -4,7 +4,8 @@
 
 namespace sg::passes {
 
-// Storage for every marked chunk, from hashed partitions; overflow counted (async compute).
+// Storage for every marked chunk, from hashed partitions; overflow counted;
+// the chunks that keep last frame's shading counted apart (async compute).
 void addShadelAllocate(graph::RenderGraph& graph, DecoupledFrame& frame);
 gpu::ComputePipelineDesc shadelAllocatePipeline();
 

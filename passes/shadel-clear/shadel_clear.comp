@@ -1,7 +1,7 @@
 #version 460
 // Resets the remap entries of allocated instances only (cost follows the
-// allocated entries, not the virtual sheet), the shade counters and the
-// per-object work counts.
+// allocated entries, not the virtual sheet), the shade counters, the
+// per-object work counts and the reuse list's.
 #include <framework/shadel/shaders/decoupled.glsl>
 #include <framework/shadel/shaders/work.glsl>
 
@@ -25,7 +25,10 @@ void main() {
     counters.layerReused[i] = 0u;
     counters.layerComputed[i] = 0u;
   }
+  if (i < kWorkGlobalSlots) work[sgReuseCountSlot() + i] = 0u;
   if (i == 0u) {
+    counters.chunksShaded = 0u;
+    counters.chunksReused = 0u;
     counters.chunksMarked = 0u;
     counters.chunksAllocated = 0u;
     counters.overflowChunks = 0u;

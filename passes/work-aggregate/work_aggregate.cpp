@@ -8,7 +8,8 @@
 namespace sg::passes {
 namespace {
 constexpr std::array kOffsetBindings{kBindParams, kBindWork, kBindArgs};
-constexpr std::array kFillBindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindWork};
+constexpr std::array kFillBindings{kBindParams, kBindObjects, kBindRemap, kBindOwnedEntries, kBindWork,
+                                   kBindPreviousRemap};
 }  // namespace
 
 gpu::ComputePipelineDesc workOffsetsPipeline() {
@@ -22,6 +23,7 @@ gpu::ComputePipelineDesc workFillPipeline() {
 void addWorkAggregate(graph::RenderGraph& graph, DecoupledFrame& frame) {
   auto& pass = graph.addPass("work-aggregate", graph::QueueClass::AsyncCompute);
   pass.read(frame.remap, graph::Access::StorageRead);
+  if (frame.previousRemap.valid()) pass.read(frame.previousRemap, graph::Access::StorageRead);
   frame.work = pass.write(frame.work, graph::Access::StorageReadWrite);
   frame.args = pass.write(frame.args, graph::Access::StorageWrite);
   pass.execute([frame](PassContext& ctx) {

@@ -14,6 +14,7 @@
 #include <shadelgraph/shadel/shadel_gpu_tables.hpp>
 
 #include "layer-shade/layer_shade.hpp"
+#include "shade-reuse/shade_reuse.hpp"
 
 namespace sg::plugins {
 namespace {
@@ -72,6 +73,17 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
                       ? "material '" + material.name + "' has forward-only layers"
                       : "";
     const bool want = slot.reason.empty();
+    if (want && slot.allocated &&
+        (slot.record.world != draw.world || slot.record.material != draw.material ||
+         slot.materialStack != draw.materialStack)) {
+      // Moved or given another material: what it stored no longer holds. The
+      // record reaches the GPU with this frame's reuse flags (chooseReuse).
+      slot.record.world = draw.world;
+      slot.record.material = draw.material;
+      slot.record.supportChunks = supportRadius(materials, material) > 0 ? 1u : 0u;
+      slot.materialStack = draw.materialStack;
+      slot.changedFrame = frames_;
+    }
     if (want == slot.allocated) continue;
     tablesDirty_ = true;
     if (!want) {
@@ -98,6 +110,8 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
       continue;
     }
     slot.allocated = true;
+    slot.materialStack = draw.materialStack;
+    slot.changedFrame = frames_;
     ++allocatedObjects_;
     slot.record = {draw.world, draw.firstIndex, draw.vertexOffset, draw.indexCount / 3, draw.material, offset,
                    uint32_t(choice.uvSet), choice.tileOffset, supportRadius(materials, material) > 0 ? 1u : 0u, 0u, 0u, 0u};
@@ -155,21 +169,50 @@ void DecoupledShading::selectFrameObjects(render::FrameContext& ctx) {
   ctx.draws().decoupled = frameObjects_;
 }
 
+void DecoupledShading::chooseReuse(const plugin::Registry& materials, bool historyValid) {
+  reuseAny_ = false;
+  for (auto& slot : slots_) {
+    if (!slot.allocated) continue;
+    // A layer that reads neighbours or its own last value needs its inputs
+    // around and under every chunk this frame: such objects are reshaded whole.
+    bool ownInputs = slot.record.supportChunks > 0;
+    for (const auto& layer : materials.material(slot.materialStack).layers)
+      ownInputs = ownInputs || materials.layer(layer).persistent;
+    slot.record.reuse = !shadeFrame_ && historyValid && slot.changedFrame != frames_ && !ownInputs ? 1u : 0u;
+    reuseAny_ = reuseAny_ || slot.record.reuse;
+  }
+  // Every record, rewritten each frame (reuse flags, transforms, materials):
+  // the last frame that read the buffer has completed (the executor waits for each).
+  std::vector<DecoupledObject> objects;
+  for (const auto& slot : slots_) objects.push_back(slot.record);
+  if (!objects.empty()) objects_.write(objects.data(), objects.size() * sizeof(DecoupledObject));
+}
+
 void DecoupledShading::prepare(render::FrameContext& ctx) {
   const auto& in = ctx.inputs();
   if (preparedFrame_ == in.frameNumber) return;
   preparedFrame_ = in.frameNumber;
+  // The counters of the frame before (complete: frames are waited for) join the totals.
+  if (countersPending_) {
+    const auto c = stats().counters;
+    if (!shadeFrame_) chunksFilled_ += c.chunksShaded;
+    chunksReused_ += c.chunksReused;
+    countersPending_ = false;
+  }
+  ++frames_;
+  const uint32_t rate = std::max(settings_.shadeRate, 1u);
+  shadeFrame_ = (frames_ - 1) % rate == 0;
+  shadeFrames_ += shadeFrame_ ? 1 : 0;
   if (!space_) createTables(in.device);
   syncObjects(ctx);
   if (tablesDirty_) uploadTables(in.device);
-  // The adjuster reads the counters of the frame before (complete: frames are
-  // waited for), which was rendered with lastFrameBias_.
-  if (frames_ > 0 && !settings_.fixedBias) {
+  // The adjuster reads the counters of the frame before, which was rendered
+  // with lastFrameBias_.
+  if (frames_ > 1 && !settings_.fixedBias) {
     const auto c = stats().counters;
     bias_ = adjuster_.update({lastFrameBias_, uint64_t(c.chunksMarked), storage_.capacityChunks(), c.overflowChunks});
   }
   lastFrameBias_ = bias_;
-  ++frames_;
 
   const auto objectCount = uint32_t(slots_.size());
   selectFrameObjects(ctx);
@@ -202,15 +245,26 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
                                         .baseline = settings_.baseline,
                                         .levelView = settings_.view == DebugView::Level});
   passes::DecoupledFrame& frame = *frame_;
-  declaredHistory_ = history_.declare(graph, in.device, in.executor, materials, layerPlan_.persistent,
-                                      storage_.widthTexels(), storage_.heightTexels(), remapBytes_, frames_);
+  const bool keepShading = rate > 1;
+  declaredHistory_ = history_.declare(graph, in.device, in.executor, materials, layerPlan_.persistent, keepShading,
+                                      storage_.widthTexels(), storage_.heightTexels(), remapBytes_, frames_,
+                                      std::to_string(in.width) + "x" + std::to_string(in.height));
+  chooseReuse(materials, declaredHistory_.valid);
+  countersPending_ = true;  // counters-readback runs whenever objects are allocated
   frame.remap = declaredHistory_.remap;
+  frame.previousRemap = declaredHistory_.previousRemap;
   frame.counters = graph.createBuffer("shade counters", {.size = sizeof(ShadeCounters)});
   frame.work = graph.createBuffer("work", {.size = workBufferBytes(objectCount, storage_.capacityChunks())});
-  frame.args = graph.createBuffer("dispatch args", {.size = std::max<uint64_t>(12ull * objectCount, 12)});
-  frame.shadedColor = graph.createImage(
-      "shade storage", {.format = graph::Format::RGBA16F,
-                        .size = graph::Size::absolute(storage_.widthTexels(), storage_.heightTexels())});
+  // One VkDispatchIndirectCommand per object, then shade-reuse's.
+  frame.args = graph.createBuffer("dispatch args", {.size = 12ull * (objectCount + 1)});
+  if (keepShading) {
+    frame.shadedColor = declaredHistory_.shaded.current;
+    frame.previousShaded = declaredHistory_.shaded.history;
+  } else {
+    frame.shadedColor = graph.createImage(
+        "shade storage", {.format = graph::Format::RGBA16F,
+                          .size = graph::Size::absolute(storage_.widthTexels(), storage_.heightTexels())});
+  }
   readbackHandle_ = graph.importBuffer("shade counters readback", {.size = sizeof(ShadeCounters)}, {},
                                        {graph::Layout::Undefined, graph::PipelineStage::AllCommands, graph::AccessFlag::None});
   in.executor.bindBuffer(readbackHandle_, readback_);
@@ -227,6 +281,11 @@ constexpr ShadelResource kShadelResources[] = {{"shadel.remap", &passes::Decoupl
                                                {"shadel.args", &passes::DecoupledFrame::args},
                                                {"shadel.shaded", &passes::DecoupledFrame::shadedColor}};
 }  // namespace
+
+void DecoupledShading::setFixedBias(std::optional<float> bias) {
+  settings_.fixedBias = bias;
+  bias_ = bias.value_or(adjuster_.bias());
+}
 
 void DecoupledShading::setFrameFilter(int filter) {
   if (!frame_) return;
@@ -261,6 +320,8 @@ void DecoupledShading::addCountersReadback(graph::RenderGraph& graph) {
 void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, const plugin::Registry& materials) {
   passes::DecoupledFrame& frame = *frame_;
   const LayerHistory::Declared& history = declaredHistory_;
+  // First what keeps last frame's shading, then the layers shade the rest.
+  if (reuseAny_) passes::addShadeReuse(graph, frame);
   // The current version of each intermediate layer's own image.
   std::map<std::string, graph::ResourceHandle> images;
   for (const auto& name : layerPlan_.images) {
@@ -308,6 +369,11 @@ DecoupledStats DecoupledShading::stats() const {
   for (uint32_t slot = 0; slot < layerPlan_.persistent.size(); ++slot)
     s.layerReuse.push_back({layerPlan_.persistent[slot], s.counters.layerReused[slot], s.counters.layerComputed[slot]});
   s.idMapBytes = idMapBytes_;
+  s.shadeFrame = shadeFrame_;
+  s.rasterFrames = frames_;
+  s.shadeFrames = shadeFrames_;
+  s.chunksFilled = chunksFilled_ + (countersPending_ && !shadeFrame_ ? s.counters.chunksShaded : 0);
+  s.chunksReused = chunksReused_ + (countersPending_ ? s.counters.chunksReused : 0);
   return s;
 }
 

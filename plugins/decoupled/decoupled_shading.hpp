@@ -44,6 +44,10 @@ struct DecoupledSettings {
   int filter = 1;                      // composite (and what shadel-mark marks): 0 point, 1 bilinear (default: the most accurate, issue 14), 2 trilinear
   bool baseline = false;           // bench --baseline: shadel-mark as before issue 14
   std::optional<float> fixedBias;      // else the adjuster decides
+  // A shade frame (every marked chunk shaded) every this many raster frames;
+  // in the others only chunks without valid shading from the last frame are
+  // shaded (the fill), the rest copied. 1: every frame a shade frame.
+  uint32_t shadeRate = 1;
   DebugView view = DebugView::Final;
   ShadeSpaceAdjusterOptions adjuster;
 };
@@ -66,6 +70,11 @@ struct DecoupledStats {
   uint32_t layerDispatches = 0;  // indirect layer-shade dispatches of the frame
   std::vector<std::string> layers;  // layers the frame ran decoupled, in pass order
   std::vector<LayerReuse> layerReuse;  // per persistent layer
+  bool shadeFrame = true;  // the last frame was a shade frame
+  // Since the first frame (the last one included): raster frames, how many of
+  // them were shade frames, chunks shaded in the others because they had no
+  // valid shading (the fill), and chunks copied from the frame before.
+  uint64_t rasterFrames = 0, shadeFrames = 0, chunksFilled = 0, chunksReused = 0;
 };
 
 class DecoupledShading {
@@ -91,6 +100,8 @@ class DecoupledShading {
   // This frame's composite filter instead of the setting (composite's
   // `filter` parameter): from a prepare step, before any pass declares.
   void setFrameFilter(int filter);
+  // From the next frame on: a fixed bias, or the adjuster's (empty).
+  void setFixedBias(std::optional<float> bias);
   const DecoupledSettings& settings() const { return settings_; }
   glm::uvec2 sheetRegionOrigin() const { return sheetRegionOrigin_; }
   glm::uvec2 sheetRegionSize() const { return sheetRegionSize_; }
@@ -106,6 +117,9 @@ class DecoupledShading {
   // This frame's decoupled objects (frameDraws_, frameObjects_, frameMaterials_), taken from ctx's forward draws.
   void selectFrameObjects(render::FrameContext& ctx);
   void uploadTables(gpu::Device& device);
+  // Which objects may keep last frame's shading this frame (their records' `reuse`);
+  // writes every record to the GPU.
+  void chooseReuse(const plugin::Registry& materials, bool historyValid);
 
   std::vector<ShadingChoice> choices_;
   DecoupledSettings settings_;
@@ -114,6 +128,10 @@ class DecoupledShading {
   float lastFrameBias_ = 0.0f;
   uint64_t frames_ = 0;
   uint64_t preparedFrame_ = ~0ull;
+  bool shadeFrame_ = true;     // this frame shades every marked chunk
+  bool reuseAny_ = false;      // some object may reuse this frame: shade-reuse runs
+  bool countersPending_ = false;  // the readback holds counters not yet in the totals below
+  uint64_t rasterFrames_ = 0, shadeFrames_ = 0, chunksFilled_ = 0, chunksReused_ = 0;  // before the last frame
   // Per draw (a decoupled object's index is its draw's): its shadel space and
   // tables, while its object is decoupled.
   struct ObjectSlot {
@@ -121,6 +139,8 @@ class DecoupledShading {
     bool allocated = false;
     std::string reason;  // why not, when it asked to be
     DecoupledObject record{};
+    std::string materialStack;  // the material its stored shading was shaded with
+    uint64_t changedFrame = 0;  // the frame it was allocated, moved or changed material: nothing to reuse then
   };
   std::vector<ObjectSlot> slots_;
   uint32_t allocatedObjects_ = 0;

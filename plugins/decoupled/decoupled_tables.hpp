@@ -15,7 +15,7 @@ using ShadeCounters = shader::SgShadeCounters;
 using DecoupledParams = shader::SgDecoupledParams;
 
 constexpr uint64_t workBufferBytes(uint32_t objects, uint32_t items) {
-  return 4ull * (uint64_t{shader::kWorkSlotsPerObject} * objects +
+  return 4ull * (uint64_t{shader::kWorkSlotsPerObject} * objects + shader::kWorkGlobalSlots +
                  uint64_t{shader::kWorkSlotsPerItem} * items);
 }
 

@@ -22,52 +22,65 @@ gpu::Buffer& LayerHistory::remap(gpu::Device& device, uint32_t index, uint64_t b
   return remaps_[index];
 }
 
+PersistentLayerHandles LayerHistory::declareImagePair(graph::RenderGraph& graph, gpu::Device& device,
+                                                      gpu::GraphExecutor& executor, const std::string& name,
+                                                      graph::Format format, uint32_t width, uint32_t height,
+                                                      uint32_t current) {
+  auto& pair = images_[name];
+  formatBytes_[name] = graph::bytesPerTexel(format);
+  if (!pair[0] || pair[0].desc().width != width || pair[0].desc().height != height) {
+    for (uint32_t i = 0; i < 2; ++i)
+      pair[i] = gpu::Image(device.context(), device.memory(),
+                           {.width = width, .height = height, .format = gpu::toVk(format),
+                            .usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                            .name = name + (i ? " (B)" : " (A)"), .category = "history"});
+    // The graph expects them resting in General.
+    device.context().submitAndWait([&](VkCommandBuffer cmd) {
+      for (auto& image : pair)
+        gpu::imageBarrier(cmd, image.handle(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, {},
+                          {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT});
+    });
+  }
+  const graph::ImageDesc desc{.format = format, .size = graph::Size::absolute(width, height)};
+  PersistentLayerHandles handles;
+  handles.current = graph.importPersistentImage(name, desc, kResting);
+  handles.history = graph.history(handles.current);
+  executor.bindImage(handles.current, pair[current]);
+  executor.bindImage(handles.history, pair[1 - current]);
+  return handles;
+}
+
 LayerHistory::Declared LayerHistory::declare(graph::RenderGraph& graph, gpu::Device& device,
                                              gpu::GraphExecutor& executor, const plugin::Registry& registry,
-                                             const std::vector<std::string>& layers, uint32_t width,
-                                             uint32_t height, uint64_t remapBytes, uint64_t frame) {
+                                             const std::vector<std::string>& layers, bool keepShading,
+                                             uint32_t width, uint32_t height, uint64_t remapBytes, uint64_t frame,
+                                             const std::string& outputKey) {
   Declared out;
-  // Without persistent layers one remap serves every frame; with them the two
-  // swap, so last frame's stays readable.
-  const uint32_t current = layers.empty() ? 0u : uint32_t(frame % 2);
+  // Without persistent layers or reuse one remap serves every frame; with
+  // them the two swap, so last frame's stays readable.
+  const bool keep = keepShading || !layers.empty();
+  const uint32_t current = keep ? uint32_t(frame % 2) : 0u;
   out.remap = graph.importPersistentBuffer("remap", {.size = remapBytes}, kResting);
   executor.bindBuffer(out.remap, remap(device, current, remapBytes));
-  if (layers.empty()) {
+  const bool consecutive = frame == lastFrame_ + 1;
+  lastFrame_ = frame;
+  if (!keep) {
     lastKey_.clear();
     return out;
   }
   out.previousRemap = graph.history(out.remap);
   executor.bindBuffer(out.previousRemap, remap(device, 1 - current, remapBytes));
 
-  std::string key = std::to_string(width) + "x" + std::to_string(height);
+  std::string key = outputKey + " " + std::to_string(width) + "x" + std::to_string(height) + (keepShading ? " reuse" : "");
   for (const auto& name : layers) {
     const auto& layer = registry.layer(name);
     key += " " + name;
-    auto& pair = images_[name];
-    formatBytes_[name] = graph::bytesPerTexel(layer.format);
-    if (!pair[0] || pair[0].desc().width != width || pair[0].desc().height != height) {
-      for (uint32_t i = 0; i < 2; ++i)
-        pair[i] = gpu::Image(device.context(), device.memory(),
-                             {.width = width, .height = height, .format = gpu::toVk(layer.format),
-                              .usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                              .name = "layer " + name + (i ? " (B)" : " (A)"), .category = "history"});
-      // The graph expects them resting in General.
-      device.context().submitAndWait([&](VkCommandBuffer cmd) {
-        for (auto& image : pair)
-          gpu::imageBarrier(cmd, image.handle(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, {},
-                            {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT});
-      });
-    }
-    const graph::ImageDesc desc{.format = layer.format, .size = graph::Size::absolute(width, height)};
-    PersistentLayerHandles handles;
-    handles.current = graph.importPersistentImage("layer " + name, desc, kResting);
-    handles.history = graph.history(handles.current);
-    executor.bindImage(handles.current, pair[current]);
-    executor.bindImage(handles.history, pair[1 - current]);
-    out.layers[name] = handles;
+    out.layers[name] = declareImagePair(graph, device, executor, "layer " + name, layer.format, width, height, current);
   }
+  if (keepShading)
+    out.shaded = declareImagePair(graph, device, executor, "shade storage", graph::Format::RGBA16F, width, height, current);
   // Last frame must have stored these layers at this size, with this remap pair.
-  out.valid = key == lastKey_;
+  out.valid = consecutive && key == lastKey_;
   lastKey_ = key;
   return out;
 }

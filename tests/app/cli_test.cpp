@@ -477,6 +477,11 @@ const BadCommand kBadCommands[] = {
     {"BiasHuge", "render --bias 1e30", "--bias"},
     {"FramesZero", "render --frames 0", "--frames 0"},
     {"SoakEveryZero", "render --soak-every 0", "--soak-every 0"},
+    {"ShadeRateZero", "render --shade-rate 0", "--shade-rate 0"},
+    {"ShadeRateNegative", "render --shade-rate -2", "--shade-rate -2"},
+    {"ShadeRateNotANumber", "render --shade-rate fast", "--shade-rate"},
+    {"BenchShadeRatesZero", "bench --shade-rates 1,0", "--shade-rates 0"},
+    {"BenchPathFramesOne", "bench --shade-rates 2 --path-frames 1", "--path-frames 1"},
     {"BenchFlickerFramesZero", "bench --flicker-frames 0", "--flicker-frames 0"},
     {"BenchFlickerFramesNegative", "bench --flicker-frames -3", "--flicker-frames -3"},
     {"BenchRepetitionsZero", "bench --repetitions 0", "--repetitions 0"},
@@ -518,6 +523,24 @@ nlohmann::json statsOf(const std::string& args, const std::string& name) {
   EXPECT_EQ(r.exitCode, 0) << r.output;
   std::ifstream in(stats);
   return nlohmann::json::parse(in);
+}
+
+// --shade-rate 3 over 5 frames: frames 0 and 3 shade, the others reuse (a
+// static camera fills nothing); the stats count it and nothing is missed.
+TEST(Cli, ShadeRateStatsCountShadeFramesAndReuse) {
+  const auto stats = tempDir() / "shade-rate.json";
+  std::filesystem::remove(stats);
+  auto r = run("render --mode decoupled --size 96x64 --frames 5 --shade-rate 3 --storage 16 -o " +
+               (tempDir() / "shade-rate.png").string() + " --stats " + stats.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(stats);
+  const auto json = nlohmann::json::parse(in);
+  EXPECT_EQ(json["raster_frames"], 5);
+  EXPECT_EQ(json["shade_frames"], 2);
+  EXPECT_EQ(json["shadels_filled"], 0);
+  EXPECT_GT(json["shadels_reused"].get<double>(), 0.0);
+  EXPECT_EQ(json["shadels_reused_last_frame"], json["shadels_allocated"]) << "frame 4 reuses every stored shadel";
+  EXPECT_EQ(json["composite_misses"], 0);
 }
 
 // A negative bias is a fixed bias too (finer shadels), not the adjuster.

@@ -48,6 +48,9 @@ class Session {
   const scene::Scene& scene() const { return scene_; }
   render::Renderer& renderer() { return *renderer_; }
 
+  // The decoupled package's state, e.g. to set a fixed bias between frames.
+  plugins::DecoupledShading& shading() { return *shading_; }
+
  private:
   scene::Scene scene_;
   gpu::Context context_;

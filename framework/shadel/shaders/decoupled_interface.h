@@ -43,6 +43,10 @@ SG_CONST uint kMaxPersistentLayers = 8u;
 // a fill counter, then the work items {entry, chunk, level, physical chunk}.
 SG_CONST uint kWorkSlotsPerObject = 3u;
 SG_CONST uint kWorkSlotsPerItem = 4u;
+// After the per-object slots: the reuse list's length, its first item and its
+// fill counter (its items {previous physical chunk, physical chunk, -, -}
+// follow the shade items), and one spare slot.
+SG_CONST uint kWorkGlobalSlots = 4u;
 
 // One decoupled object (all its primitives share one material).
 struct SgDecoupledObject {
@@ -55,7 +59,8 @@ struct SgDecoupledObject {
   uint shadingUvSet;   // 0 or 1
   vec2 tileOffset;     // shading UV = uv - tileOffset
   uint supportChunks;  // support-expand grows its marked chunks by this many (0: no neighbourhood layer)
-  uint pad0, pad1, pad2;  // 112 bytes, as std430 laid it out: every record's mat4 stays 16-byte aligned
+  uint reuse;          // 1: chunks it marked last frame too are copied from last frame's storage, not shaded
+  uint pad1, pad2;  // 112 bytes, as std430 laid it out: every record's mat4 stays 16-byte aligned
 };
 
 // What the passes count, read back after the frame.
@@ -70,6 +75,8 @@ struct SgShadeCounters {
   uint supportChunks;                // chunks support-expand added around the marked ones
   uint layerReused[kMaxPersistentLayers];    // per persistent layer: shadels served from last frame
   uint layerComputed[kMaxPersistentLayers];  // and shadels computed
+  uint chunksShaded;                 // chunks the layers shaded this frame (all of them on a shade frame)
+  uint chunksReused;                 // chunks copied from last frame's storage instead (shade-reuse)
 };
 
 // The frame's parameters (uniform).

@@ -26,6 +26,7 @@
 #include <shadel-allocate/shadel_allocate.hpp>
 #include <shadel-clear/shadel_clear.hpp>
 #include <shadel-mark/shadel_mark.hpp>
+#include <shade-reuse/shade_reuse.hpp>
 #include <shadelgraph/gpu/shader_compiler.hpp>
 #include <support-expand/support_expand.hpp>
 #include <tonemap/tonemap.hpp>
@@ -228,6 +229,7 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   errors += mismatches("shadel-allocate", passes::shadelAllocatePipeline());
   errors += mismatches("work-offsets", passes::workOffsetsPipeline());
   errors += mismatches("work-fill", passes::workFillPipeline());
+  errors += mismatches("shade-reuse", passes::shadeReusePipeline());
   for (int filter : {0, 1, 2})
     for (bool levelView : {false, true})
       errors += mismatches("composite filter=" + std::to_string(filter), passes::compositePipeline(filter, levelView));

@@ -1,0 +1,30 @@
+#pragma once
+// shadelgraph bench --shade-rates 1,2,4: what reusing shading across raster
+// frames buys. For each scene and size, forward and decoupled at each shade
+// rate render the same moving-camera path, alternated frame by frame (each
+// configuration keeps its own state across the path: its reuse needs the
+// frame before). Reports median and mean raster-frame GPU time over the path
+// (shade frames included), their ratio to forward, per-pass medians of shade
+// and fill frames, and what staleness costs (PSNR against rate 1, fill frames).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <shadelgraph/gpu/context.hpp>
+#include <shadelgraph/gpu/device.hpp>
+
+namespace sg::app {
+
+struct ShadeRateBenchArgs {
+  std::vector<int> rates;
+  std::vector<std::string> scenes;  // empty: the built-in scene
+  std::vector<std::string> sizes;
+  int pathFrames = 24;
+  std::string movingObject;  // non-empty: this object (by name) also moves, on a small circle
+};
+
+// Writes shade-rate.json into `out` and prints a table.
+void runShadeRateBench(gpu::Context& context, gpu::Device& device, const ShadeRateBenchArgs& args,
+                       const std::filesystem::path& out);
+
+}  // namespace sg::app
