@@ -76,6 +76,7 @@ struct BenchArgs {
   std::vector<std::string> materials;  // non-empty: the material sweep instead (bench_materials.cpp)
   bool baseline = false;     // each filter also with shadel-mark as before issue 14
   bool filtersOnly = false;  // no bias sweep
+  bool sceneRatios = false;  // each scene against the first instead (bench_scenes.cpp)
 };
 // bench's options, and its subcommand "graph" (returned) with graphArgs'.
 CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& graphArgs);

@@ -1,0 +1,27 @@
+#pragma once
+// shadelgraph bench A B C --scene-ratios: what the scenes after the first
+// cost against it. Every scene renders forward and decoupled, each with and
+// without occlusion culling, through the first scene's camera; frames
+// alternate round-robin over all (scene, configuration) pairs, one warm-up
+// round then --repetitions timed rounds; medians of the GPU frame time and
+// of each pass, and each scene's ratio to the first under the same
+// configuration. Writes scene-ratios.json and prints a table.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <shadelgraph/gpu/context.hpp>
+#include <shadelgraph/gpu/device.hpp>
+
+namespace sg::app {
+
+struct SceneRatioArgs {
+  std::vector<std::string> scenes;  // at least two: the first is the baseline
+  std::vector<std::string> sizes;
+  int repetitions = 5;
+};
+
+void runSceneRatioBench(gpu::Context& context, gpu::Device& device, const SceneRatioArgs& args,
+                        const std::filesystem::path& out);
+
+}  // namespace sg::app
