@@ -1,11 +1,14 @@
 #pragma once
 // shadelgraph bench A B C --scene-ratios: what the scenes after the first
-// cost against it. Every scene renders forward and decoupled, each with and
-// without occlusion culling, through the first scene's camera; frames
+// cost against it, and what each costs against the same frame as before
+// issue 14. Every scene renders forward and decoupled, each as now and as
+// before (no occlusion culling, the depth pre-pass whatever the overdraw),
+// through the first scene's first camera path (each scene through its own
+// default view when the first has no camera path); frames
 // alternate round-robin over all (scene, configuration) pairs, one warm-up
 // round then --repetitions timed rounds; medians of the GPU frame time and
 // of each pass, and each scene's ratio to the first under the same
-// configuration. Writes scene-ratios.json and prints a table.
+// configuration and to the same path as before. Writes scene-ratios.json and prints a table.
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -125,8 +125,9 @@ CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& gr
                    "the filter, a remap read per tap), alternated in the same run");
   command.add_flag("--filters-only", args.filtersOnly, "forward and the three filters only (no bias sweep)");
   command.add_flag("--scene-ratios", args.sceneRatios,
-                   "instead of the configuration sweep: every scene after the first against the first (its first "
-                   "camera path's view), forward and decoupled, with and without occlusion culling, alternated; "
+                   "instead of the configuration sweep: every scene after the first against the first (seen from "
+                   "the first scene's first camera path, if it has one), forward and decoupled, each also as before issue 14 (no occlusion culling, always a "
+                   "depth pre-pass), alternated; "
                    "writes scene-ratios.json");
   auto* shimmer = command.add_flag("--shimmer", args.shimmer, "add the shimmer case (default scene's gold sphere, close up)");
   command.add_option("--materials", args.materials,
