@@ -23,23 +23,13 @@ namespace {
 struct RatioConfig {
   std::string name;
   bool decoupled = false;
-  bool asBefore = false;  // no occlusion culling, and the depth pre-pass whatever the overdraw (before issue 14)
+  bool asBefore = false;  // without occlusion culling, as before issue 14
 };
 
 const std::vector<RatioConfig> kConfigs{{"forward", false, false},
                                         {"decoupled", true, false},
                                         {"forward as before", false, true},
                                         {"decoupled as before", true, true}};
-
-// The decoupled frame (which also draws forward), as before issue 14 on request.
-plugin::ResolvedFrame frameFor(const RatioConfig& config) {
-  const auto& registry = plugins::builtinRegistry();
-  auto frame = plugin::resolveFrame(registry.frame("decoupled"), registry);
-  if (config.asBefore)
-    for (auto& pass : frame.passes)
-      if (pass.pass->name == "z-prepass") pass.parameters["min-overdraw"] = 0.0;
-  return frame;
-}
 
 struct Session {
   scene::Scene scene;
@@ -73,7 +63,7 @@ nlohmann::json benchSize(gpu::Device& device, const std::vector<LoadedScene>& lo
       auto& session = sessions[s * kConfigs.size() + c];
       session.scene = loaded[s].scene;
       auto made = plugins::makeDecoupledRenderer(
-          device, session.scene, plugins::builtinRegistry(), frameFor(kConfigs[c]),
+          device, session.scene, plugins::builtinRegistry(),
           kConfigs[c].decoupled ? scene::ShadingMode::Decoupled : scene::ShadingMode::Forward, {});
       session.decoupled = std::move(made.shading);
       session.renderer = std::move(made.renderer);

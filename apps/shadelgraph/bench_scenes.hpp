@@ -2,7 +2,7 @@
 // shadelgraph bench A B C --scene-ratios: what the scenes after the first
 // cost against it, and what each costs against the same frame as before
 // issue 14. Every scene renders forward and decoupled, each as now and as
-// before (no occlusion culling, the depth pre-pass whatever the overdraw),
+// before (without occlusion culling),
 // through the first scene's first camera path (each scene through its own
 // default view when the first has no camera path); frames
 // alternate round-robin over all (scene, configuration) pairs, one warm-up

@@ -126,8 +126,8 @@ CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& gr
   command.add_flag("--filters-only", args.filtersOnly, "forward and the three filters only (no bias sweep)");
   command.add_flag("--scene-ratios", args.sceneRatios,
                    "instead of the configuration sweep: every scene after the first against the first (seen from "
-                   "the first scene's first camera path, if it has one), forward and decoupled, each also as before issue 14 (no occlusion culling, always a "
-                   "depth pre-pass), alternated; "
+                   "the first scene's first camera path, if it has one), forward and decoupled, each also as before issue 14 (without "
+                   "occlusion culling), alternated; "
                    "writes scene-ratios.json");
   auto* shimmer = command.add_flag("--shimmer", args.shimmer, "add the shimmer case (default scene's gold sphere, close up)");
   command.add_option("--materials", args.materials,

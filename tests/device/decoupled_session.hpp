@@ -23,13 +23,10 @@ class Session {
   // `mode`: every object's mode; empty: each object's own (scene::Instance::shading).
   Session(scene::Scene s, std::optional<scene::ShadingMode> mode, plugins::DecoupledSettings settings = {},
           const plugin::Registry& registry = plugins::builtinRegistry(), const std::string& frame = "decoupled")
-      : Session(std::move(s), mode, settings, registry, plugin::resolveFrame(registry.frame(frame), registry)) {}
-  Session(scene::Scene s, std::optional<scene::ShadingMode> mode, plugins::DecoupledSettings settings,
-          const plugin::Registry& registry, plugin::ResolvedFrame frame)
       : scene_(std::move(s)), context_(validatedOptions()) {
     device_ = std::make_unique<gpu::Device>(context_);
     device_->shaders().add(gpu::builtinShaders());
-    auto made = plugins::makeDecoupledRenderer(*device_, scene_, registry, std::move(frame), mode, settings);
+    auto made = plugins::makeDecoupledRenderer(*device_, scene_, registry, mode, settings, frame);
     shading_ = std::move(made.shading);
     renderer_ = std::move(made.renderer);
   }

@@ -1,9 +1,7 @@
 // Occlusion culling never hides what is visible: along a camera path that
 // starts with spheres hidden behind the courtyard's back wall, rises until
 // they show over it, jumps behind the wall and comes back, every frame with
-// culling is the same image as without, forward (culled in the depth
-// pre-pass, or in forward-opaque when the frame has none) and decoupled,
-// validation on.
+// culling is the same image as without, forward and decoupled, validation on.
 // The path must also cull something (else it would prove nothing).
 #include <gtest/gtest.h>
 
@@ -55,29 +53,11 @@ std::vector<scene::Camera> path() {
   return cameras;
 }
 
-struct CullCase {
-  const char* name;
-  scene::ShadingMode mode;
-  double minOverdraw;  // the z-prepass's parameter: 0 always runs it, 1e9 leaves forward frames without it
-};
-
-// The decoupled frame with the z-prepass's threshold set.
-plugin::ResolvedFrame frameWith(double minOverdraw) {
-  const auto& registry = plugins::builtinRegistry();
-  auto frame = plugin::resolveFrame(registry.frame("decoupled"), registry);
-  for (auto& pass : frame.passes)
-    if (pass.pass->name == "z-prepass") pass.parameters["min-overdraw"] = minOverdraw;
-  return frame;
-}
-
-class OcclusionCulling : public ::testing::TestWithParam<CullCase> {};
+class OcclusionCulling : public ::testing::TestWithParam<scene::ShadingMode> {};
 
 TEST_P(OcclusionCulling, SameImagesAsWithoutAlongACameraPath) {
   const scene::Scene scene = courtyardWithHiddenSpheres();
-  const auto& registry = plugins::builtinRegistry();
-  const CullCase c = GetParam();
-  Session culled(scene, c.mode, {}, registry, frameWith(c.minOverdraw)),
-      unculled(scene, c.mode, {}, registry, frameWith(c.minOverdraw));
+  Session culled(scene, GetParam()), unculled(scene, GetParam());
   const size_t firstHidden = scene.instances.size() - kHiddenSpheres;
   int framesWithCulledSpheres = 0, framesWithVisibleSpheres = 0;
   const auto cameras = path();
@@ -101,35 +81,15 @@ TEST_P(OcclusionCulling, SameImagesAsWithoutAlongACameraPath) {
   EXPECT_GE(framesWithCulledSpheres, 2);
   // Higher up and behind the wall they are seen, and drawn.
   EXPECT_GE(framesWithVisibleSpheres, 2);
-  if (c.mode == scene::ShadingMode::Decoupled) EXPECT_EQ(culled.stats().counters.compositeMisses, 0u);
+  if (GetParam() == scene::ShadingMode::Decoupled) EXPECT_EQ(culled.stats().counters.compositeMisses, 0u);
 }
 
-// Forward culls in the z-prepass, or without one in forward-opaque itself.
 INSTANTIATE_TEST_SUITE_P(Paths, OcclusionCulling,
-                         ::testing::Values(CullCase{"ForwardWithDepthPrepass", scene::ShadingMode::Forward, 0.0},
-                                           CullCase{"ForwardWithoutDepthPrepass", scene::ShadingMode::Forward, 1e9},
-                                           CullCase{"Decoupled", scene::ShadingMode::Decoupled, 2.0}),
-                         [](const auto& info) { return std::string(info.param.name); });
-
-// Without a depth pre-pass forward-opaque writes the depth itself: the same
-// pixels (the depth test keeps the nearest fragment either way).
-TEST(DepthPrepass, ForwardFramesWithoutItAreTheSameImages) {
-  const scene::Scene scene = courtyardWithHiddenSpheres();
-  const auto& registry = plugins::builtinRegistry();
-  Session with(scene, scene::ShadingMode::Forward, {}, registry, frameWith(0.0)),
-      without(scene, scene::ShadingMode::Forward, {}, registry, frameWith(1e9));
-  for (const auto& camera : path()) {
-    const auto a = with.renderer().render({.width = 160, .height = 120, .cameraOverride = camera});
-    const auto b = without.renderer().render({.width = 160, .height = 120, .cameraOverride = camera});
-    EXPECT_EQ(image::compareRgba8(a.image.rgba8, b.image.rgba8).maxAbs, 0);
-    const auto ran = [](const render::FrameResult& r) {
-      return std::any_of(r.timings.passes.begin(), r.timings.passes.end(),
-                         [](const auto& p) { return p.name == "z-prepass"; });
-    };
-    EXPECT_TRUE(ran(a));
-    EXPECT_FALSE(ran(b));
-  }
-}
+                         ::testing::Values(scene::ShadingMode::Forward, scene::ShadingMode::Decoupled),
+                         [](const auto& info) {
+                           return info.param == scene::ShadingMode::Forward ? std::string("Forward")
+                                                                            : std::string("Decoupled");
+                         });
 
 }  // namespace
 }  // namespace sg::test
