@@ -282,14 +282,14 @@ TEST(Cli, BenchGraphWritesMediansAndRatiosPerSize) {
   EXPECT_NE(tooSmall.output.find("at least 2 passes"), std::string::npos) << tooSmall.output;
 }
 
-// The scene-ratio bench on the committed hidden-objects scenes, tiny: every
+// The scene-ratio bench on small hidden-objects scenes (boxes behind a wall), tiny: every
 // scene and configuration, ratios to the first scene and to the frame as before.
 TEST(Cli, BenchSceneRatiosComparesEveryScene) {
   SG_REQUIRE_ASSETS();
   const auto dir = tempDir() / "bench-scene-ratios";
   std::filesystem::remove_all(dir);
-  const std::string scenes = std::string(SG_SOURCE_DIR) + "/benchmarks/scenes/";
-  auto r = run("bench " + scenes + "cull-base.json " + scenes + "cull-hidden.json --scene-ratios --out " +
+  const std::string scenes = std::string(SG_SOURCE_DIR) + "/tests/scenes/";
+  auto r = run("bench " + scenes + "boxes.json " + scenes + "boxes-hidden.json --scene-ratios --out " +
                dir.string() + " --sizes 64x36 --repetitions 1");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "results.json")) << "--scene-ratios replaces the configuration sweep";
@@ -300,7 +300,7 @@ TEST(Cli, BenchSceneRatiosComparesEveryScene) {
   ASSERT_EQ(configs.size(), 8u);  // 2 scenes x forward, decoupled, each also as before
   for (size_t i = 0; i < configs.size(); ++i) {
     const auto& c = configs[i];
-    EXPECT_EQ(c["scene"], i < 4 ? "cull-base" : "cull-hidden");
+    EXPECT_EQ(c["scene"], i < 4 ? "boxes" : "boxes-hidden");
     EXPECT_GT(c["frame_ms_median"].get<double>(), 0.0);
     // Culling adds no composite misses (at 64x36, one warm-up frame, decoupled has some either way).
     if (!c["as_before"].get<bool>())
