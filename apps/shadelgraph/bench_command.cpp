@@ -27,6 +27,7 @@
 
 #include "bench_graph.hpp"
 #include "bench_materials.hpp"
+#include "bench_scenes.hpp"
 #include "bench_shade_rate.hpp"
 #include "command_options.hpp"
 #include "commands.hpp"
@@ -268,6 +269,12 @@ void runBench(const BenchArgs& args) {
   gpu::Context context;
   gpu::Device device(context);
   device.shaders().add(gpu::builtinShaders());
+  if (args.sceneRatios) {
+    runSceneRatioBench(context, device, {.scenes = args.scenes, .sizes = args.sizes, .repetitions = args.repetitions},
+                       out);
+    setExitCode(context.validationLog().count() ? 1 : 0);
+    return;
+  }
   if (!args.materials.empty()) {
     runMaterialBench(context, device,
                      {.materials = args.materials, .scenes = args.scenes, .sizes = args.sizes,

@@ -130,6 +130,11 @@ CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& gr
                    "each decoupled filter also with shadel-mark as before issue 14 (the trilinear footprint whatever "
                    "the filter, a remap read per tap), alternated in the same run");
   command.add_flag("--filters-only", args.filtersOnly, "forward and the three filters only (no bias sweep)");
+  command.add_flag("--scene-ratios", args.sceneRatios,
+                   "instead of the configuration sweep: every scene after the first against the first (seen from "
+                   "the first scene's first camera path, if it has one), forward and decoupled, each also as before issue 14 (without "
+                   "occlusion culling), alternated; "
+                   "writes scene-ratios.json");
   auto* shimmer = command.add_flag("--shimmer", args.shimmer, "add the shimmer case (default scene's gold sphere, close up)");
   command.add_option("--materials", args.materials,
                   "instead of the configuration sweep: for each of these materials (comma-separated, e.g. "
@@ -167,6 +172,8 @@ void checkBenchArgs(const BenchArgs& args) {
   for (const int rate : args.shadeRates) requireInRange("--shade-rates", rate, 1, kMaxShadeRate);
   requireInRange("--path-frames", args.pathFrames, 2, 100000);
   if (args.sizes.empty()) throw std::invalid_argument("--sizes: expected at least one WIDTHxHEIGHT");
+  if (args.sceneRatios && args.scenes.size() < 2)
+    throw std::invalid_argument("--scene-ratios: expected at least two scenes (the first is the baseline)");
   for (const auto& size : args.sizes) {
     uint32_t w = 0, h = 0;
     parseSize("--sizes", size, w, h);

@@ -80,6 +80,7 @@ struct BenchArgs {
   std::vector<int> shadeRates;  // non-empty: the shade-rate sweep instead (bench_shade_rate.cpp)
   int pathFrames = 24;          // the shade-rate sweep: raster frames along its moving camera path
   std::string moveObject;       // the shade-rate sweep: an object (by name) that moves too
+  bool sceneRatios = false;  // each scene against the first instead (bench_scenes.cpp)
 };
 // bench's options, and its subcommand "graph" (returned) with graphArgs'.
 CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& graphArgs);

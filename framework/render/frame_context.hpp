@@ -34,6 +34,8 @@ struct FrameInputs {
   float pixelsPerUnitAtUnitDistance = 0.0f;
   glm::mat4 viewProjection{1.0f};  // world to clip (Vulkan depth 0..1), for culling
   uint32_t width = 0, height = 0;
+  // Occlusion culling's per-renderer state; null when the frame is not to be occlusion-culled.
+  DrawCulling* culling = nullptr;
 };
 
 // Indices into GpuScene::draws() of the draws inside the view frustum. All
@@ -57,6 +59,8 @@ class FrameContext {
   std::span<const uint32_t> visibleDraws();
   // A scene view over some of this frame's draws (the span must outlive the frame's declaration).
   SceneView view(std::span<const uint32_t> draws) const;
+  // The culled draw commands a cull pass publishes for the passes after it (see readDrawCommands).
+  DrawCommands& drawCommands() { return drawCommands_; }
 
   // The frame resource's current version; throws naming the pass when no pass wrote it.
   graph::ResourceHandle read(const std::string& resource) const;
@@ -91,6 +95,7 @@ class FrameContext {
   const SceneView& all_;
   std::map<std::string, std::shared_ptr<void>>& states_;
   FrameDraws draws_;
+  DrawCommands drawCommands_;
   std::vector<uint32_t> visible_;
   std::map<std::string, graph::ResourceHandle> resources_;
   const plugin::ResolvedPass* pass_ = nullptr;

@@ -6,6 +6,19 @@
 #include <shadelgraph/scene/bounds.hpp>
 
 namespace sg::render {
+namespace {
+
+// The world bounding sphere of every draw, for frustum and occlusion culling.
+std::vector<glm::vec4> drawSpheres(const scene::Scene& scene, const std::vector<DrawItem>& draws) {
+  std::vector<glm::vec4> spheres;
+  for (const auto& draw : draws) {
+    const auto world = scene::transformBounds(scene.meshes[size_t(scene.instances[draw.instance].mesh)].bounds, draw.world);
+    spheres.emplace_back(world.center(), world.radius());
+  }
+  return spheres;
+}
+
+}  // namespace
 
 // One frame's declaration: the graph holds callbacks that refer to `view`,
 // `inputs` and the draw lists in `context`.
@@ -25,19 +38,18 @@ Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, const plugin:
       frame_(std::move(frame)),
       layerTextures_(device, registry),
       gpuScene_(device.context(), device.memory(), scene),
+      culling_(device.context(), device.memory(), gpuScene_.draws(), drawSpheres(scene, gpuScene_.draws())),
       frameUniforms_(device.context(), device.memory(),
                      {sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryLocation::Upload,
                       "frame uniforms", "frame"}),
       executor_(device) {
   registry_.check();
   for (const auto& instance : scene.instances) modes_.push_back(instance.shading);
-  for (const auto& draw : gpuScene_.draws()) {
+  for (const auto& draw : gpuScene_.draws())
     if (!registry_.hasMaterial(draw.materialStack))
       throw plugin::PluginError("object '" + scene.instances[draw.instance].name + "' uses material '" +
                                 draw.materialStack + "', which no plugin registered");
-    const auto world = scene::transformBounds(scene.meshes[size_t(scene.instances[draw.instance].mesh)].bounds, draw.world);
-    drawSpheres_.emplace_back(world.center(), world.radius());
-  }
+  drawSpheres_ = drawSpheres(scene, gpuScene_.draws());
   // Plugins' GLSL (their layers' sources) by virtual path.
   for (const auto& directory : registry_.shaderDirectories()) device_.shaders().addDirectory(directory);
 }
@@ -101,7 +113,7 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
   auto frame = std::make_unique<Frame>(Frame{
       {gpuScene_, frameUniforms_, gpuScene_.allDraws(), registry_, layerTextures_},
       {scene_, device_, executor_, modes_, drawSpheres_, frameNumber_++, cam.position(), focal, uniforms.viewProjection,
-       settings.width, settings.height},
+       settings.width, settings.height, settings.occlusionCulling ? &culling_ : nullptr},
       {}, {}, {}});
   frame->output = frame->graph.importImage(
       "output", {.format = graph::Format::RGBA8Srgb, .size = graph::Size::absolute(settings.width, settings.height)},

@@ -11,6 +11,7 @@
 #include <shadelgraph/gpu/graph_executor.hpp>
 #include <shadelgraph/gpu/readback.hpp>
 #include <shadelgraph/plugin/frame_description.hpp>
+#include <shadelgraph/render/draw_culling.hpp>
 #include <shadelgraph/render/frame_context.hpp>
 #include <shadelgraph/render/gpu_scene.hpp>
 #include <shadelgraph/render/layer_textures.hpp>
@@ -24,6 +25,8 @@ struct RenderSettings {
   int camera = -1;  // index into the scene's cameras; -1: the first, or framing of the bounds
   std::optional<scene::Camera> cameraOverride;  // e.g. a pose along a camera path; wins over `camera`
   bool aliasing = true;
+  // Skip draws hidden behind others (tested against this frame's depth of the draws visible last frame).
+  bool occlusionCulling = true;
 };
 
 struct FrameResult {
@@ -55,6 +58,7 @@ class Renderer {
   graph::CompiledPlan plan(const RenderSettings& settings);
   FrameResult render(const RenderSettings& settings);
   const GpuScene& gpuScene() const { return gpuScene_; }
+  const DrawCulling& culling() const { return culling_; }
   scene::Camera camera(const RenderSettings& settings) const;
 
  private:
@@ -71,6 +75,7 @@ class Renderer {
   uint64_t frameNumber_ = 0;
   LayerTextures layerTextures_;
   GpuScene gpuScene_;
+  DrawCulling culling_;
   gpu::Buffer frameUniforms_;
   std::optional<gpu::Image> output_;
   gpu::GraphExecutor executor_;

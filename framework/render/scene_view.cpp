@@ -4,14 +4,36 @@
 
 namespace sg::render {
 
-void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const DrawItem& draw, uint32_t objectId) {
+SceneView readDrawCommands(graph::Pass& pass, SceneView view) {
+  if (view.commands && view.commands->handle.valid()) {
+    pass.read(view.commands->handle, graph::Access::IndirectArgs);
+    view.indirect = view.commands->buffer;
+  }
+  return view;
+}
+
+void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const DrawItem& draw, uint32_t objectId,
+              VkBuffer indirect, uint32_t drawIndex) {
   const ObjectConstants constants{draw.world, objectId, draw.material};
   vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof constants, &constants);
   vkCmdSetCullMode(cmd, draw.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
   // A mirroring world matrix turns counter-clockwise triangles clockwise on screen.
   const bool mirrored = glm::determinant(glm::mat3(draw.world)) < 0.0f;
   vkCmdSetFrontFace(cmd, mirrored ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
-  vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
+  if (indirect)
+    vkCmdDrawIndexedIndirect(cmd, indirect, VkDeviceSize(drawIndex) * sizeof(VkDrawIndexedIndirectCommand), 1,
+                             sizeof(VkDrawIndexedIndirectCommand));
+  else
+    vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
+}
+
+void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const DrawItem& draw, uint32_t objectId) {
+  drawItem(cmd, pipeline, draw, objectId, VK_NULL_HANDLE, 0);
+}
+
+void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const SceneView& view, uint32_t drawIndex,
+              uint32_t objectId) {
+  drawItem(cmd, pipeline, view.scene.draws()[drawIndex], objectId, view.indirect, drawIndex);
 }
 
 }  // namespace sg::render

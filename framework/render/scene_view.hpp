@@ -8,7 +8,9 @@
 
 #include <shadelgraph/gpu/buffer.hpp>
 #include <shadelgraph/graph/handles.hpp>
+#include <shadelgraph/graph/pass.hpp>
 #include <shadelgraph/plugin/registry.hpp>
+#include <shadelgraph/render/draw_culling.hpp>
 #include <shadelgraph/render/gpu_scene.hpp>
 #include <shadelgraph/render/layer_textures.hpp>
 
@@ -22,10 +24,25 @@ struct SceneView {
   LayerTextures& layerTextures;  // the layers' own textures, loaded when first drawn
   // The frame resources when the view was made (what layers' frameInputs sample).
   std::map<std::string, graph::ResourceHandle> frameImages = {};
+  // The frame's culled draw commands, filled in when a cull pass declares.
+  const DrawCommands* commands = nullptr;
+  // Set by readDrawCommands: the draws' instance counts come from here.
+  VkBuffer indirect = VK_NULL_HANDLE;
 };
+
+// The view a pass that draws `view.draws` records with: when this frame's
+// draws were culled, the pass reads the commands (declared now, at the
+// version current now) and draws indirectly, skipping culled draws.
+SceneView readDrawCommands(graph::Pass& pass, SceneView view);
 
 // Push constants, cull mode and front face (clockwise when the world matrix
 // mirrors) for one draw, then the indexed draw.
 void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const DrawItem& draw, uint32_t objectId);
+// The same, from indirect draw command `drawIndex` of `indirect` when it is set.
+void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const DrawItem& draw, uint32_t objectId,
+              VkBuffer indirect, uint32_t drawIndex);
+// Draw `drawIndex` of the view's scene as `objectId`, culled when the view read draw commands.
+void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const SceneView& view, uint32_t drawIndex,
+              uint32_t objectId);
 
 }  // namespace sg::render

@@ -39,7 +39,8 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
   pass.read(frame.shadedColor, graph::Access::Sampled);
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);  // misses
   color = pass.write(color, graph::Access::ColorAttachment);
-  pass.execute([frame, color, depth](PassContext& ctx) {
+  // Culled draws (instance count 0 in the frame's draw commands) are skipped.
+  pass.execute([indirect = render::readDrawCommands(pass, frame.view).indirect, frame, color, depth](PassContext& ctx) {
     const std::string variant = std::to_string(frame.filter) + (frame.levelView ? "/level" : "");
     const auto& pipeline =
         ctx.device().pipeline("composite/" + variant, [&] { return compositePipeline(frame.filter, frame.levelView); });
@@ -48,7 +49,8 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
     frame.view.scene.bindGeometry(ctx.cmd());
     const auto& draws = frame.view.scene.draws();
     for (size_t i = 0; i < frame.view.draws.size(); ++i)
-      render::drawItem(ctx.cmd(), pipeline, draws[frame.view.draws[i]], frame.objectIds[i]);
+      render::drawItem(ctx.cmd(), pipeline, draws[frame.view.draws[i]], frame.objectIds[i], indirect,
+                       frame.view.draws[i]);
     ctx.endRendering();
   });
   return color;

@@ -109,7 +109,7 @@ void drawForward(PassContext& ctx, const render::SceneView& view, std::span<cons
     const auto& item = view.scene.draws()[d];
     VkDescriptorSet set = view.scene.materialSet(item.material);
     vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->layout(), 1, 1, &set, 0, nullptr);
-    render::drawItem(ctx.cmd(), *pipeline, item, d);
+    render::drawItem(ctx.cmd(), *pipeline, view, d, d);
   }
 }
 

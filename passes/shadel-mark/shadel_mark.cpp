@@ -28,7 +28,8 @@ void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::Reso
   pass.read(depth, graph::Access::DepthRead);
   frame.remap = pass.write(frame.remap, graph::Access::StorageReadWrite, graph::ShaderStage::Fragment);
   frame.markedFilter = frame.filter;
-  pass.execute([frame, depth](PassContext& ctx) {
+  // Culled draws (instance count 0 in the frame's draw commands) are skipped.
+  pass.execute([indirect = render::readDrawCommands(pass, frame.view).indirect, frame, depth](PassContext& ctx) {
     const std::string variant = std::to_string(frame.filter) + (frame.baseline ? "/baseline" : "");
     const auto& pipeline = ctx.device().pipeline(
         "shadel-mark/" + variant, [&] { return shadelMarkPipeline(frame.filter, frame.baseline); });
@@ -37,7 +38,8 @@ void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::Reso
     frame.view.scene.bindGeometry(ctx.cmd());
     const auto& draws = frame.view.scene.draws();
     for (size_t i = 0; i < frame.view.draws.size(); ++i)
-      render::drawItem(ctx.cmd(), pipeline, draws[frame.view.draws[i]], frame.objectIds[i]);
+      render::drawItem(ctx.cmd(), pipeline, draws[frame.view.draws[i]], frame.objectIds[i], indirect,
+                       frame.view.draws[i]);
     ctx.endRendering();
   });
 }

@@ -7,6 +7,7 @@
 #include "exposure/exposure.hpp"
 #include "forward/forward.hpp"
 #include "forward/forward_material.hpp"
+#include "occlusion-cull/occlusion_cull.hpp"
 #include "tonemap/tonemap.hpp"
 #include "z-prepass/z_prepass.hpp"
 
@@ -18,6 +19,27 @@ using render::FrameContext;
 graph::ResourceHandle depthTarget(FrameContext& ctx) {
   return ctx.has("scene.depth") ? ctx.read("scene.depth")
                                 : ctx.graph().createImage("depth", {.format = graph::Format::D32F});
+}
+
+// The depth pre-pass, occlusion-culled: the draws visible last frame first,
+// then every draw tested against that depth, then the draws found visible
+// that were not drawn yet. The passes after it draw only the visible ones.
+graph::ResourceHandle culledZPrepass(FrameContext& ctx, render::DrawCulling& culling) {
+  // Where the draw commands rest between frames: read as indirect arguments and written by the cull.
+  const graph::ResourceState resting{graph::Layout::General, graph::PipelineStage::AllCommands,
+                                     graph::AccessFlag::IndirectCommandRead | graph::AccessFlag::ShaderStorageRead |
+                                         graph::AccessFlag::ShaderStorageWrite};
+  const auto& in = ctx.inputs();
+  render::DrawCommands& commands = ctx.drawCommands();
+  commands.handle = ctx.graph().importPersistentBuffer("draw commands", {.size = culling.commandBytes()}, resting);
+  commands.buffer = culling.commands().handle();
+  in.executor.bindBuffer(commands.handle, culling.commands());
+  const auto view = ctx.view(ctx.visibleDraws());
+  auto depth = passes::addZPrepass(ctx.graph(), view, depthTarget(ctx));
+  const auto cull = passes::addOcclusionCull(ctx.graph(), culling, in.viewProjection, in.width, in.height, depth,
+                                             commands.handle);
+  commands.handle = cull.commands;
+  return passes::addZPrepassLate(ctx.graph(), view, depth, cull.late);
 }
 
 passes::ForwardTargets targets(FrameContext& ctx) { return {ctx.read("scene.hdr"), ctx.read("scene.depth")}; }
@@ -35,6 +57,11 @@ void registerForwardPackage(plugin::Registry& registry) {
                     .reads = {plugin::kForwardDrawsResource},
                     .writes = {"scene.depth"},
                     .declare = [](FrameContext& ctx) {
+                      // One draw has nothing to hide behind.
+                      if (ctx.inputs().culling && ctx.visibleDraws().size() > 1) {
+                        ctx.write("scene.depth", culledZPrepass(ctx, *ctx.inputs().culling));
+                        return;
+                      }
                       ctx.write("scene.depth",
                                 passes::addZPrepass(ctx.graph(), ctx.view(ctx.visibleDraws()), depthTarget(ctx)));
                     }});

@@ -285,6 +285,39 @@ TEST(Cli, BenchGraphWritesMediansAndRatiosPerSize) {
   EXPECT_NE(tooSmall.output.find("at least 2 passes"), std::string::npos) << tooSmall.output;
 }
 
+// The scene-ratio bench on small hidden-objects scenes (boxes behind a wall), tiny: every
+// scene and configuration, ratios to the first scene and to the frame as before.
+TEST(Cli, BenchSceneRatiosComparesEveryScene) {
+  SG_REQUIRE_ASSETS();
+  const auto dir = tempDir() / "bench-scene-ratios";
+  std::filesystem::remove_all(dir);
+  const std::string scenes = std::string(SG_SOURCE_DIR) + "/tests/scenes/";
+  auto r = run("bench " + scenes + "boxes.json " + scenes + "boxes-hidden.json --scene-ratios --out " +
+               dir.string() + " --sizes 64x36 --repetitions 1");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "results.json")) << "--scene-ratios replaces the configuration sweep";
+  std::ifstream in(dir / "scene-ratios.json");
+  const auto json = nlohmann::json::parse(in);
+  ASSERT_EQ(json["runs"].size(), 1u);
+  const auto& configs = json["runs"][0]["configs"];
+  ASSERT_EQ(configs.size(), 8u);  // 2 scenes x forward, decoupled, each also as before
+  for (size_t i = 0; i < configs.size(); ++i) {
+    const auto& c = configs[i];
+    EXPECT_EQ(c["scene"], i < 4 ? "boxes" : "boxes-hidden");
+    EXPECT_GT(c["frame_ms_median"].get<double>(), 0.0);
+    // Culling adds no composite misses (at 64x36, one warm-up frame, decoupled has some either way).
+    if (!c["as_before"].get<bool>())
+      EXPECT_LE(c["composite_misses"].get<uint64_t>(), configs[i + 2]["composite_misses"].get<uint64_t>()) << c["config"];
+    if (i < 4) EXPECT_DOUBLE_EQ(c["ratio_to_first"].get<double>(), 1.0);
+    if (c["as_before"].get<bool>()) {
+      EXPECT_DOUBLE_EQ(c["ratio_to_before"].get<double>(), 1.0);
+      EXPECT_FALSE(c["pass_ms_median"].contains("occlusion-cull")) << c["config"];
+    } else {
+      EXPECT_TRUE(c["pass_ms_median"].contains("occlusion-cull")) << c["config"];
+    }
+  }
+}
+
 TEST(Cli, BenchMaterialsWritesEveryMaterialAndPath) {
   const auto dir = tempDir() / "bench-materials";
   std::filesystem::remove_all(dir);
@@ -488,6 +521,7 @@ const BadCommand kBadCommands[] = {
     {"BenchReferenceScaleZero", "bench --reference-scale 0", "--reference-scale 0"},
     {"BenchReferenceBeyondSizeLimit", "bench --sizes 8192x8192 --reference-scale 4", "--reference-scale 4"},
     {"BenchSizesTrailingJunk", "bench --sizes 64x36junk", "--sizes '64x36junk'"},
+    {"BenchSceneRatiosOneScene", "bench --scene-ratios", "--scene-ratios"},
 };
 
 // Readable in gtest's and ctest's listings: the command line, not the struct's bytes.

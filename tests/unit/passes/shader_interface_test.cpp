@@ -31,6 +31,7 @@
 #include <support-expand/support_expand.hpp>
 #include <tonemap/tonemap.hpp>
 #include <work-aggregate/work_aggregate.hpp>
+#include <occlusion-cull/occlusion_cull.hpp>
 #include <z-prepass/z_prepass.hpp>
 
 namespace sg::test {
@@ -219,6 +220,8 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   std::string errors;
   errors += mismatches("z-prepass", passes::zPrepassPipeline());
   errors += mismatches("exposure", passes::exposurePipeline());
+  errors += mismatches("hi-z", passes::hiZPipeline());
+  errors += mismatches("occlusion-cull", passes::occlusionCullPipeline());
   for (bool passthrough : {false, true})
     errors += mismatches("tonemap", passes::tonemapPipeline(VK_FORMAT_R8G8B8A8_SRGB, passthrough));
   errors += mismatches("shadel-clear", passes::shadelClearPipeline());

@@ -1,0 +1,95 @@
+// Occlusion culling never hides what is visible: along a camera path that
+// starts with spheres hidden behind the courtyard's back wall, rises until
+// they show over it, jumps behind the wall and comes back, every frame with
+// culling is the same image as without, forward and decoupled, validation on.
+// The path must also cull something (else it would prove nothing).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <shadelgraph/image/metrics.hpp>
+#include <shadelgraph/scene/default_scene.hpp>
+#include <shadelgraph/scene/procedural_meshes.hpp>
+
+#include "decoupled_session.hpp"
+
+namespace sg::test {
+namespace {
+
+constexpr int kHiddenSpheres = 6;
+
+// The default courtyard with a row of spheres behind its back wall (z = -8, 4 high).
+scene::Scene courtyardWithHiddenSpheres() {
+  scene::Scene s = scene::makeDefaultScene(64);
+  scene::Primitive sphere = scene::makeSphere(0.6f, 24, 12);
+  sphere.material = 0;
+  scene::Mesh mesh{.name = "hidden sphere", .bounds = sphere.bounds};
+  mesh.primitives.push_back(std::move(sphere));
+  s.meshes.push_back(std::move(mesh));
+  for (int i = 0; i < kHiddenSpheres; ++i)
+    s.instances.push_back({int(s.meshes.size() - 1),
+                           glm::translate(glm::mat4(1.0f), {-5.0f + 2.0f * float(i), 1.0f, -10.5f}),
+                           "hidden sphere " + std::to_string(i), scene::ShadingMode::Auto});
+  return s;
+}
+
+scene::Camera camera(glm::vec3 eye, glm::vec3 target) {
+  scene::Camera c{.name = "path", .yfov = 0.9f, .znear = 0.1f, .zfar = 100.0f};
+  c.world = scene::lookAtWorld(eye, target);
+  return c;
+}
+
+// The path: hidden, rising until the spheres show over the wall, a jump
+// behind the wall (nothing drawn last frame is in front of them), and back.
+std::vector<scene::Camera> path() {
+  std::vector<scene::Camera> cameras;
+  for (float y : {3.2f, 3.2f, 5.0f, 7.0f, 9.0f}) cameras.push_back(camera({1.5f, y, 8.5f}, {0.0f, 1.0f, -4.0f}));
+  cameras.push_back(camera({0.0f, 2.0f, -16.0f}, {0.0f, 1.0f, -10.0f}));
+  cameras.push_back(camera({1.5f, 3.2f, 8.5f}, {0.0f, 1.0f, -4.0f}));
+  cameras.push_back(camera({-6.5f, 1.5f, 6.0f}, {-2.0f, 1.0f, -9.0f}));
+  return cameras;
+}
+
+class OcclusionCulling : public ::testing::TestWithParam<scene::ShadingMode> {};
+
+TEST_P(OcclusionCulling, SameImagesAsWithoutAlongACameraPath) {
+  const scene::Scene scene = courtyardWithHiddenSpheres();
+  Session culled(scene, GetParam()), unculled(scene, GetParam());
+  const size_t firstHidden = scene.instances.size() - kHiddenSpheres;
+  int framesWithCulledSpheres = 0, framesWithVisibleSpheres = 0;
+  const auto cameras = path();
+  for (size_t f = 0; f < cameras.size(); ++f) {
+    const auto a = culled.renderer().render({.width = 160, .height = 120, .cameraOverride = cameras[f]}).image;
+    const auto b = unculled.renderer()
+                       .render({.width = 160, .height = 120, .cameraOverride = cameras[f], .occlusionCulling = false})
+                       .image;
+    const auto diff = image::compareRgba8(a.rgba8, b.rgba8);
+    EXPECT_EQ(diff.maxAbs, 0) << "frame " << f << ": culled and unculled images differ (mean |d| " << diff.meanAbs
+                              << ", " << diff.fractionAbove8 * 100 << "% of pixels by more than 8/255)";
+    const auto visible = culled.renderer().culling().lastVisible();
+    const auto& draws = culled.renderer().gpuScene().draws();
+    int hiddenCulled = 0, hiddenVisible = 0;
+    for (size_t d = 0; d < draws.size(); ++d)
+      if (draws[d].instance >= firstHidden) (visible[d] ? hiddenVisible : hiddenCulled)++;
+    if (hiddenCulled == kHiddenSpheres) ++framesWithCulledSpheres;
+    if (hiddenVisible > 0) ++framesWithVisibleSpheres;
+  }
+  // The start of the path hides every sphere behind the wall, and culling finds that.
+  EXPECT_GE(framesWithCulledSpheres, 2);
+  // Higher up and behind the wall they are seen, and drawn.
+  EXPECT_GE(framesWithVisibleSpheres, 2);
+  if (GetParam() == scene::ShadingMode::Decoupled) EXPECT_EQ(culled.stats().counters.compositeMisses, 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Paths, OcclusionCulling,
+                         ::testing::Values(scene::ShadingMode::Forward, scene::ShadingMode::Decoupled),
+                         [](const auto& info) {
+                           return info.param == scene::ShadingMode::Forward ? std::string("Forward")
+                                                                            : std::string("Decoupled");
+                         });
+
+}  // namespace
+}  // namespace sg::test
