@@ -29,4 +29,8 @@ std::vector<bool> DrawCulling::lastVisible() const {
   return visible;
 }
 
+void DrawCulling::setSphere(uint32_t draw, const glm::vec4& sphere) {
+  if (draw < drawCount_) spheres_.write(&sphere, sizeof sphere, draw * sizeof(glm::vec4));
+}
+
 }  // namespace sg::render

@@ -26,6 +26,8 @@ class DrawCulling {
   VkDeviceSize commandBytes() const { return commands_.size(); }
   // Per draw: did the last culled frame find it visible? (Read on the host; frames are waited for.)
   std::vector<bool> lastVisible() const;
+  // A draw whose object moved: the next cull tests its new bounding sphere.
+  void setSphere(uint32_t draw, const glm::vec4& sphere);
 
  private:
   uint32_t drawCount_ = 0;

@@ -71,6 +71,7 @@ void Renderer::setObjectTransform(uint32_t instance, const glm::mat4& world) {
     if (draws[d].instance != instance) continue;
     const auto bounds = scene::transformBounds(scene_.meshes[size_t(scene_.instances[instance].mesh)].bounds, world);
     drawSpheres_[d] = glm::vec4(bounds.center(), bounds.radius());
+    culling_.setSphere(d, drawSpheres_[d]);
   }
 }
 

@@ -81,14 +81,34 @@ TEST_P(OcclusionCulling, SameImagesAsWithoutAlongACameraPath) {
   EXPECT_GE(framesWithCulledSpheres, 2);
   // Higher up and behind the wall they are seen, and drawn.
   EXPECT_GE(framesWithVisibleSpheres, 2);
-  if (GetParam() == scene::ShadingMode::Decoupled) EXPECT_EQ(culled.stats().counters.compositeMisses, 0u);
+  if (GetParam() == scene::ShadingMode::Decoupled) {
+    EXPECT_EQ(culled.stats().counters.compositeMisses, 0u);
+  }
+}
+
+// A hidden sphere moved out in front of the wall (Renderer::setObjectTransform)
+// is tested at its new place: culled by its old bounds it would vanish.
+TEST_P(OcclusionCulling, AMovedObjectIsTestedWhereItIsNow) {
+  const scene::Scene scene = courtyardWithHiddenSpheres();
+  Session culled(scene, GetParam()), unculled(scene, GetParam());
+  const uint32_t moved = uint32_t(scene.instances.size() - 1);
+  const scene::Camera view = path().front();
+  const auto hidden = culled.renderer().render({.width = 160, .height = 120, .cameraOverride = view}).image;
+  const glm::mat4 inFront = glm::translate(glm::mat4(1.0f), {0.0f, 1.0f, 2.0f});
+  culled.renderer().setObjectTransform(moved, inFront);
+  unculled.renderer().setObjectTransform(moved, inFront);
+  const auto a = culled.renderer().render({.width = 160, .height = 120, .cameraOverride = view}).image;
+  const auto b =
+      unculled.renderer().render({.width = 160, .height = 120, .cameraOverride = view, .occlusionCulling = false}).image;
+  EXPECT_GT(image::compareRgba8(hidden.rgba8, b.rgba8).maxAbs, 0) << "the moved sphere must be in view";
+  EXPECT_EQ(image::compareRgba8(a.rgba8, b.rgba8).maxAbs, 0) << "the moved sphere was culled by its old bounds";
 }
 
 INSTANTIATE_TEST_SUITE_P(Paths, OcclusionCulling,
                          ::testing::Values(scene::ShadingMode::Forward, scene::ShadingMode::Decoupled),
-                         [](const auto& info) {
-                           return info.param == scene::ShadingMode::Forward ? std::string("Forward")
-                                                                            : std::string("Decoupled");
+                         [](const auto& param) {
+                           return param.param == scene::ShadingMode::Forward ? std::string("Forward")
+                                                                             : std::string("Decoupled");
                          });
 
 }  // namespace
