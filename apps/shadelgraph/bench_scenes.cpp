@@ -45,13 +45,7 @@ scene::Camera baselineCamera(const LoadedScene& loaded, const render::Renderer& 
                              uint32_t height) {
   if (loaded.cameraPaths.empty()) return renderer.camera({.width = width, .height = height});
   const auto pose = scene::evaluatePose(loaded.cameraPaths.front(), 0.0f);
-  const scene::Bounds bounds = scene::worldBounds(loaded.scene);
-  scene::Camera camera{.name = "path", .yfov = 0.8f};
-  camera.world = scene::lookAtWorld(pose.position, pose.target);
-  const float reach = glm::distance(pose.position, bounds.center()) + bounds.radius();
-  camera.znear = std::max(reach * 1e-3f, 1e-3f);
-  camera.zfar = reach * 1.5f;
-  return camera;
+  return scene::poseCamera(pose, scene::worldBounds(loaded.scene));
 }
 
 nlohmann::json benchSize(gpu::Device& device, const std::vector<LoadedScene>& loaded,

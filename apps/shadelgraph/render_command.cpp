@@ -105,13 +105,7 @@ scene::Camera pathCamera(const AppSession& session, int path, int frame) {
     throw std::invalid_argument("--path " + std::to_string(path) + ": the scene has " +
                                 std::to_string(session.cameraPaths.size()) + " camera path(s)");
   const auto pose = scene::evaluatePose(session.cameraPaths[size_t(path)], float(frame) / 30.0f);
-  const scene::Bounds bounds = scene::worldBounds(session.scene);
-  scene::Camera camera{.name = "path", .yfov = 0.8f};
-  camera.world = scene::lookAtWorld(pose.position, pose.target);
-  const float reach = glm::distance(pose.position, bounds.center()) + bounds.radius();
-  camera.znear = std::max(reach * 1e-3f, 1e-3f);
-  camera.zfar = reach * 1.5f;
-  return camera;
+  return scene::poseCamera(pose, scene::worldBounds(session.scene));
 }
 
 // The scene's camera `index`, named as the option that asked for it.

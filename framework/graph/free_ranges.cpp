@@ -3,15 +3,11 @@
 #include <algorithm>
 
 namespace sg::graph {
-namespace {
-
 uint64_t alignUp(uint64_t value, uint64_t alignment) {
   if (alignment <= 1) return value;
   if ((alignment & (alignment - 1)) == 0) return (value + alignment - 1) & ~(alignment - 1);  // Vulkan's case
   return (value + alignment - 1) / alignment * alignment;
 }
-
-}  // namespace
 
 void FreeRanges::clear(QueueMask queues) {
   fragments_.clear();

@@ -9,6 +9,9 @@
 
 namespace sg::graph {
 
+// `value` rounded up to a multiple of `alignment` (1 or 0: unchanged).
+uint64_t alignUp(uint64_t value, uint64_t alignment);
+
 // Free ranges as fragments by offset, one per last user (never merged across
 // users: each must be reported when taken over). A fragment also holds the
 // queues allowed to take it over yet: its last user's at once, the others once

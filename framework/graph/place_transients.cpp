@@ -6,16 +6,6 @@
 namespace sg::graph {
 namespace {
 
-uint64_t alignUp(uint64_t value, uint64_t alignment) {
-  if (alignment <= 1) return value;
-  if ((alignment & (alignment - 1)) == 0) return (value + alignment - 1) & ~(alignment - 1);  // Vulkan's case
-  return (value + alignment - 1) / alignment * alignment;
-}
-
-}  // namespace
-
-namespace {
-
 // Indices of `transients` sorted by a position (first or last use): positions
 // are dense, so a counting sort. `starts` is scratch.
 template <class Position>

@@ -62,4 +62,13 @@ glm::mat4 evaluateView(const CameraPath& path, float seconds) {
   return glm::inverse(lookAtWorld(pose.position, pose.target));
 }
 
+Camera poseCamera(const CameraPose& pose, const Bounds& sceneBounds) {
+  Camera camera{.name = "path", .yfov = 0.8f};
+  camera.world = lookAtWorld(pose.position, pose.target);
+  const float reach = glm::distance(pose.position, sceneBounds.center()) + sceneBounds.radius();
+  camera.znear = std::max(reach * 1e-3f, 1e-3f);
+  camera.zfar = reach * 1.5f;
+  return camera;
+}
+
 }  // namespace sg::scene

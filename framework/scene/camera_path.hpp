@@ -7,6 +7,9 @@
 
 #include <glm/glm.hpp>
 
+#include <shadelgraph/scene/bounds.hpp>
+#include <shadelgraph/scene/camera.hpp>
+
 namespace sg::scene {
 
 struct CameraKey {
@@ -43,5 +46,8 @@ struct CameraPose {
 CameraPose evaluatePose(const CameraPath& path, float seconds);
 // World to camera at time `seconds` (right-handed, looking down -Z, +Y up).
 glm::mat4 evaluateView(const CameraPath& path, float seconds);
+// The perspective camera (yfov 0.8) at a pose, its near and far planes set by
+// how far the scene (its world bounds) reaches from the eye.
+Camera poseCamera(const CameraPose& pose, const Bounds& sceneBounds);
 
 }  // namespace sg::scene
