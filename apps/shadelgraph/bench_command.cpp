@@ -67,6 +67,12 @@ double median(std::vector<double> v) {
   return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
+nlohmann::json medians(const std::map<std::string, std::vector<double>>& samples) {
+  nlohmann::json result = nlohmann::json::object();
+  for (const auto& [name, values] : samples) result[name] = median(values);
+  return result;
+}
+
 namespace {
 
 std::string cpuName() {
@@ -217,8 +223,7 @@ nlohmann::json benchScene(gpu::Device& device, const std::string& scenePath, uin
                                  .image));
     const auto flicker = image::flicker(path, referencePath);
     const auto stats = sessions[c].decoupled->stats();
-    nlohmann::json passes = nlohmann::json::object();
-    for (const auto& [name, samples] : passMs[c]) passes[name] = median(samples);
+    const nlohmann::json passes = medians(passMs[c]);
     const std::string file = sceneName + "-" + std::to_string(width) + "-" + configs[c].name + ".png";
     image::writePng(out / file, test.width, test.height, test.pixels.data());
     image::writePng(out / ("flip-" + file), width, height, image::flipHeatmap(flip).pixels.data());

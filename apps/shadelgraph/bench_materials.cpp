@@ -65,16 +65,8 @@ struct Samples {
     for (const auto& p : frame.timings.passes) passMs[p.name].push_back(p.gpuMs);
     for (const auto& r : stats.layerReuse) reuse[r.layer].push_back(reuseFraction(r));
   }
-  nlohmann::json passMedians() const {
-    nlohmann::json j = nlohmann::json::object();
-    for (const auto& [name, v] : passMs) j[name] = median(v);
-    return j;
-  }
-  nlohmann::json reuseMedians() const {
-    nlohmann::json j = nlohmann::json::object();
-    for (const auto& [name, v] : reuse) j[name] = median(v);
-    return j;
-  }
+  nlohmann::json passMedians() const { return medians(passMs); }
+  nlohmann::json reuseMedians() const { return medians(reuse); }
 };
 
 // A camera that sees none of the scene: outside its bounds, looking away. A

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,8 @@ image::Rgba8Image toImage(const gpu::HostImage& h);
 // Box filter of `scale` x `scale` blocks in linear light (the reference's supersampling).
 image::Rgba8Image downsample(const gpu::HostImage& big, uint32_t scale);
 double median(std::vector<double> v);
+// {name: median of its samples}, e.g. per pass.
+nlohmann::json medians(const std::map<std::string, std::vector<double>>& samples);
 // One run per scene (the built-in one when `scenes` is empty) and size, scene by scene.
 nlohmann::json runPerSceneAndSize(
     const std::vector<std::string>& scenes, const std::vector<std::string>& sizes,

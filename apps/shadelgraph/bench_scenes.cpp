@@ -89,8 +89,6 @@ nlohmann::json benchSize(gpu::Device& device, const std::vector<LoadedScene>& lo
       const double baseline = median(sessions[c].frameMs);
       // This scene and path as before issue 14 (configs 2, 3: the same paths as 0, 1).
       const double before = median(sessions[s * kConfigs.size() + c % 2 + 2].frameMs);
-      nlohmann::json passes = nlohmann::json::object();
-      for (const auto& [name, samples] : session.passMs) passes[name] = median(samples);
       const auto stats = session.decoupled->stats();
       results.push_back({{"scene", names[s]},
                          {"config", kConfigs[c].name},
@@ -101,7 +99,7 @@ nlohmann::json benchSize(gpu::Device& device, const std::vector<LoadedScene>& lo
                          {"frame_ms_samples", session.frameMs},
                          {"ratio_to_first", baseline > 0.0 ? ms / baseline : 0.0},
                          {"ratio_to_before", before > 0.0 ? ms / before : 0.0},
-                         {"pass_ms_median", passes},
+                         {"pass_ms_median", medians(session.passMs)},
                          {"composite_misses", stats.counters.compositeMisses}});
     }
   return {{"width", width}, {"height", height}, {"repetitions", repetitions}, {"configs", results}};

@@ -125,11 +125,6 @@ nlohmann::json runScene(gpu::Device& device, const ShadeRateBenchArgs& args, con
     for (const double x : v) sum += x;
     return v.empty() ? 0.0 : sum / double(v.size());
   };
-  const auto passMedians = [](const std::map<std::string, std::vector<double>>& passMs) {
-    nlohmann::json passes = nlohmann::json::object();
-    for (const auto& [name, samples] : passMs) passes[name] = median(samples);
-    return passes;
-  };
   const double forwardMedian = median(sessions[0].gpuMs), forwardMean = mean(sessions[0].gpuMs);
   nlohmann::json results = nlohmann::json::array();
   for (size_t c = 0; c < configs.size(); ++c) {
@@ -145,8 +140,8 @@ nlohmann::json runScene(gpu::Device& device, const ShadeRateBenchArgs& args, con
                        {"shade_frame_ms_median", median(s.shadeFrameMs)},
                        {"fill_frame_ms_median", median(s.fillFrameMs)},
                        {"frame_ms_samples", s.gpuMs},
-                       {"shade_frame_pass_ms_median", passMedians(s.shadePassMs)},
-                       {"fill_frame_pass_ms_median", passMedians(s.fillPassMs)},
+                       {"shade_frame_pass_ms_median", medians(s.shadePassMs)},
+                       {"fill_frame_pass_ms_median", medians(s.fillPassMs)},
                        {"composite_misses_max", s.maxMisses},
                        {"chunks_shaded_per_frame", double(s.chunksShaded) / double(args.pathFrames)},
                        {"chunks_reused_per_frame", double(s.chunksReused) / double(args.pathFrames)},

@@ -27,10 +27,6 @@ void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const DrawItem
     vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
 }
 
-void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const DrawItem& draw, uint32_t objectId) {
-  drawItem(cmd, pipeline, draw, objectId, VK_NULL_HANDLE, 0);
-}
-
 void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const SceneView& view, uint32_t drawIndex,
               uint32_t objectId) {
   drawItem(cmd, pipeline, view.scene.draws()[drawIndex], objectId, view.indirect, drawIndex);

@@ -36,11 +36,10 @@ struct SceneView {
 SceneView readDrawCommands(graph::Pass& pass, SceneView view);
 
 // Push constants, cull mode and front face (clockwise when the world matrix
-// mirrors) for one draw, then the indexed draw.
-void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const DrawItem& draw, uint32_t objectId);
-// The same, from indirect draw command `drawIndex` of `indirect` when it is set.
+// mirrors) for one draw, then the indexed draw: from indirect draw command
+// `drawIndex` of `indirect` when it is set (culled draws have instance count 0).
 void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const DrawItem& draw, uint32_t objectId,
-              VkBuffer indirect, uint32_t drawIndex);
+              VkBuffer indirect = VK_NULL_HANDLE, uint32_t drawIndex = 0);
 // Draw `drawIndex` of the view's scene as `objectId`, culled when the view read draw commands.
 void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const SceneView& view, uint32_t drawIndex,
               uint32_t objectId);
