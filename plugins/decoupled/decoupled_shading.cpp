@@ -28,6 +28,15 @@ gpu::Buffer upload(gpu::Device& device, const std::vector<T>& data, const char* 
   return buffer;
 }
 
+// A material that reads neighbours (support) or its own last value
+// (persistent layers) cannot have some chunks reused and others shaded.
+bool reshadedWhole(const plugin::Registry& registry, const plugin::MaterialStack& material) {
+  if (supportRadius(registry, material) > 0) return true;
+  for (const auto& layer : material.layers)
+    if (registry.layer(layer).persistent) return true;
+  return false;
+}
+
 }  // namespace
 
 DecoupledShading::DecoupledShading(std::vector<ShadingChoice> choices, DecoupledSettings settings)
@@ -83,6 +92,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
       slot.record.supportChunks = supportRadius(materials, material) > 0 ? 1u : 0u;
       slot.materialStack = draw.materialStack;
       slot.changedFrame = frames_;
+      slot.reshadedWhole = reshadedWhole(materials, material);
     }
     if (want == slot.allocated) continue;
     tablesDirty_ = true;
@@ -112,6 +122,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
     slot.allocated = true;
     slot.materialStack = draw.materialStack;
     slot.changedFrame = frames_;
+    slot.reshadedWhole = reshadedWhole(materials, material);
     ++allocatedObjects_;
     slot.record = {draw.world, draw.firstIndex, draw.vertexOffset, draw.indexCount / 3, draw.material, offset,
                    uint32_t(choice.uvSet), choice.tileOffset, supportRadius(materials, material) > 0 ? 1u : 0u, 0u, 0u, 0u};
@@ -169,16 +180,11 @@ void DecoupledShading::selectFrameObjects(render::FrameContext& ctx) {
   ctx.draws().decoupled = frameObjects_;
 }
 
-void DecoupledShading::chooseReuse(const plugin::Registry& materials, bool historyValid) {
+void DecoupledShading::chooseReuse(bool historyValid) {
   reuseAny_ = false;
   for (auto& slot : slots_) {
     if (!slot.allocated) continue;
-    // A layer that reads neighbours or its own last value needs its inputs
-    // around and under every chunk this frame: such objects are reshaded whole.
-    bool ownInputs = slot.record.supportChunks > 0;
-    for (const auto& layer : materials.material(slot.materialStack).layers)
-      ownInputs = ownInputs || materials.layer(layer).persistent;
-    slot.record.reuse = !shadeFrame_ && historyValid && slot.changedFrame != frames_ && !ownInputs ? 1u : 0u;
+    slot.record.reuse = !shadeFrame_ && historyValid && slot.changedFrame != frames_ && !slot.reshadedWhole ? 1u : 0u;
     reuseAny_ = reuseAny_ || slot.record.reuse;
   }
   // Every record, rewritten each frame (reuse flags, transforms, materials):
@@ -249,7 +255,7 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
   declaredHistory_ = history_.declare(graph, in.device, in.executor, materials, layerPlan_.persistent, keepShading,
                                       storage_.widthTexels(), storage_.heightTexels(), remapBytes_, frames_,
                                       std::to_string(in.width) + "x" + std::to_string(in.height));
-  chooseReuse(materials, declaredHistory_.valid);
+  chooseReuse(declaredHistory_.valid);
   countersPending_ = true;  // counters-readback runs whenever objects are allocated
   frame.remap = declaredHistory_.remap;
   frame.previousRemap = declaredHistory_.previousRemap;

@@ -119,7 +119,7 @@ class DecoupledShading {
   void uploadTables(gpu::Device& device);
   // Which objects may keep last frame's shading this frame (their records' `reuse`);
   // writes every record to the GPU.
-  void chooseReuse(const plugin::Registry& materials, bool historyValid);
+  void chooseReuse(bool historyValid);
 
   std::vector<ShadingChoice> choices_;
   DecoupledSettings settings_;
@@ -141,6 +141,9 @@ class DecoupledShading {
     DecoupledObject record{};
     std::string materialStack;  // the material its stored shading was shaded with
     uint64_t changedFrame = 0;  // the frame it was allocated, moved or changed material: nothing to reuse then
+    // Its material reads neighbours or its own last value: those inputs must be
+    // around and under every chunk each frame, so it is reshaded whole.
+    bool reshadedWhole = false;
   };
   std::vector<ObjectSlot> slots_;
   uint32_t allocatedObjects_ = 0;
