@@ -13,9 +13,9 @@
 //
 // Repairs, each with a warning: flat normals when NORMAL is missing (the
 // primitive is de-indexed, as glTF requires), normals of non-unit length are
-// renormalized, tangents are generated when a material has a normal map and
-// the primitive has no TANGENT (per-triangle UV gradients, NOT MikkTSpace: see
-// tangents.hpp), a triangle list whose length is not a multiple of 3 loses
+// renormalized, MikkTSpace tangents are generated when a material has a
+// normal map and the primitive has no TANGENT (tangents.hpp; vertices on a
+// mirrored UV seam are split), a triangle list whose length is not a multiple of 3 loses
 // its last vertices.
 //
 // Errors (SceneError, "<file>: <what>", naming the JSON pointer where there
