@@ -8,8 +8,9 @@
 // normalized unsigned byte/short), COLOR_0 (vec3/vec4, float or normalized),
 // metallic-roughness materials, samplers, KHR_texture_transform,
 // KHR_lights_punctual, cameras, and the node extras {"shading": "auto" |
-// "decoupled" | "forward"} (inherited by child nodes). Points and lines,
-// skins, morph targets and animations are skipped with a warning.
+// "decoupled" | "forward"} (inherited by child nodes), and animations
+// (scene.animations over scene.nodes; pose.hpp poses them). Points and
+// lines, skins and morph targets are skipped with a warning.
 //
 // Repairs, each with a warning: flat normals when NORMAL is missing (the
 // primitive is de-indexed, as glTF requires), normals of non-unit length are
