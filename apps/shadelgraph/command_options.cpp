@@ -16,6 +16,7 @@ constexpr double kMinStorage = shadel::kMinStorageFactor, kMaxStorage = 64.0;
 constexpr double kMaxAbsBias = 8.0;
 constexpr int kMaxFrames = 100'000'000;
 constexpr int kMaxShadeRate = 1'000'000;
+constexpr double kMaxSeconds = 1e9;  // --time: about 30 years, still exact to the millisecond in double
 
 // The scene, output size and shading mode, as render and graph take them.
 void addSceneOptions(CLI::App& command, std::string& scene, std::string& size, std::string& mode) {
@@ -81,6 +82,13 @@ void addRenderOptions(CLI::App& command, RenderArgs& args) {
   command.add_option("--stats", args.stats, "write frame statistics as JSON");
   command.add_option("--trace", args.trace, "write per-pass timings as a Chrome trace (Perfetto)");
   command.add_option("--frames", args.frames, "frames to render; the last is reported")->capture_default_str();
+  command.add_option("--time", args.time, "seconds into the scene's glTF animations (clamped to each one's keys)")
+      ->capture_default_str();
+  command.add_option_function<double>(
+      "--fps", [&args](const double& fps) { args.fps = fps; },
+      "play the animations: frame i at --time + i / FPS, 0.001 to 1000 (default: every frame at --time)");
+  command.add_option("--animation", args.animation, "which glTF animations play: all, none, an index or a name")
+      ->capture_default_str();
   command.add_option("--soak-report", args.soakReport,
                   "write CSV rows (frame, rss_mib, frame_ms, gpu_ms: resident memory, and median frame times since the "
                   "last row) every --soak-every frames, and print RSS and frame time after warm-up (the first tenth "
@@ -99,6 +107,8 @@ void checkRenderArgs(const RenderArgs& args) {
   if (args.frame) requireInRange("--frame", *args.frame, 0, kIntMax);
   requireInRange("--path", args.path, 0, kIntMax);
   requireInRange("--frames", args.frames, 1, kMaxFrames);
+  requireFiniteInRange("--time", args.time, -kMaxSeconds, kMaxSeconds);
+  if (args.fps) requireFiniteInRange("--fps", *args.fps, 0.001, 1000.0);
   requireInRange("--soak-every", args.soakEvery, 1, kIntMax);
   requireInRange("--shade-rate", args.shadeRate, 1, kMaxShadeRate);
   requireFiniteInRange("--storage", args.storage, kMinStorage, kMaxStorage);

@@ -45,6 +45,9 @@ struct RenderArgs {
   std::string stats;
   std::string trace;
   int frames = 2;
+  double time = 0.0;           // seconds into the scene's glTF animations
+  std::optional<double> fps;   // given: frame i is at time + i / fps (the animations play); else every frame at time
+  std::string animation = "all";
   std::string soakReport;
   int soakEvery = 100;
   bool noAliasing = false;

@@ -11,6 +11,7 @@
 #include <shadelgraph/gpu/chrome_trace.hpp>
 #include <shadelgraph/image/png.hpp>
 
+#include "animation_player.hpp"
 #include "app_session.hpp"
 #include "command_options.hpp"
 #include "commands.hpp"
@@ -136,11 +137,17 @@ void runRender(const RenderArgs& args) {
     if (!choice.decoupled && args.mode == "decoupled")
       std::printf("forward: %s (%s)\n", session.scene.instances[choice.instance].name.c_str(), choice.reason.c_str());
   if (args.frame) settings.cameraOverride = pathCamera(session, args.path, *args.frame);
+  AnimationPlayer animations(session.scene, args.animation);
+  // A scene without cameras is framed once, around all its playback: a framing that followed the pose would zoom.
+  if (animations.playing() && !settings.cameraOverride && !args.camera && session.scene.cameras.empty())
+    settings.cameraOverride = scene::frameBounds(animations.playbackBounds(), float(settings.width) / float(settings.height));
   std::optional<SoakReport> soak;
   if (!args.soakReport.empty()) soak.emplace(args.soakReport, uint32_t(args.soakEvery), uint32_t(args.frames));
   // The first frame pays for pipeline creation; report the last one.
   render::FrameResult frame;
   for (int i = 0; i < args.frames; ++i) {
+    if (animations.playing() && (i == 0 || args.fps))
+      animations.poseAt(float(args.time + (args.fps ? i / *args.fps : 0.0)), *session.renderer);
     frame = session.renderer->render(settings);
     if (soak) soak->add(uint32_t(i), frame.timings);
   }

@@ -21,6 +21,7 @@ struct Camera {
   float znear = 0.1f;
   std::optional<float> zfar;  // absent = infinite (perspective only)
   glm::mat4 world{1.0f};      // camera to world; the camera looks down its -Z, +Y up
+  int node = -1;              // the glTF node it hangs off (Scene::nodes), -1: none
 
   glm::vec3 position() const { return glm::vec3(world[3]); }
   // World to camera. Scale in `world` is removed first (glTF says camera

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include <shadelgraph/scene/gltf_accessor.hpp>
+#include <shadelgraph/scene/gltf_animation.hpp>
 #include <shadelgraph/scene/gltf_context.hpp>
 #include <shadelgraph/scene/gltf_json_check.hpp>
 #include <shadelgraph/scene/gltf_loader.hpp>
@@ -131,7 +132,7 @@ Scene load(const std::filesystem::path& file, const LoadOptions& options) {
   const detail::GltfContext context{model, options, scene.warnings};
   detail::convertMaterials(context, scene);
   detail::convertMeshes(context, scene);
-  detail::convertNodes(context, scene);
+  detail::convertAnimations(context, detail::convertNodes(context, scene), scene);
   detail::capWarnings(scene.warnings);
   return scene;
 }

@@ -8,14 +8,15 @@
 // normalized unsigned byte/short), COLOR_0 (vec3/vec4, float or normalized),
 // metallic-roughness materials, samplers, KHR_texture_transform,
 // KHR_lights_punctual, cameras, and the node extras {"shading": "auto" |
-// "decoupled" | "forward"} (inherited by child nodes). Points and lines,
-// skins, morph targets and animations are skipped with a warning.
+// "decoupled" | "forward"} (inherited by child nodes), and animations
+// (scene.animations over scene.nodes; pose.hpp poses them). Points and
+// lines, skins and morph targets are skipped with a warning.
 //
 // Repairs, each with a warning: flat normals when NORMAL is missing (the
 // primitive is de-indexed, as glTF requires), normals of non-unit length are
-// renormalized, tangents are generated when a material has a normal map and
-// the primitive has no TANGENT (per-triangle UV gradients, NOT MikkTSpace: see
-// tangents.hpp), a triangle list whose length is not a multiple of 3 loses
+// renormalized, MikkTSpace tangents are generated when a material has a
+// normal map and the primitive has no TANGENT (tangents.hpp; vertices on a
+// mirrored UV seam are split), a triangle list whose length is not a multiple of 3 loses
 // its last vertices.
 //
 // Errors (SceneError, "<file>: <what>", naming the JSON pointer where there

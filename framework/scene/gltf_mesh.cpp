@@ -93,8 +93,8 @@ class PrimitiveBuilder {
     } else if (const TextureRef& normalMap = scene_.materials[static_cast<size_t>(out.material)].normalTexture;
                normalMap.present()) {
       if (!out.uvs(normalMap.texCoord).empty()) {
-        out.tangents = generateTangents(out.positions, out.normals, out.uvs(normalMap.texCoord), out.indices);
-        repairs_["normal map without TANGENT, tangents generated (not MikkTSpace)"].push_back(where);
+        addTangents(out, normalMap.texCoord);
+        repairs_["normal map without TANGENT, MikkTSpace tangents generated"].push_back(where);
       }
     }
     warnMissingTexCoords(out);

@@ -166,11 +166,13 @@ class NodeWalker {
   void walk(const std::vector<int>& roots) {
     struct Pending {
       int node;
+      int parent;  // in Scene::nodes
       glm::mat4 parentWorld;
       ShadingMode shading;
     };
     std::vector<Pending> stack;
-    for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, glm::mat4(1.0f), ShadingMode::Auto});
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, -1, glm::mat4(1.0f), ShadingMode::Auto});
+    sceneNodeOf_.assign(model_.nodes.size(), -1);
     while (!stack.empty()) {
       const Pending pending = stack.back();
       stack.pop_back();
@@ -182,14 +184,39 @@ class NodeWalker {
           if (!std::isfinite(world[c][r]))
             throw InvalidAsset(name + ": world transform (its own times its parents') is not finite");
       const ShadingMode shading = shadingFromExtras(node, name, context_.warnings).value_or(pending.shading);
-      place(node, pending.node, name, world, shading);
+      const int sceneNode = keep(node, pending.node, pending.parent);
+      place(node, pending.node, sceneNode, name, world, shading);
       for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
-        stack.push_back({*child, world, shading});
+        stack.push_back({*child, sceneNode, world, shading});
     }
   }
 
+  // Scene::nodes index of each glTF node (-1: not in the scene shown).
+  const std::vector<int>& sceneNodeOf() const { return sceneNodeOf_; }
+
  private:
-  void place(const tinygltf::Node& node, int index, const std::string& name, const glm::mat4& world, ShadingMode shading) {
+  // The node's local transform kept in Scene::nodes (already checked finite by localTransform).
+  int keep(const tinygltf::Node& in, int index, int parent) {
+    Node out;
+    out.parent = parent;
+    if (in.matrix.size() == 16) {
+      out.hasMatrix = true;
+      out.matrix = glm::mat4(glm::make_mat4(in.matrix.data()));
+    }
+    if (in.translation.size() == 3) out.translation = glm::vec3(glm::make_vec3(in.translation.data()));
+    if (in.scale.size() == 3) out.scale = glm::vec3(glm::make_vec3(in.scale.data()));
+    if (in.rotation.size() == 4) {
+      const glm::dquat q(in.rotation[3], in.rotation[0], in.rotation[1], in.rotation[2]);
+      if (glm::length(q) > 0.0) out.rotation = glm::quat(glm::normalize(q));
+    }
+    const auto sceneIndex = static_cast<int>(scene_.nodes.size());
+    scene_.nodes.push_back(out);
+    sceneNodeOf_[static_cast<size_t>(index)] = sceneIndex;
+    return sceneIndex;
+  }
+
+  void place(const tinygltf::Node& node, int index, int sceneNode, const std::string& name, const glm::mat4& world,
+             ShadingMode shading) {
     if (node.mesh >= 0) {
       if (static_cast<size_t>(node.mesh) >= model_.meshes.size())
         throw InvalidAsset(name + ": mesh " + std::to_string(node.mesh) + " does not exist (the file has " +
@@ -203,6 +230,7 @@ class NodeWalker {
       instance.world = world;
       instance.name = node.name.empty() ? "node " + std::to_string(index) : node.name;
       instance.shading = shading;
+      instance.node = sceneNode;
       scene_.instances.push_back(std::move(instance));
     }
     if (node.camera >= 0) {
@@ -212,6 +240,7 @@ class NodeWalker {
       const tinygltf::Camera& in = model_.cameras[static_cast<size_t>(node.camera)];
       Camera camera = toCamera(in, describe("camera", static_cast<size_t>(node.camera), in.name));
       camera.world = world;
+      camera.node = sceneNode;
       scene_.cameras.push_back(std::move(camera));
     }
     if (const auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end()) {
@@ -233,12 +262,13 @@ class NodeWalker {
   const GltfContext& context_;
   const tinygltf::Model& model_;
   Scene& scene_;
+  std::vector<int> sceneNodeOf_;
   bool warnedSkin_ = false;
 };
 
 }  // namespace
 
-void convertNodes(const GltfContext& context, Scene& scene) {
+std::vector<int> convertNodes(const GltfContext& context, Scene& scene) {
   const tinygltf::Model& model = context.model;
   const std::vector<int> parent = parents(model);
 
@@ -264,7 +294,9 @@ void convertNodes(const GltfContext& context, Scene& scene) {
     if (!model.nodes.empty()) context.warnings.push_back("no scene; showing every root node");
   }
   if (roots.empty()) context.warnings.push_back("the scene has no nodes: nothing to draw");
-  NodeWalker(context, scene).walk(roots);
+  NodeWalker walker(context, scene);
+  walker.walk(roots);
+  return walker.sceneNodeOf();
 }
 
 }  // namespace sg::scene::detail

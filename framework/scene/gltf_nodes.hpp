@@ -6,9 +6,10 @@
 namespace sg::scene::detail {
 
 // Walks the default scene (else scene 0, else every root node) and fills
-// scene.instances, scene.cameras and scene.lights with world transforms.
-// Throws InvalidAsset on node cycles, nodes with two parents, and
-// references out of range.
-void convertNodes(const GltfContext& context, Scene& scene);
+// scene.nodes (parents first), and scene.instances, scene.cameras and
+// scene.lights with world transforms. Returns the Scene::nodes index of each
+// glTF node (-1: not in the scene shown). Throws InvalidAsset on node cycles,
+// nodes with two parents, and references out of range.
+std::vector<int> convertNodes(const GltfContext& context, Scene& scene);
 
 }  // namespace sg::scene::detail

@@ -22,6 +22,7 @@ struct Instance {
   std::string name;       // node name (or "node N" when unnamed)
   ShadingMode shading = ShadingMode::Auto;
   std::string material;   // its material (layer stack) by registered name; empty: the default, "gltf-pbr"
+  int node = -1;          // the glTF node it hangs off (Scene::nodes), -1: none (animations do not move it)
 };
 
 }  // namespace sg::scene

@@ -29,6 +29,7 @@ void appendScene(Scene& into, Scene other, const glm::mat4& transform, const std
   const size_t materialBase = into.materials.size();
   const size_t textureBase = into.textures.size();
   const size_t samplerBase = into.samplers.size();
+  const size_t nodeBase = into.nodes.size();
 
   for (Mesh& mesh : other.meshes) {
     for (Primitive& primitive : mesh.primitives) primitive.material = rebase(primitive.material, materialBase);
@@ -46,8 +47,18 @@ void appendScene(Scene& into, Scene other, const glm::mat4& transform, const std
   }
   into.samplers.insert(into.samplers.end(), other.samplers.begin(), other.samplers.end());
 
+  for (Node& node : other.nodes) {
+    if (node.parent < 0) node.placement = transform * node.placement;
+    node.parent = rebase(node.parent, nodeBase);
+    into.nodes.push_back(node);
+  }
+  for (Animation& animation : other.animations) {
+    for (AnimationChannel& channel : animation.channels) channel.node = rebase(channel.node, nodeBase);
+    into.animations.push_back(std::move(animation));
+  }
   for (Instance& instance : other.instances) {
     instance.mesh = rebase(instance.mesh, meshBase);
+    instance.node = rebase(instance.node, nodeBase);
     instance.world = transform * instance.world;
     into.instances.push_back(std::move(instance));
   }
@@ -59,6 +70,7 @@ void appendScene(Scene& into, Scene other, const glm::mat4& transform, const std
   }
   for (Camera& camera : other.cameras) {
     camera.world = transform * camera.world;
+    camera.node = rebase(camera.node, nodeBase);
     into.cameras.push_back(std::move(camera));
   }
   for (std::string& warning : other.warnings) into.warnings.push_back(warningPrefix + warning);

@@ -5,18 +5,21 @@
 
 #include <glm/glm.hpp>
 
+#include <shadelgraph/scene/animation.hpp>
 #include <shadelgraph/scene/bounds.hpp>
 #include <shadelgraph/scene/camera.hpp>
 #include <shadelgraph/scene/instance.hpp>
 #include <shadelgraph/scene/light.hpp>
 #include <shadelgraph/scene/material.hpp>
 #include <shadelgraph/scene/mesh.hpp>
+#include <shadelgraph/scene/node.hpp>
 #include <shadelgraph/scene/texture.hpp>
 
 namespace sg::scene {
 
-// Every index stored in one of these vectors (Instance::mesh,
-// Primitive::material, TextureRef::texture, Texture::sampler) is valid.
+// Every index stored in one of these vectors (Instance::mesh, Instance::node,
+// Camera::node, Node::parent, AnimationChannel::node, Primitive::material,
+// TextureRef::texture, Texture::sampler) is valid.
 struct Scene {
   std::vector<Mesh> meshes;
   std::vector<Material> materials;
@@ -25,6 +28,8 @@ struct Scene {
   std::vector<Instance> instances;
   std::vector<Light> lights;
   std::vector<Camera> cameras;
+  std::vector<Node> nodes;            // of glTF files, parents first
+  std::vector<Animation> animations;  // of glTF files
   std::vector<std::string> warnings;  // things skipped or repaired, one line each
 };
 
@@ -34,7 +39,7 @@ Bounds worldBounds(const Scene& scene);
 size_t instancedTriangleCount(const Scene& scene);
 
 // Appends `other` to `into`, re-basing its indices, placing its instances,
-// lights and cameras under `transform`, and prefixing its warnings.
+// lights, cameras and root nodes under `transform`, and prefixing its warnings.
 void appendScene(Scene& into, Scene other, const glm::mat4& transform, const std::string& warningPrefix = {});
 
 }  // namespace sg::scene

@@ -213,6 +213,14 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
       } catch (const SceneError& error) {
         throw FormatError(path + "/gltf", error.what());
       }
+      // One load, placed once per object: its node hierarchy is not kept, so nothing animates.
+      if (!scene.animations.empty())
+        scene.warnings.push_back(std::to_string(scene.animations.size()) +
+                                 " animation(s) not played: a scene file does not choose animations yet");
+      scene.nodes.clear();
+      scene.animations.clear();
+      for (Instance& instance : scene.instances) instance.node = -1;
+      for (Camera& camera : scene.cameras) camera.node = -1;
       Placements placements{std::move(scene.instances), std::move(scene.lights), std::move(scene.cameras),
                             static_cast<int>(result.scene.meshes.size())};
       scene.instances.clear();

@@ -1,29 +1,39 @@
 #pragma once
-// Tangent generation for normal mapping.
-//
-// NOT MikkTSpace. glTF says tangents a file leaves out should be MikkTSpace
-// tangents, but Debian packages no MikkTSpace library; this is the classic
-// per-triangle UV-gradient method (Lengyel 2001): each triangle's dP/du and
-// dP/dv, weighted by its area, are summed at its vertices; each vertex tangent
-// is then Gram-Schmidt orthogonalized against the normal, and w records
-// whether the UV mapping is mirrored. On smooth, unmirrored charts the
-// result matches MikkTSpace closely; at seams where a vertex is shared by
-// triangles of different orientation it averages differently, so baked
-// normal maps may show faint seams there.
+// MikkTSpace tangents, which glTF requires when a file has a normal map and no
+// TANGENT. Implemented from Mikkelsen's description ("Simulation of Wrinkled
+// Surfaces Revisited", 2008, and the mikktspace.h notes); Debian packages no
+// MikkTSpace library. In short:
+//   - corners with equal position, normal and UV are one vertex (welded);
+//   - each triangle has a unit dP/du and dP/dv and an orientation (the sign of
+//     its UV area); triangles without a UV gradient join whatever group reaches them;
+//   - at each vertex, the triangles reachable from one another across shared
+//     edges with the same orientation form a group;
+//   - a group's tangent is the sum of its triangles' dP/du, each projected onto
+//     the vertex normal's plane, normalized and weighted by the corner's angle;
+//   - the handedness is the group's orientation.
+// A vertex whose corners fall into different groups (a mirrored UV seam)
+// needs two tangents: addTangents splits it.
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include <shadelgraph/scene/mesh.hpp>
+
 namespace sg::scene {
 
-// One tangent per vertex: xyz unit and perpendicular to the normal, w = +1 or
-// -1 such that bitangent = cross(normal, xyz) * w points towards decreasing v
-// (glTF's UV origin is the image's top-left, and normal maps are +Y up), as
-// glTF defines. Vertices whose triangles have no usable UV gradient get any
-// unit tangent perpendicular to the normal and w = +1.
-std::vector<glm::vec4> generateTangents(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
-                                        std::span<const glm::vec2> uvs, std::span<const uint32_t> indices);
+// One tangent per corner (indices.size() entries): xyz unit and perpendicular
+// to the normal, w = +1 or -1 such that bitangent = cross(normal, xyz) * w is
+// the image's up (glTF's UV origin is the image's top-left, normal maps are +Y
+// up). Corners that no triangle with a UV gradient reaches get some unit
+// tangent perpendicular to the normal and w = +1.
+std::vector<glm::vec4> cornerTangents(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                                      std::span<const glm::vec2> uvs, std::span<const uint32_t> indices);
+
+// Fills `primitive.tangents` from cornerTangents over UV set `uvSet`, splitting
+// vertices whose corners need different tangents (every attribute is copied).
+// Returns the number of vertices added.
+size_t addTangents(Primitive& primitive, int uvSet);
 
 }  // namespace sg::scene

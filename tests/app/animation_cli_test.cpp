@@ -1,0 +1,92 @@
+// glTF animations from the command line: --time poses the scene, --fps plays
+// it, --animation chooses; in both shading paths, validation on.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include <shadelgraph/image/png.hpp>
+
+#include "cli_run.hpp"
+#include "test_support.hpp"
+
+namespace {
+
+std::filesystem::path tempDir() {
+  static const sg::test::TempDir dir;
+  return dir.path();
+}
+
+struct Rendered {
+  sg::image::Rgba8Image image;
+  nlohmann::json stats;
+};
+
+Rendered render(const std::string& args, const std::string& name) {
+  const auto png = tempDir() / (name + ".png");
+  const auto stats = tempDir() / (name + ".json");
+  const auto r = sg::test::runCli("render " + sg::test::samplePath("BoxAnimated").string() + " --size 96x72 -o " +
+                                  png.string() + " --stats " + stats.string() + " " + args);
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(stats);
+  return {sg::image::readPng(png), nlohmann::json::parse(in)};
+}
+
+// Pixels that differ by more than 8/255 in some channel.
+size_t differingPixels(const sg::image::Rgba8Image& a, const sg::image::Rgba8Image& b) {
+  size_t count = 0;
+  for (size_t i = 0; i + 3 < std::min(a.pixels.size(), b.pixels.size()); i += 4)
+    for (size_t c = 0; c < 3; ++c)
+      if (std::abs(int(a.pixels[i + c]) - int(b.pixels[i + c])) > 8) {
+        ++count;
+        break;
+      }
+  return count;
+}
+
+class AnimationCli : public testing::TestWithParam<const char*> {};
+
+// BoxAnimated: the inner box rises out of the outer one and turns.
+TEST_P(AnimationCli, TimePosesTheSceneAndFramesPlayIt) {
+  SG_REQUIRE_ASSETS();
+  const std::string mode = std::string("--mode ") + GetParam();
+  const Rendered start = render(mode + " --time 0 --frames 1", "start");
+  const Rendered later = render(mode + " --time 1.2 --frames 1", "later");
+  const Rendered again = render(mode + " --time 1.2 --frames 1", "again");
+  EXPECT_GT(differingPixels(start.image, later.image), 96u * 72u / 50) << "the boxes moved";
+  EXPECT_EQ(differingPixels(later.image, again.image), 0u) << "a time is one pose";
+  const Rendered played = render(mode + " --time 1.0 --fps 10 --frames 3", "played");  // the last frame at 1.2 s
+  EXPECT_GT(differingPixels(played.image, start.image), 96u * 72u / 50);
+  if (std::string(GetParam()) == "decoupled") {
+    EXPECT_EQ(played.stats["objects_decoupled"], 2) << played.stats.dump();
+    EXPECT_EQ(played.stats["composite_misses"], 0) << played.stats.dump();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Paths, AnimationCli, testing::Values("forward", "decoupled"),
+                         [](const testing::TestParamInfo<const char*>& param) { return std::string(param.param); });
+
+void expectOneLineError(const sg::test::CliRun& r, const std::string& mentions) {
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_EQ(r.output.rfind("shadelgraph: error: ", 0), 0u) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << "one line: " << r.output;
+  EXPECT_NE(r.output.find(mentions), std::string::npos) << mentions << " missing from: " << r.output;
+}
+
+TEST(AnimationCliErrors, BadChoicesFailWithOneLine) {
+  expectOneLineError(sg::test::runCli("render --time nan"), "--time nan");
+  expectOneLineError(sg::test::runCli("render --fps 0"), "--fps 0");
+  expectOneLineError(sg::test::runCli("render --size 32x32 --animation walk -o " + (tempDir() / "x.png").string()),
+                     "--animation walk: the scene has no animations");
+  SG_REQUIRE_ASSETS();
+  expectOneLineError(sg::test::runCli("render " + sg::test::samplePath("InterpolationTest").string() +
+                                      " --size 32x32 --animation 'Bounce' -o " + (tempDir() / "y.png").string()),
+                     "--animation Bounce: the scene's animations are 0 'Step Scale', 1 'Linear Scale'");
+}
+
+}  // namespace
