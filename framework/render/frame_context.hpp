@@ -85,6 +85,14 @@ class FrameContext {
     return *static_cast<T*>(stateOrThrow(key));
   }
 
+  // Per-renderer state a pass keeps for itself across frames, made on first use.
+  template <class T>
+  T& ownState(const std::string& key) {
+    std::shared_ptr<void>& slot = states_[key];
+    if (!slot) slot = std::make_shared<T>();
+    return *static_cast<T*>(slot.get());
+  }
+
   void setPass(const plugin::ResolvedPass* pass) { pass_ = pass; }
 
  private:

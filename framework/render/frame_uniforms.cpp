@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include <shadelgraph/render/shadow_views.hpp>
+
 namespace sg::render {
 
 FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& camera, uint32_t width,
-                                uint32_t height) {
+                                uint32_t height, std::span<const glm::vec4> drawSpheres) {
   FrameUniforms f{};
   f.view = camera.view();
   f.projection = camera.projectionMatrix(float(width) / float(height));
@@ -28,6 +30,12 @@ FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& 
     g.cone = glm::vec4(cosOuter, 1.0f / std::max(cosInner - cosOuter, 1e-4f), 0.0f, 0.0f);
   }
   f.counts = glm::uvec4(uint32_t(count), width, height, 0u);
+  const auto views = shadowViews(std::span(lights).first(count), drawSpheres, kMaxLights);
+  for (const ShadowView& v : views) {
+    f.lights[v.light].cone.z = float(v.slot + 1);
+    f.lights[v.light].shadowMatrix = v.viewProjection;
+  }
+  f.shadowAtlas = glm::vec4(float(views.size()), float(kShadowMapResolution), 0.0f, 0.0f);
   return f;
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 // The per-frame uniforms (shaders/frame_interface.h), filled from the scene.
+#include <span>
+
 #include <glm/glm.hpp>
 #include <shadelgraph/render/shaders/frame_interface.h>
 
@@ -12,8 +14,9 @@ using GpuLight = shader::Light;
 using FrameUniforms = shader::SgFrameUniforms;
 
 // A scene without lights gets a default sun so it is never black. Lights past
-// kMaxLights are dropped (listed in `warnings` when given).
+// kMaxLights are dropped. Shadowed lights get their shadow map's slot and
+// matrix (render::shadowViews, fitted to `drawSpheres`, every draw's world bounding sphere).
 FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& camera, uint32_t width,
-                                uint32_t height);
+                                uint32_t height, std::span<const glm::vec4> drawSpheres = {});
 
 }  // namespace sg::render

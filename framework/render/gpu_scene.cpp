@@ -175,7 +175,7 @@ void GpuScene::createMaterials(gpu::Context& context, gpu::MemoryAllocator& memo
     const auto& m = materials[i];
     GpuMaterial g{};
     g.baseColorFactor = m.baseColorFactor;
-    g.emissiveFactor = glm::vec4(m.emissiveFactor, m.normalScale);
+    g.emissiveFactor = glm::vec4(m.emissiveFactor * m.emissiveStrength, m.normalScale);
     g.params = {m.metallicFactor, m.roughnessFactor, m.occlusionStrength, m.alphaCutoff};
     const scene::TextureRef* refs[5] = {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture,
                                         &m.occlusionTexture, &m.emissiveTexture};

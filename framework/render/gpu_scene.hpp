@@ -59,6 +59,8 @@ class GpuScene {
   VkBuffer indexBuffer() const { return indices_.handle(); }
   // Every draw's index, 0..n-1 (a SceneView's draw list for all objects).
   const std::vector<uint32_t>& allDraws() const { return allDraws_; }
+  // A 1x1 white texture (shader-read layout): the stand-in for a frame image a frame did not make.
+  VkImageView whiteView() const { return textures_[textures_.size() - 2].view(); }
   // Binds the vertex and index buffers.
   void bindGeometry(VkCommandBuffer cmd) const;
   size_t triangleCount() const;

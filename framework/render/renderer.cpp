@@ -97,7 +97,7 @@ scene::Camera Renderer::camera(const RenderSettings& settings) const {
 
 std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& settings) {
   const scene::Camera cam = camera(settings);
-  const FrameUniforms uniforms = makeFrameUniforms(scene_, cam, settings.width, settings.height);
+  const FrameUniforms uniforms = makeFrameUniforms(scene_, cam, settings.width, settings.height, drawSpheres_);
   frameUniforms_.write(&uniforms, sizeof uniforms);
 
   if (!output_ || output_->desc().width != settings.width || output_->desc().height != settings.height) {

@@ -21,7 +21,7 @@ using detail::capText;
 using detail::InvalidAsset;
 
 constexpr std::string_view kSupportedExtensions[] = {"KHR_texture_transform", "KHR_lights_punctual",
-                                                     "KHR_materials_unlit"};
+                                                     "KHR_materials_unlit", "KHR_materials_emissive_strength"};
 
 std::vector<uint8_t> readFile(const std::filesystem::path& file) {
   std::error_code error;

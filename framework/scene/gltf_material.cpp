@@ -165,6 +165,17 @@ AlphaMode toAlphaMode(const std::string& mode) {
   return AlphaMode::Opaque;  // "OPAQUE"; other values were rejected by the JSON check
 }
 
+// KHR_materials_emissive_strength: a finite factor >= 0 on the emissive colour (default 1).
+float emissiveStrength(const tinygltf::Material& in, const std::string& name) {
+  const auto it = in.extensions.find("KHR_materials_emissive_strength");
+  if (it == in.extensions.end() || !it->second.IsObject() || !it->second.Has("emissiveStrength")) return 1.0f;
+  const tinygltf::Value& value = it->second.Get("emissiveStrength");
+  const double strength = value.IsNumber() ? value.GetNumberAsDouble() : -1.0;
+  if (!(strength >= 0.0 && strength <= 3.0e38))
+    throw InvalidAsset(name + ": KHR_materials_emissive_strength.emissiveStrength must be a finite number >= 0");
+  return static_cast<float>(strength);
+}
+
 }  // namespace
 
 void convertMaterials(const GltfContext& context, Scene& scene) {
@@ -197,6 +208,7 @@ void convertMaterials(const GltfContext& context, Scene& scene) {
     out.alphaCutoff = static_cast<float>(in.alphaCutoff);
     out.doubleSided = in.doubleSided;
     out.unlit = in.extensions.count("KHR_materials_unlit") != 0;
+    out.emissiveStrength = emissiveStrength(in, name);
     scene.materials.push_back(std::move(out));
   }
 }

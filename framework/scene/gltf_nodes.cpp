@@ -156,6 +156,11 @@ Light toLight(const tinygltf::Light& in, const std::string& name) {
       !(out.innerConeAngle >= 0.0f && out.innerConeAngle < out.outerConeAngle &&
         out.outerConeAngle <= std::numbers::pi_v<float> / 2 + 1e-6f))
     throw InvalidAsset(name + ": spot cone angles need 0 <= innerConeAngle < outerConeAngle <= pi/2");
+  if (in.extras.IsObject() && in.extras.Has("shadows")) {
+    const tinygltf::Value& shadows = in.extras.Get("shadows");
+    if (!shadows.IsBool()) throw InvalidAsset(name + ": extras.shadows must be true or false");
+    out.shadows = shadows.Get<bool>();
+  }
   return out;
 }
 

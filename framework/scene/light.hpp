@@ -19,6 +19,7 @@ struct Light {
   float outerConeAngle = std::numbers::pi_v<float> / 4;  // spot only, radians
   glm::vec3 position{0.0f};                             // world space; unused for directional
   glm::vec3 direction{0.0f, 0.0f, -1.0f};               // world space, unit; the light's -Z
+  bool shadows = true;  // casts shadows (scene file "shadows", glTF light extras.shadows)
 };
 
 }  // namespace sg::scene

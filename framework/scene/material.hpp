@@ -33,6 +33,7 @@ struct Material {
   float metallicFactor = 1.0f;
   float roughnessFactor = 1.0f;
   glm::vec3 emissiveFactor{0.0f};
+  float emissiveStrength = 1.0f;  // KHR_materials_emissive_strength: scales emissiveFactor (nits per unit)
   TextureRef baseColorTexture;          // sRGB
   TextureRef metallicRoughnessTexture;  // linear; B = metal, G = roughness
   TextureRef normalTexture;             // linear, tangent space, +Y up

@@ -112,7 +112,8 @@ glm::mat4 objectTransform(const Json& object, const std::string& path) {
 
 Light parseLight(const Json& json, const std::string& path) {
   allowOnly(json, path,
-            {"type", "name", "color", "intensity", "range", "position", "direction", "innerConeAngle", "outerConeAngle"});
+            {"type", "name", "color", "intensity", "range", "position", "direction", "innerConeAngle", "outerConeAngle",
+             "shadows"});
   Light light;
   const std::string type = text(json, "type", path, "");
   if (type == "directional") light.type = LightType::Directional;
@@ -132,6 +133,10 @@ Light parseLight(const Json& json, const std::string& path) {
         light.outerConeAngle <= std::numbers::pi_v<float> / 2 + 1e-6f))
     throw FormatError(path, "spot cone angles need 0 <= innerConeAngle < outerConeAngle <= pi/2");
   if (light.range < 0.0f) throw FormatError(path + "/range", "must be >= 0");
+  if (const auto it = json.find("shadows"); it != json.end()) {
+    if (!it->is_boolean()) throw FormatError(path + "/shadows", "expected true or false");
+    light.shadows = it->get<bool>();
+  }
   return light;
 }
 

@@ -4,6 +4,7 @@
 #include <set>
 
 #include <shadelgraph/render/material_variants.hpp>
+#include <shadelgraph/render/shadow_binding.hpp>
 
 #include "material_variant.hpp"
 
@@ -30,7 +31,8 @@ const gpu::Pipeline& forwardPipeline(PassContext& ctx, const render::SceneView& 
 // The frame uniforms and the frame resources the material's layers sample.
 std::vector<gpu::DescriptorWrite> forwardDescriptors(PassContext& ctx, const render::SceneView& view,
                                                      const plugin::MaterialStack& material) {
-  std::vector<gpu::DescriptorWrite> writes{{shader::kBindFrame, gpu::BufferBinding{view.frameUniforms.handle()}}};
+  std::vector<gpu::DescriptorWrite> writes{{shader::kBindFrame, gpu::BufferBinding{view.frameUniforms.handle()}},
+                                           render::shadowMapsWrite(ctx, view)};
   uint32_t binding = render::kBindLayerFrameInputs;
   for (const auto& name : material.layers) {
     const auto& layer = view.materials.layer(name);
@@ -47,7 +49,8 @@ std::vector<gpu::DescriptorWrite> forwardDescriptors(PassContext& ctx, const ren
 
 gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& registry, const plugin::MaterialStack& material,
                                                   bool blend) {
-  std::vector<gpu::DescriptorBinding> bindings{{shader::kBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
+  std::vector<gpu::DescriptorBinding> bindings{{shader::kBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                                               render::shadowMapsBinding()};
   for (uint32_t i = 0; i < render::forwardFrameInputs(registry, material).size(); ++i)
     bindings.push_back({render::kBindLayerFrameInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
   return {.vertex = {.path = "passes/forward/forward.vert"},
@@ -62,6 +65,7 @@ gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& regist
 }
 
 void readFrameInputs(graph::Pass& pass, const render::SceneView& view, std::span<const uint32_t> draws) {
+  render::readShadowMaps(pass, view, graph::ShaderStage::Fragment);
   std::set<const plugin::MaterialStack*> materials;
   for (uint32_t d : draws) materials.insert(&forwardMaterial(view, d));
   for (const auto* material : materials)

@@ -1,12 +1,18 @@
 #include "forward_package.hpp"
 
+#include <algorithm>
+
 #include <shadelgraph/render/frame_context.hpp>
+#include <shadelgraph/render/frame_uniforms.hpp>
+#include <shadelgraph/render/shadow_binding.hpp>
+#include <shadelgraph/render/shadow_views.hpp>
 
 #include "alpha-blend/alpha_blend.hpp"
 #include "alpha-mask/alpha_mask.hpp"
 #include "exposure/exposure.hpp"
 #include "forward/forward.hpp"
 #include "forward/forward_material.hpp"
+#include "shadows/shadows.hpp"
 #include "occlusion-cull/occlusion_cull.hpp"
 #include "tonemap/tonemap.hpp"
 #include "z-prepass/z_prepass.hpp"
@@ -49,6 +55,29 @@ void publish(FrameContext& ctx, const passes::ForwardTargets& t) {
   ctx.write("scene.depth", t.depth);
 }
 
+// A map for each shadowed light that reaches a visible draw, holding every
+// draw it reaches (casters may be off screen); none: no pass, no atlas.
+void declareShadows(FrameContext& ctx) {
+  const auto& in = ctx.inputs();
+  const auto lights = std::span(in.scene.lights).first(std::min<size_t>(in.scene.lights.size(), render::kMaxLights));
+  const auto views = render::shadowViews(lights, in.drawSpheres, render::kMaxLights);  // as the frame uniforms
+  const auto visible = ctx.visibleDraws();
+  const auto& draws = ctx.gpuScene().draws();
+  std::vector<passes::ShadowMapDraws> maps;
+  for (const render::ShadowView& v : views) {
+    const scene::Light& light = lights[v.light];
+    const auto reaches = [&](uint32_t d) { return render::lightReaches(light, in.drawSpheres[d]); };
+    if (std::none_of(visible.begin(), visible.end(), reaches)) continue;
+    passes::ShadowMapDraws map{v.light, v.slot, {}};
+    for (uint32_t d = 0; d < draws.size(); ++d)
+      if (draws[d].alphaMode != scene::AlphaMode::Blend && reaches(d)) map.casters.push_back(d);
+    maps.push_back(std::move(map));
+  }
+  if (maps.empty()) return;
+  ctx.write(render::kShadowMapsResource, passes::addShadowMaps(ctx.graph(), ctx.view(ctx.gpuScene().allDraws()),
+                                                               std::move(maps), uint32_t(views.size())));
+}
+
 }  // namespace
 
 void registerForwardPackage(plugin::Registry& registry) {
@@ -65,6 +94,11 @@ void registerForwardPackage(plugin::Registry& registry) {
                       ctx.write("scene.depth",
                                 passes::addZPrepass(ctx.graph(), ctx.view(ctx.visibleDraws()), depthTarget(ctx)));
                     }});
+  registry.addPass({.name = "shadows",
+                    .description = "shadow maps of the shadowed spot lights that reach a visible object (only then)",
+                    .reads = {plugin::kForwardDrawsResource},
+                    .writes = {render::kShadowMapsResource},
+                    .declare = declareShadows});
   registry.addPass({.name = "forward-opaque",
                     .description = "opaque objects shaded forward (their material's fragment variant); clears the HDR colour",
                     .reads = {plugin::kForwardDrawsResource, "scene.depth"},
@@ -94,12 +128,21 @@ void registerForwardPackage(plugin::Registry& registry) {
                                                                      targets(ctx)));
                     }});
   registry.addPass({.name = "exposure",
-                    .description = "automatic exposure from the log-average luminance (async compute)",
+                    .description = "exposure as EV100: manual, or automatic from the log-average luminance, adapted "
+                                   "across frames (async compute)",
                     .queue = graph::QueueClass::AsyncCompute,
                     .reads = {"scene.hdr"},
                     .writes = {"scene.exposure"},
+                    .parameters = {{"mode", "auto", "\"auto\" (metered) or \"manual\" (ev100)"},
+                                   {"ev100", 0.0, "manual: the exposure value at ISO 100 (sunny day ~15, indoors ~7)"},
+                                   {"compensation", 0.0, "auto: EV added to the brightness (+1 twice as bright)"},
+                                   {"adaptation", 1.0, "auto: fraction of the gap to the metering closed per frame "
+                                                       "(1: each frame metered alone)"},
+                                   {"min-ev100", -3.585, "auto: lowest EV100 (the default caps the gain at 10)"},
+                                   {"max-ev100", 24.0, "auto: highest EV100 (a 100,000-lux sun meters about 16)"}},
                     .declare = [](FrameContext& ctx) {
-                      ctx.write("scene.exposure", passes::addExposure(ctx.graph(), ctx.read("scene.hdr")));
+                      ctx.write("scene.exposure",
+                                passes::addExposure(ctx, ctx.read("scene.hdr"), passes::exposureParams(ctx)));
                     }});
   registry.addPass({.name = "tonemap",
                     .description = "HDR colour, exposed, to the 8-bit sRGB output",
@@ -111,7 +154,7 @@ void registerForwardPackage(plugin::Registry& registry) {
                                                    ctx.read(plugin::kOutputResource), ctx.debugColors));
                     }});
   registry.addFrame({.name = "forward",
-                     .passes = {{.pass = "z-prepass"}, {.pass = "forward-opaque"}, {.pass = "alpha-mask"},
+                     .passes = {{.pass = "z-prepass"}, {.pass = "shadows"}, {.pass = "forward-opaque"}, {.pass = "alpha-mask"},
                                 {.pass = "alpha-blend"}, {.pass = "exposure"}, {.pass = "tonemap"}}});
 }
 

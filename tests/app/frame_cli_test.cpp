@@ -54,7 +54,7 @@ TEST(FrameCli, PassesListsEveryRegisteredPassWithItsResourcesAndTheFrames) {
   EXPECT_EQ(passes["test-post"]["plugin"], "test-good");
   EXPECT_EQ(passes["tonemap"]["plugin"], "built-in");
   EXPECT_EQ(json["frames"]["forward"],
-            nlohmann::json({"z-prepass", "forward-opaque", "alpha-mask", "alpha-blend", "exposure", "tonemap"}));
+            nlohmann::json({"z-prepass", "shadows", "forward-opaque", "alpha-mask", "alpha-blend", "exposure", "tonemap"}));
   const auto& plugged = json["frames"]["test-frame"];
   ASSERT_TRUE(plugged.is_array());
   EXPECT_EQ(plugged[plugged.size() - 3], "test-post") << "before exposure: " << plugged.dump();
@@ -105,6 +105,16 @@ TEST(FrameCli, ABrokenFrameFailsWithOneLineNamingPassAndResource) {
     EXPECT_EQ(r.exitCode, 1) << c.json;
     const std::string line = r.err.substr(r.err.find("shadelgraph: error:"));
     EXPECT_NE(line.find(expected), std::string::npos) << line;
+    EXPECT_EQ(std::count(line.begin(), line.end(), '\n'), 1) << line;
+  }
+  // An exposure parameter out of its range: one line naming the pass and the parameter.
+  for (const char* exposure : {R"({"mode": "sideways"})", R"({"adaptation": 0.0})", R"({"ev100": 1e9})"}) {
+    const auto file = writeFrame("bad-exposure", std::string(R"({"name": "f", "base": "forward", "parameters": {"exposure": )") +
+                                                     exposure + "}}");
+    const auto bad = run("render --size 32x32 --frame-graph " + file.string() + " -o /dev/null");
+    EXPECT_EQ(bad.exitCode, 1) << exposure;
+    const std::string line = bad.err.substr(std::min(bad.err.find("shadelgraph: error:"), bad.err.size()));
+    EXPECT_NE(line.find("pass 'exposure': parameter '"), std::string::npos) << line;
     EXPECT_EQ(std::count(line.begin(), line.end(), '\n'), 1) << line;
   }
   const auto r = run("graph --frame-graph no-such-frame");

@@ -1,5 +1,7 @@
 #include "hdr_capture.hpp"
 
+#include <cstring>
+
 #include <glm/gtc/packing.hpp>
 
 #include <shadelgraph/gpu/barriers.hpp>
@@ -9,7 +11,7 @@
 
 namespace sg::test {
 
-void HdrCapture::registerIn(plugin::Registry& registry) {
+void HdrCapture::registerIn(plugin::Registry& registry, const nlohmann::json& exposure) {
   registry.beginPlugin("stability-test");
   // The capture is the only reader of the version it copies (readers on several
   // queues would share one General layout, which exposure's and tonemap's
@@ -28,8 +30,44 @@ void HdrCapture::registerIn(plugin::Registry& registry) {
                       pass.execute([this, color, copy](PassContext& ctx) { record(ctx, ctx.image(color), ctx.image(copy)); });
                       frame.write("scene.hdr", copy);
                     }});
-  // The decoupled frame (which shades forward objects too) with the capture last before exposure.
-  registry.addFrame({.name = kHdrCapturedFrame, .base = "decoupled", .passes = {{.pass = "hdr-capture", .before = {"exposure"}}}});
+  registry.addPass({.name = "exposure-capture",
+                    .description = "copies the exposure pass's result to the host",
+                    .reads = {"scene.exposure"},
+                    .writes = {"scene.exposure"},
+                    .declare = [this](render::FrameContext& frame) {
+                      auto& graph = frame.graph();
+                      const auto metered = frame.read("scene.exposure");
+                      auto copy = graph.createBuffer("exposure (captured)", {.size = sizeof(shader::SgExposure)});
+                      auto& pass = graph.addPass("exposure-capture", graph::QueueClass::Graphics, graph::PassKind::Transfer);
+                      pass.read(metered, graph::Access::TransferSrc);
+                      copy = pass.write(copy, graph::Access::TransferDst);
+                      pass.execute([this, metered, copy](PassContext& ctx) {
+                        if (!exposure_)
+                          exposure_ = gpu::Buffer(device_->context(), device_->memory(),
+                                                  {sizeof(shader::SgExposure), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                   gpu::MemoryLocation::Readback, "exposure capture", "readback"});
+                        const VkBufferCopy region{0, 0, sizeof(shader::SgExposure)};
+                        for (VkBuffer target : {exposure_.handle(), ctx.buffer(copy).handle()})
+                          vkCmdCopyBuffer(ctx.cmd(), ctx.buffer(metered).handle(), target, 1, &region);
+                        gpu::memoryBarrier(ctx.cmd(), {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+                                           {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT});
+                      });
+                      frame.write("scene.exposure", copy);
+                    }});
+  // The decoupled frame (which shades forward objects too) with the HDR capture last before
+  // exposure and the exposure capture between exposure and tonemap.
+  registry.addFrame({.name = kHdrCapturedFrame,
+                     .base = "decoupled",
+                     .passes = {{.pass = "hdr-capture", .before = {"exposure"}},
+                                {.pass = "exposure-capture", .after = {"exposure"}, .before = {"tonemap"}}},
+                     .parameters = exposure.is_object() ? std::map<std::string, nlohmann::json>{{"exposure", exposure}}
+                                                        : std::map<std::string, nlohmann::json>{}});
+}
+
+shader::SgExposure HdrCapture::exposure() const {
+  shader::SgExposure e{};
+  if (exposure_) std::memcpy(&e, exposure_.mapped(), sizeof e);
+  return e;
 }
 
 void HdrCapture::record(PassContext& ctx, const gpu::Image& hdr, const gpu::Image& copy) {

@@ -1,7 +1,8 @@
 #pragma once
 // Reads the HDR colour back: a pass registered like a plugin's, in a frame
 // (kHdrCapturedFrame) that runs it after shading and before exposure, copying
-// the RGBA16F target into a host-visible buffer.
+// the RGBA16F target into a host-visible buffer; and the exposure pass's
+// result, copied the same way between exposure and tonemap.
 #include <cstdint>
 #include <vector>
 
@@ -11,6 +12,8 @@
 #include <shadelgraph/gpu/device.hpp>
 #include <shadelgraph/gpu/image.hpp>
 #include <shadelgraph/plugin/registry.hpp>
+
+#include <exposure/exposure_interface.h>
 
 namespace sg {
 class PassContext;
@@ -22,11 +25,14 @@ inline constexpr const char* kHdrCapturedFrame = "hdr-captured";
 
 class HdrCapture {
  public:
-  // Adds the capture pass and kHdrCapturedFrame to `registry`; the device is the one the frames run on.
-  void registerIn(plugin::Registry& registry);
+  // Adds the capture passes and kHdrCapturedFrame to `registry` (with `exposure` as the exposure
+  // pass's parameters when it is an object); the device is the one the frames run on.
+  void registerIn(plugin::Registry& registry, const nlohmann::json& exposure = nullptr);
   void setDevice(gpu::Device& device) { device_ = &device; }
   // The last frame's HDR colour, row by row (call after the frame completed).
   std::vector<glm::vec4> pixels() const;
+  // The last frame's exposure (EV100, the factor tonemap applied, the metering).
+  shader::SgExposure exposure() const;
   uint32_t width() const { return width_; }
   uint32_t height() const { return height_; }
 
@@ -35,6 +41,7 @@ class HdrCapture {
 
   gpu::Device* device_ = nullptr;
   gpu::Buffer buffer_;
+  gpu::Buffer exposure_;
   uint32_t width_ = 0, height_ = 0;
 };
 

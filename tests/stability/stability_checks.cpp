@@ -26,8 +26,10 @@ HdrSummary summarize(const std::vector<glm::vec4>& hdr) {
     logSum += std::log(std::max(luminance, 1e-4));  // Inf stays Inf, NaN stays NaN: as on the GPU
   }
   const double logAverage = hdr.empty() ? 0.0 : logSum / double(hdr.size());
-  // The pass clamps to [0.1, 10]; a NaN log-average would give NaN here.
-  s.exposure = std::isnan(logAverage) ? logAverage : std::clamp(0.18 / std::exp(logAverage), 0.1, 10.0);
+  // The pass's default metering range, EV100 -3.585 to 24, is an exposure of 10 down to 1 / (1.2 * 2^24);
+  // a NaN log-average would give NaN here.
+  const double lowest = 1.0 / (1.2 * std::exp2(24.0));
+  s.exposure = std::isnan(logAverage) ? logAverage : std::clamp(0.18 / std::exp(logAverage), lowest, 10.0);
   return s;
 }
 

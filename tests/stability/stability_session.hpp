@@ -21,15 +21,18 @@ namespace sg::test {
 struct StabilityFrame {
   gpu::HostImage ldr;            // the output, sRGB 8-bit
   std::vector<glm::vec4> hdr;    // the HDR colour before exposure, same size
+  shader::SgExposure exposure{};  // what the exposure pass computed and tonemap applied
   plugins::DecoupledStats stats;  // of this frame (decoupled objects only)
 };
 
 class StabilitySession {
  public:
-  StabilitySession(scene::Scene s, scene::ShadingMode mode, plugins::DecoupledSettings settings = {})
+  // `exposure`: the exposure pass's parameters, when an object (e.g. {"adaptation": 0.5}).
+  StabilitySession(scene::Scene s, scene::ShadingMode mode, plugins::DecoupledSettings settings = {},
+                   const nlohmann::json& exposure = nullptr)
       : scene_(std::move(s)), context_(validatedOptions()) {
     plugins::registerBuiltins(registry_);
-    capture_.registerIn(registry_);
+    capture_.registerIn(registry_, exposure);
     device_ = std::make_unique<gpu::Device>(context_);
     device_->shaders().add(gpu::builtinShaders());
     capture_.setDevice(*device_);
@@ -48,10 +51,16 @@ class StabilitySession {
     StabilityFrame f;
     f.ldr = renderer_->render({.width = width, .height = height, .cameraOverride = camera}).image;
     f.hdr = capture_.pixels();
+    f.exposure = capture_.exposure();
     f.stats = shading_->stats();
     return f;
   }
   StabilityFrame render(uint32_t size, std::optional<scene::Camera> camera = {}) { return render(size, size, camera); }
+  // The compiled frame `render` would run (what `shadelgraph graph` prints).
+  graph::CompiledPlan plan(uint32_t width, uint32_t height, std::optional<scene::Camera> camera = {}) {
+    return renderer_->plan({.width = width, .height = height, .cameraOverride = camera});
+  }
+  render::Renderer& renderer() { return *renderer_; }
   const scene::Scene& scene() const { return scene_; }
 
  private:

@@ -1,7 +1,8 @@
 // The frame's punctual lights at a surface point (KHR_lights_punctual):
 // sgLightAt gives, for one of frame.lights and a world position, the unit
 // direction from the position towards the light and the radiance arriving
-// there (colour * intensity, times the falloff). A layer's light loop:
+// there (colour * intensity, times the falloff, times the light's shadow
+// visibility when it has a shadow map). A layer's light loop:
 //   for (uint i = 0u; i < frame.counts.x; ++i) {
 //     LightSample l = sgLightAt(frame.lights[i], s.position);
 //     color += brdf(N, V, l.direction) * l.radiance * max(dot(N, l.direction), 0.0);
@@ -13,6 +14,38 @@
 #include <framework/render/shaders/frame.glsl>
 
 #define SG_PI 3.14159265358979
+
+// The shadow atlas (passes/shadows): one depth map per shadowed light, side by side.
+layout(set = 0, binding = kBindShadowMaps) uniform sampler2D sgShadowMaps;
+
+// How much of a shadowed light reaches `position`, 0..1: 3x3 bilinear PCF
+// (16 depth compares, weights 1-f, 1, 1, f per axis). The maps carry the
+// slope-scaled bias (written when they are drawn), so a receiver compares its own depth.
+float sgShadowAt(Light light, vec3 position) {
+  int slot = int(light.cone.z) - 1;
+  if (slot < 0) return 1.0;
+  vec4 clip = light.shadowMatrix * vec4(position, 1.0);
+  if (clip.w <= 0.0) return 1.0;  // behind the light: outside its cone anyway
+  vec3 ndc = clip.xyz / clip.w;
+  if (any(greaterThan(abs(ndc.xy), vec2(1.0))) || ndc.z > 1.0) return 1.0;
+  int size = int(frame.shadowAtlas.y);
+  // The map is drawn with +Y up (negative-height viewport): row 0 is ndc.y = +1.
+  vec2 texel = vec2(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5) * float(size) - 0.5;
+  vec2 base = floor(texel), f = texel - base;
+  // Clamped to the bound image too: a frame whose maps were not drawn binds a 1x1 white stand-in.
+  ivec2 last = textureSize(sgShadowMaps, 0) - 1;
+  float lit = 0.0;
+  for (int y = 0; y < 4; ++y) {
+    float wy = y == 0 ? 1.0 - f.y : (y == 3 ? f.y : 1.0);
+    for (int x = 0; x < 4; ++x) {
+      float wx = x == 0 ? 1.0 - f.x : (x == 3 ? f.x : 1.0);
+      ivec2 t = clamp(ivec2(base) + ivec2(x - 1, y - 1), ivec2(0), ivec2(size - 1));
+      float stored = texelFetch(sgShadowMaps, min(ivec2(slot * size + t.x, t.y), last), 0).r;
+      lit += ndc.z <= stored ? wx * wy : 0.0;
+    }
+  }
+  return lit / 9.0;
+}
 
 struct LightSample {
   vec3 direction;  // world, unit: from the surface point towards the light
@@ -41,6 +74,7 @@ LightSample sgLightAt(Light light, vec3 position) {
       attenuation *= t * t;
     }
   }
+  if (attenuation > 0.0) attenuation *= sgShadowAt(light, position);
   return LightSample(L, light.color.rgb * attenuation);
 }
 

@@ -14,12 +14,14 @@ SG_CONST uint kLightDirectional = 0u;
 SG_CONST uint kLightPoint = 1u;
 SG_CONST uint kLightSpot = 2u;
 SG_CONST uint kMaxLights = 8u;
+SG_CONST uint kBindShadowMaps = 40u;  // set 0 of material shaders: the shadow atlas (depth, sampled)
 
 struct Light {
   vec4 positionType;    // xyz world position, w = type
   vec4 directionRange;  // xyz direction the light travels, w = range (0: infinite)
   vec4 color;           // rgb = colour * intensity
-  vec4 cone;            // x = cos(outer), y = 1 / max(cos(inner) - cos(outer), eps)
+  vec4 cone;            // x = cos(outer), y = 1 / max(cos(inner) - cos(outer), eps), z = shadow map slot + 1 (0: none)
+  mat4 shadowMatrix;    // world to the shadow map's clip space (when cone.z > 0)
 };
 
 struct SgFrameUniforms {
@@ -30,6 +32,7 @@ struct SgFrameUniforms {
   vec4 ambient;      // rgb ambient radiance
   uvec4 counts;      // x = light count, y = output width, z = output height
   Light lights[kMaxLights];
+  vec4 shadowAtlas;  // x = maps side by side in the atlas, y = texels per map side
 };
 
 // Push constants of a scene draw (render::drawItem).

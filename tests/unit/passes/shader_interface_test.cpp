@@ -27,6 +27,7 @@
 #include <shadel-clear/shadel_clear.hpp>
 #include <shadel-mark/shadel_mark.hpp>
 #include <shade-reuse/shade_reuse.hpp>
+#include <shadows/shadows.hpp>
 #include <shadelgraph/gpu/shader_compiler.hpp>
 #include <support-expand/support_expand.hpp>
 #include <tonemap/tonemap.hpp>
@@ -123,6 +124,7 @@ const std::map<std::string, size_t> kSharedRecords = {
     {"SgLayerShadePush", sizeof(shader::SgLayerShadePush)},
     {"SgOccupancyPush", sizeof(shader::SgOccupancyPush)},
     {"SgExposure", sizeof(shader::SgExposure)},
+    {"SgExposureParams", sizeof(shader::SgExposureParams)},
 };
 
 const char* typeName(VkDescriptorType type) {
@@ -220,6 +222,7 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   std::string errors;
   errors += mismatches("z-prepass", passes::zPrepassPipeline());
   errors += mismatches("exposure", passes::exposurePipeline());
+  errors += mismatches("shadows", passes::shadowMapPipeline());
   errors += mismatches("hi-z", passes::hiZPipeline());
   errors += mismatches("occlusion-cull", passes::occlusionCullPipeline());
   for (bool passthrough : {false, true})

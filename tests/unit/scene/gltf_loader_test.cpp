@@ -360,8 +360,8 @@ TEST(GltfLoader, LightsPunctual) {
   "extensionsUsed": ["KHR_lights_punctual"],
   "extensions": {"KHR_lights_punctual": {"lights": [
     {"name": "sun", "type": "directional", "color": [1, 0.5, 0.25], "intensity": 3},
-    {"type": "point", "intensity": 20, "range": 5},
-    {"type": "spot", "spot": {"innerConeAngle": 0.1, "outerConeAngle": 0.5}}]}})");
+    {"type": "point", "intensity": 20, "range": 5, "extras": {"shadows": false}},
+    {"type": "spot", "spot": {"innerConeAngle": 0.1, "outerConeAngle": 0.5}, "extras": {"shadows": true}}]}})");
   const Scene scene = loadGltf(file);
   ASSERT_EQ(scene.lights.size(), 3u);
   const Light& sun = scene.lights[0];
@@ -381,6 +381,47 @@ TEST(GltfLoader, LightsPunctual) {
   EXPECT_FLOAT_EQ(spot.innerConeAngle, 0.1f);
   EXPECT_FLOAT_EQ(spot.outerConeAngle, 0.5f);
   EXPECT_EQ(spot.direction, glm::vec3(0, 0, -1));
+  EXPECT_TRUE(sun.shadows) << "lights cast shadows unless their extras say otherwise";
+  EXPECT_FALSE(bulb.shadows);
+  EXPECT_TRUE(spot.shadows);
+}
+
+TEST(GltfLoader, LightShadowsExtraMustBeABoolean) {
+  TempDir dir;
+  const auto file = test::writeTriangleGltf(dir, "bad-shadows.gltf",
+                                            R"({"name": "bulb", "extensions": {"KHR_lights_punctual": {"light": 0}}})",
+                                            "0", R"(,
+  "extensionsUsed": ["KHR_lights_punctual"],
+  "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "extras": {"shadows": "yes"}}]}})");
+  try {
+    loadGltf(file);
+    FAIL() << "a non-boolean extras.shadows loaded";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("extras.shadows must be true or false"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GltfLoader, EmissiveStrength) {
+  TempDir dir;
+  const auto material = [&](const std::string& name, const std::string& strength) {
+    return test::writeTriangleGltf(dir, name, R"({"name": "t", "mesh": 0})", "0", R"(,
+  "extensionsUsed": ["KHR_materials_emissive_strength"],
+  "materials": [{"emissiveFactor": [1, 0.5, 0]},
+                {"emissiveFactor": [1, 0.5, 0], "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": )" +
+                                                 strength + "}}}]");
+  };
+  const Scene scene = loadGltf(material("strength.gltf", "40"));
+  ASSERT_GE(scene.materials.size(), 2u);  // then the default material of the unassigned primitive
+  EXPECT_FLOAT_EQ(scene.materials[0].emissiveStrength, 1.0f) << "the default";
+  EXPECT_FLOAT_EQ(scene.materials[1].emissiveStrength, 40.0f);
+  EXPECT_EQ(scene.materials[1].emissiveFactor, glm::vec3(1.0f, 0.5f, 0.0f)) << "the factor stays as authored";
+  try {
+    loadGltf(material("negative.gltf", "-2"));
+    FAIL() << "a negative emissiveStrength loaded";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("emissiveStrength must be a finite number >= 0"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(GltfLoader, ShadingModeFromNodeExtras) {

@@ -54,7 +54,7 @@ TEST(SceneFile, ObjectsLightsAndPaths) {
   ],
   "lights": [
     {"type": "directional", "direction": [0, -2, 0], "intensity": 3, "name": "sun"},
-    {"type": "spot", "position": [0, 3, 0], "innerConeAngle": 0.1, "outerConeAngle": 0.4}
+    {"type": "spot", "position": [0, 3, 0], "innerConeAngle": 0.1, "outerConeAngle": 0.4, "shadows": false}
   ],
   "cameraPaths": [
     {"name": "spin", "type": "orbit", "center": [0, 1, 0], "radius": 4, "height": 2, "seconds": 8},
@@ -89,6 +89,8 @@ TEST(SceneFile, ObjectsLightsAndPaths) {
   EXPECT_FLOAT_EQ(scene.lights[0].intensity, 3.0f);
   EXPECT_EQ(scene.lights[1].type, LightType::Spot);
   EXPECT_FLOAT_EQ(scene.lights[1].outerConeAngle, 0.4f);
+  EXPECT_TRUE(scene.lights[0].shadows) << "the default";
+  EXPECT_FALSE(scene.lights[1].shadows);
 
   ASSERT_EQ(loaded.cameraPaths.size(), 2u);
   EXPECT_EQ(loaded.cameraPaths[0].name, "spin");
@@ -138,6 +140,8 @@ TEST(SceneFile, Errors) {
               HasSubstr("/cameraPaths/0/keys/1/t: key times must increase strictly"));
   EXPECT_THAT(loadError(writeScene(dir, R"({"objects": [], "lights": [{"type": "area"}]})")),
               HasSubstr("/lights/0/type"));
+  EXPECT_THAT(loadError(writeScene(dir, R"({"objects": [], "lights": [{"type": "spot", "shadows": 1}]})")),
+              HasSubstr("/lights/0/shadows: expected true or false"));
   EXPECT_THAT(loadError(writeScene(dir, R"({"objects": [{"gltf": "models/triangle.gltf", "scale": "big"}]})")),
               HasSubstr("/objects/0/scale"));
   EXPECT_THAT(loadError(writeScene(dir, R"({"lights": []})")), HasSubstr("/objects: expected an array"));

@@ -1,0 +1,179 @@
+// The effect matrix (docs/composing-frames.md, "Effects the scene calls for"):
+// for each scene of a matrix and each shading path, the compiled frame — what
+// `shadelgraph graph --json` prints — holds exactly the effect passes and
+// effect resources that scene calls for, and no others. A row is added for
+// each effect as it lands.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <set>
+#include <string>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include <shadelgraph/graph/plan_dump.hpp>
+#include <shadelgraph/scene/procedural_meshes.hpp>
+
+#include "stability_checks.hpp"
+#include "stability_scenes.hpp"
+
+namespace sg::test {
+namespace {
+
+using Names = std::set<std::string>;
+
+// Passes present only when the scene calls for them.
+const Names kEffectPasses = {"alpha-mask", "alpha-blend", "shadows"};
+// Graph resources that exist only for an effect (matched by name prefix).
+const Names kEffectResourcePrefixes = {"shadow"};
+
+glm::mat4 at(float x, float y, float z) { return glm::translate(glm::mat4(1.0f), {x, y, z}); }
+
+void addObject(scene::Scene& s, scene::Material m, const glm::mat4& world) {
+  placeMesh(s, scene::makeBox({0.5f, 0.5f, 0.5f}), addMaterial(s, std::move(m)), world);
+}
+
+// A ground and a sphere on it, a material each; lights and extras added per row.
+scene::Scene baseSet() {
+  scene::Scene s;
+  const int ground = addMaterial(s, {.name = "ground", .baseColorFactor = glm::vec4(0.6f), .metallicFactor = 0.0f});
+  const int ball = addMaterial(s, {.name = "ball", .baseColorFactor = {0.8f, 0.3f, 0.2f, 1.0f},
+                                   .metallicFactor = 0.0f, .roughnessFactor = 0.5f});
+  placeMesh(s, scene::makePlane(6.0f, 6.0f, 4), ground, glm::mat4(1.0f));
+  placeMesh(s, scene::makeSphere(0.6f, 24, 12), ball, at(0.0f, 0.6f, 0.0f));
+  s.cameras.push_back(cameraAt({0.0f, 2.5f, 4.5f}, {0.0f, 0.4f, 0.0f}));
+  return s;
+}
+
+scene::Light sun() {
+  return {.name = "sun", .type = scene::LightType::Directional, .intensity = 3.0f,
+          .direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.4f))};
+}
+
+scene::Light spot(bool shadows) {
+  return {.name = "spot", .type = scene::LightType::Spot, .intensity = 30.0f, .innerConeAngle = 0.3f,
+          .outerConeAngle = 0.6f, .position = {0.0f, 3.0f, 1.0f},
+          .direction = glm::normalize(glm::vec3(0.0f, -1.0f, -0.3f)), .shadows = shadows};
+}
+
+// A shadowed spot lighting a box far behind the camera: it reaches no visible object.
+scene::Scene spotBehindTheCamera() {
+  auto s = baseSet();
+  s.lights.push_back(sun());
+  addObject(s, {.name = "far box", .metallicFactor = 0.0f}, at(0.0f, 0.25f, 30.0f));
+  scene::Light l = spot(true);
+  l.position = {0.0f, 3.0f, 30.0f};
+  l.direction = {0.0f, -1.0f, 0.0f};
+  l.range = 5.0f;
+  s.lights.push_back(l);
+  return s;
+}
+
+struct Row {
+  std::string name;
+  std::function<scene::Scene()> scene;
+  Names forwardPasses, decoupledPasses;  // the effect passes each path holds
+  Names resources;                        // effect resources (both paths)
+};
+
+std::vector<Row> matrix() {
+  return {
+      {"NoLights", [] { return baseSet(); }, {}, {}, {}},
+      {"Sun", [] { auto s = baseSet(); s.lights.push_back(sun()); return s; }, {}, {}, {}},
+      {"ShadowedSpot", [] { auto s = baseSet(); s.lights.push_back(spot(true)); return s; }, {"shadows"},
+       {"shadows"}, {"shadow atlas"}},
+      {"UnshadowedSpot", [] { auto s = baseSet(); s.lights.push_back(spot(false)); return s; }, {}, {}, {}},
+      {"ShadowedSpotReachingNothingVisible", spotBehindTheCamera, {}, {}, {}},
+      {"Emissive",
+       [] {
+         auto s = baseSet();
+         s.lights.push_back(sun());
+         addObject(s, {.name = "glow", .metallicFactor = 0.0f, .emissiveFactor = glm::vec3(1.0f),
+                       .emissiveStrength = 50.0f},
+                   at(1.2f, 0.25f, 0.5f));
+         return s;
+       },
+       {}, {}, {}},
+      {"AlphaBlend",
+       [] {
+         auto s = baseSet();
+         s.lights.push_back(sun());
+         addObject(s, {.name = "glass", .baseColorFactor = {0.5f, 0.7f, 1.0f, 0.4f}, .metallicFactor = 0.0f,
+                       .alphaMode = scene::AlphaMode::Blend},
+                   at(-1.2f, 0.25f, 0.5f));
+         return s;
+       },
+       {"alpha-blend"}, {"alpha-blend"}, {}},
+      {"AlphaMask",
+       [] {
+         auto s = baseSet();
+         s.lights.push_back(sun());
+         addObject(s, {.name = "leaf", .baseColorFactor = {0.3f, 0.8f, 0.3f, 0.4f}, .metallicFactor = 0.0f,
+                       .alphaMode = scene::AlphaMode::Mask},
+                   at(-1.2f, 0.25f, 0.5f));
+         return s;
+       },
+       {"alpha-mask"}, {"alpha-mask"}, {}},
+  };
+}
+
+// The effect passes and resources of a compiled frame, read from its JSON dump.
+struct Effects {
+  Names passes, resources;
+};
+Effects effectsOf(const nlohmann::json& plan) {
+  Effects e;
+  for (const auto& p : plan["passes"]) {
+    const auto name = p["name"].get<std::string>();
+    if (!p["culled"].get<bool>() && kEffectPasses.count(name)) e.passes.insert(name);
+  }
+  for (const auto& r : plan["resources"]) {
+    const auto name = r["name"].get<std::string>();
+    if (r["culled"].get<bool>()) continue;
+    for (const auto& prefix : kEffectResourcePrefixes)
+      if (name.rfind(prefix, 0) == 0) e.resources.insert(name);
+  }
+  return e;
+}
+
+std::string joined(const Names& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return "{" + out + "}";
+}
+
+struct Case {
+  Row row;
+  scene::ShadingMode mode;
+};
+
+class EffectMatrix : public ::testing::TestWithParam<Case> {};
+
+TEST_P(EffectMatrix, TheFrameHoldsExactlyTheEffectsTheSceneCallsFor) {
+  const Case& c = GetParam();
+  StabilitySession session(c.row.scene(), c.mode);
+  const auto plan = nlohmann::json::parse(graph::toJson(session.plan(96, 64)));
+  const Effects got = effectsOf(plan);
+  const bool forward = c.mode == scene::ShadingMode::Forward;
+  const Names& expected = forward ? c.row.forwardPasses : c.row.decoupledPasses;
+  std::printf("%-34s %-9s passes %s resources %s\n", c.row.name.c_str(), forward ? "forward" : "decoupled",
+              joined(got.passes).c_str(), joined(got.resources).c_str());
+  EXPECT_EQ(got.passes, expected) << "got " << joined(got.passes) << ", expected " << joined(expected);
+  EXPECT_EQ(got.resources, c.row.resources)
+      << "got " << joined(got.resources) << ", expected " << joined(c.row.resources);
+}
+
+std::vector<Case> cases() {
+  std::vector<Case> out;
+  for (const Row& r : matrix())
+    for (auto mode : {scene::ShadingMode::Forward, scene::ShadingMode::Decoupled}) out.push_back({r, mode});
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, EffectMatrix, ::testing::ValuesIn(cases()), [](const auto& param_info) {
+  return param_info.param.row.name + (param_info.param.mode == scene::ShadingMode::Forward ? "_Forward" : "_Decoupled");
+});
+
+}  // namespace
+}  // namespace sg::test
