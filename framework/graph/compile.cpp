@@ -1,6 +1,7 @@
 #include <shadelgraph/graph/compile.hpp>
 
 #include <shadelgraph/graph/cull.hpp>
+#include <shadelgraph/graph/frame_boundary.hpp>
 #include <shadelgraph/graph/order.hpp>
 #include <shadelgraph/graph/plan_resources.hpp>
 #include <shadelgraph/graph/validate.hpp>
@@ -100,6 +101,7 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
     lendTo(plan.waits, schedule_.waits,
            [&] { assignQueues(graph, plan.order, deps_, barriers_.handoffs, schedule_); });
   });
+  planFrameBoundary(graph, versions_, deps_, schedule_.passBatch, plan);
 
   // Accesses: one copy when the declaration holds them in pass order already
   // (passes declared one after the other), else pass by pass.
