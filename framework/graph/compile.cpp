@@ -75,6 +75,7 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
   plan.outputWidth = options.outputWidth;
   plan.outputHeight = options.outputHeight;
   orderPasses(deps_, culled_, plan.order);
+  orderTailLast(graph, versions_, deps_, plan.order);
   planAllResources(graph, plan.order, options, usage_, plan.resources, requirements_, transients_,
                    plan.memoryEstimated);
   lendTo(plan.aliases, memory_.aliases, [&] {

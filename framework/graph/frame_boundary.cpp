@@ -1,5 +1,6 @@
 #include <shadelgraph/graph/frame_boundary.hpp>
 
+#include <algorithm>
 #include <array>
 
 namespace sg::graph {
@@ -9,22 +10,22 @@ bool isExternal(ResourceKind kind) { return !isTransient(kind); }
 
 }  // namespace
 
-void planFrameBoundary(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,
-                       std::span<const uint32_t> passBatch, CompiledPlan& plan) {
+std::vector<bool> neededByResults(const RenderGraph& graph, const VersionTable& versions,
+                                  const DependencyGraph& deps, std::span<const PassId> order) {
   const GraphDeclaration& declared = graph.declaration();
-  // What the frame's results need: roots, then (backwards over the order, as
-  // dependencies point forwards) every pass a needed pass depends on.
+  // Roots, then (backwards over the order, as dependencies point forwards)
+  // every pass a needed pass depends on.
   std::vector<bool> needed(graph.passCount(), false);
   for (const ResourceHandle output : declared.outputs) {
     const PassId producer = versions.producerOf(output.id, output.version);
     if (producer.valid()) needed[producer.index] = true;
   }
-  for (const PassId p : plan.order) {
+  for (const PassId p : order) {
     if (graph.pass(p).sideEffect) needed[p.index] = true;
     for (const ResourceAccess& a : graph.accessesOf(p))
       if (declared.traits[a.resource.index].kind == ResourceKind::Imported) needed[p.index] = true;
   }
-  for (auto it = plan.order.rbegin(); it != plan.order.rend(); ++it) {
+  for (auto it = order.rbegin(); it != order.rend(); ++it) {
     if (needed[it->index]) continue;
     for (const Dependency& e : deps.successors(*it))
       if (needed[e.to.index]) {
@@ -32,6 +33,25 @@ void planFrameBoundary(const RenderGraph& graph, const VersionTable& versions, c
         break;
       }
   }
+  return needed;
+}
+
+void orderTailLast(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,
+                   std::vector<PassId>& order) {
+  const std::vector<bool> needed = neededByResults(graph, versions, deps, order);
+  bool seenTail = false, needsMove = false;
+  for (const PassId p : order) {
+    seenTail = seenTail || !needed[p.index];
+    needsMove = needsMove || (seenTail && needed[p.index]);
+  }
+  // Needed passes never depend on the others: both runs keep a valid order.
+  if (needsMove) std::stable_partition(order.begin(), order.end(), [&](PassId p) { return bool(needed[p.index]); });
+}
+
+void planFrameBoundary(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,
+                       std::span<const uint32_t> passBatch, CompiledPlan& plan) {
+  const GraphDeclaration& declared = graph.declaration();
+  const std::vector<bool> needed = neededByResults(graph, versions, deps, plan.order);
 
   plan.hostWaitBatch.fill(kInvalidIndex);
   for (const PassId p : plan.order)

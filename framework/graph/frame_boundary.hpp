@@ -26,6 +26,16 @@
 
 namespace sg::graph {
 
+// What the frame's results need: per pass (by PassId) whether it is a root
+// (output producer, imported-resource access, side effect) or one depends on it.
+std::vector<bool> neededByResults(const RenderGraph& graph, const VersionTable& versions,
+                                  const DependencyGraph& deps, std::span<const PassId> order);
+// Moves the passes nothing of the frame needs after all the others (keeping
+// each group's order), so that on any queue the tail is submitted last and,
+// on a single physical queue (lavapipe), runs after what the host waits for.
+void orderTailLast(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,
+                   std::vector<PassId>& order);
+
 // Marks the tail batches (Batch::tail), sets plan.hostWaitBatch and fills
 // plan.externalUses. `plan` must hold the order, resources and batches.
 void planFrameBoundary(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,

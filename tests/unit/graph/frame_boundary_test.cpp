@@ -131,6 +131,30 @@ TEST(GraphFrameBoundary, SideEffectsAndWorkTheOutputNeedsAreNotTail) {
   EXPECT_EQ(plan.hostWaitBatch[queueIndex(QueueClass::AsyncCompute)], 2u);
 }
 
+// A pass only later frames need, declared between two the output needs, is
+// ordered after them: the tail is submitted last (on one physical queue it
+// would otherwise run before what the host waits for).
+TEST(GraphFrameBoundary, TailIsOrderedAfterEverythingTheResultsNeed) {
+  RenderGraph g;
+  auto hdr = g.createImage("hdr", ImageDesc{.format = Format::RGBA16F, .size = Size::relative(1.0f)});
+  auto visible = g.importPersistentBuffer("visible next frame", BufferDesc{.size = 64},
+                                          {Layout::Undefined, PipelineStage::AllCommands, AccessFlag::None});
+  auto out = g.importImage("output", ImageDesc{.format = Format::RGBA8Unorm, .size = Size::relative(1.0f)},
+                           ImportedState{}, FinalState{Layout::TransferSrc, PipelineStage::Transfer, AccessFlag::TransferRead});
+  auto& draw = g.addPass("draw", QueueClass::Graphics);
+  hdr = draw.write(hdr, Access::ColorAttachment);
+  auto& record = g.addPass("record-visibility", QueueClass::AsyncCompute);
+  record.read(hdr, Access::Sampled);
+  visible = record.write(visible, Access::StorageWrite);
+  auto& tonemap = g.addPass("tonemap", QueueClass::Graphics);
+  tonemap.read(hdr, Access::Sampled);
+  out = tonemap.write(out, Access::ColorAttachment);
+  g.markOutput(out);
+  const CompiledPlan plan = compile(g, extent());
+  EXPECT_EQ(test::orderNames(plan), (std::vector<std::string>{"draw", "tonemap", "record-visibility"}));
+  EXPECT_EQ(tails(plan), (std::vector<bool>{false, true}));
+}
+
 // A frame that only feeds persistent resources is all tail: the host waits for nothing.
 TEST(GraphFrameBoundary, OnlyPersistentWritesIsAllTail) {
   RenderGraph g;
