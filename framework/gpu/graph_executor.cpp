@@ -14,6 +14,26 @@ namespace {
 
 constexpr size_t kKeptTails = 64;
 
+// One batch's vkQueueSubmit2, kept when it is submitted later.
+struct Submission {
+  VkQueue queue = VK_NULL_HANDLE;
+  std::vector<VkSemaphoreSubmitInfo> waits;
+  VkSemaphoreSubmitInfo signal{};
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  void submit() const {
+    VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+    cmdInfo.commandBuffer = cmd;
+    VkSubmitInfo2 info{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+    info.waitSemaphoreInfoCount = uint32_t(waits.size());
+    info.pWaitSemaphoreInfos = waits.data();
+    info.commandBufferInfoCount = 1;
+    info.pCommandBufferInfos = &cmdInfo;
+    info.signalSemaphoreInfoCount = 1;
+    info.pSignalSemaphoreInfos = &signal;
+    SG_VK(vkQueueSubmit2(queue, 1, &info, VK_NULL_HANDLE));
+  }
+};
+
 Queue toQueue(graph::QueueClass q) { return static_cast<Queue>(graph::queueIndex(q)); }
 
 ImageDesc imageDescOf(const graph::ResourceDesc& d, const std::string& name) {
@@ -110,6 +130,8 @@ void GraphExecutor::setFramesInFlight(uint32_t frames) {
   while (slots_.size() < frames) slots_.push_back(makeSlot());
   current_ = std::min<uint32_t>(current_, uint32_t(slots_.size()) - 1);
 }
+
+void GraphExecutor::beginFrame() { retire(slots_[frames_ % slots_.size()]); }
 
 void GraphExecutor::finish() {
   for (auto& slot : slots_) retire(slot);
@@ -316,6 +338,21 @@ FrameTimings GraphExecutor::execute(const graph::RenderGraph& graph, const graph
   uint32_t usedBuffers[graph::kQueueClassCount] = {};
   uint64_t hostWait[graph::kQueueClassCount] = {};  // absolute values the host waits for
   lastWaits_.assign(plan.batches.size(), {});
+  // On one physical queue the tail runs after everything submitted before it
+  // anyway; submitted only once the frame's results are done and timed, it
+  // leaves the queue's work the host waits for (lavapipe makes a timestamp
+  // available only when all submitted work is: reading the frame's times
+  // would otherwise wait for its tail).
+  const auto& context = device_.context();
+  bool tailIsSuffix = true, seenTail = false;
+  for (const auto& batch : plan.batches) {
+    seenTail = seenTail || batch.tail;
+    tailIsSuffix = tailIsSuffix && (!seenTail || batch.tail);
+  }
+  const bool deferTail = inFlight && tailIsSuffix &&
+                         context.queue(Queue::AsyncCompute).queue == context.queue(Queue::Graphics).queue &&
+                         context.queue(Queue::Transfer).queue == context.queue(Queue::Graphics).queue;
+  std::vector<Submission> deferred;
   for (uint32_t b = 0; b < plan.batches.size(); ++b) {
     const graph::Batch& batch = plan.batches[b];
     const uint32_t q = graph::queueIndex(batch.queue);
@@ -387,16 +424,11 @@ FrameTimings GraphExecutor::execute(const graph::RenderGraph& graph, const graph
     lastSignal[q] = std::max(lastSignal[q] + 1, batch.signalValue);
     signal.value = timelineBase_[q] + lastSignal[q];
     if (!inFlight || !batch.tail) hostWait[q] = signal.value;
-    VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
-    cmdInfo.commandBuffer = cmd;
-    VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
-    submit.waitSemaphoreInfoCount = uint32_t(waits.size());
-    submit.pWaitSemaphoreInfos = waits.data();
-    submit.commandBufferInfoCount = 1;
-    submit.pCommandBufferInfos = &cmdInfo;
-    submit.signalSemaphoreInfoCount = 1;
-    submit.pSignalSemaphoreInfos = &signal;
-    SG_VK(vkQueueSubmit2(device_.context().queue(toQueue(batch.queue)).queue, 1, &submit, VK_NULL_HANDLE));
+    Submission submission{device_.context().queue(toQueue(batch.queue)).queue, std::move(waits), signal, cmd};
+    if (deferTail && batch.tail)
+      deferred.push_back(std::move(submission));
+    else
+      submission.submit();
   }
   timings.submittedCpuClockMs = clockMs();
 
@@ -457,6 +489,7 @@ FrameTimings GraphExecutor::execute(const graph::RenderGraph& graph, const graph
     gpuEnd = std::max(gpuEnd, t.startMs + t.gpuMs);
   }
   timings.gpuMs = gpuEnd;
+  for (auto& submission : deferred) submission.submit();
   timings.frameMs = frameTimer.elapsedMs();
   return timings;
 }

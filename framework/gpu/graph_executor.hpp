@@ -76,6 +76,10 @@ class GraphExecutor {
   uint32_t framesInFlight() const { return uint32_t(slots_.size()); }
   // Waits for every frame in flight (tails included).
   void finish();
+  // Waits until the next frame's slot is free: the frame that used it last,
+  // its tail included, has completed. Before writing what that frame read
+  // (host-written per-frame buffers, one per frame in flight).
+  void beginFrame();
   // The tails of frames that have completed since the last call, timed.
   std::vector<FrameTimings> takeCompletedTails();
   // The timeline waits the last frame's batches were submitted with (the

@@ -52,8 +52,21 @@ std::vector<TimedScope> GpuTimer::read(std::span<const uint32_t> scopes) const {
     size_t j = i + 1;
     while (j < scopes.size() && scopes[j] == scopes[j - 1] + 1) ++j;
     const uint32_t first = scopes[i], count = uint32_t(j - i) * 2;
-    SG_VK(vkGetQueryPoolResults(device_, pool_, first * 2, count, count * 8, ticks.data() + first * 2, 8,
-                                VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    // Without WAIT first, per query: the caller has waited for these
+    // scopes' work, and lavapipe's WAIT waits for everything submitted (a
+    // frame's tail included). A query not yet available is then waited for.
+    std::vector<uint64_t> withAvailability(size_t(count) * 2);
+    const VkResult ready = vkGetQueryPoolResults(device_, pool_, first * 2, count, withAvailability.size() * 8,
+                                                 withAvailability.data(), 16,
+                                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);
+    bool available = ready == VK_SUCCESS || ready == VK_NOT_READY;
+    for (uint32_t q = 0; available && q < count; ++q) available = withAvailability[2 * q + 1] != 0;
+    if (available) {
+      for (uint32_t q = 0; q < count; ++q) ticks[first * 2 + q] = withAvailability[2 * q];
+    } else {
+      SG_VK(vkGetQueryPoolResults(device_, pool_, first * 2, count, count * 8, ticks.data() + first * 2, 8,
+                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    }
     i = j;
   }
   uint64_t earliest = ticks[scopes[0] * 2];
