@@ -79,6 +79,10 @@ void addRenderOptions(CLI::App& command, RenderArgs& args) {
                      "a shade frame (every visible chunk shaded) every N raster frames, 1 or more; the frames between "
                      "shade only what has no shading from the frame before and reuse the rest (1: every frame)")
       ->capture_default_str();
+  command.add_option("--frames-in-flight", args.framesInFlight,
+                     "1 or 2; 2 with --shade-rate above 1: the shade frame runs on async compute after its raster "
+                     "frame's composite, as the next raster frame is recorded, and later frames read it")
+      ->capture_default_str();
   command.add_option("--stats", args.stats, "write frame statistics as JSON");
   command.add_option("--trace", args.trace, "write per-pass timings as a Chrome trace (Perfetto)");
   command.add_option("--frames", args.frames, "frames to render; the last is reported")->capture_default_str();
@@ -111,6 +115,7 @@ void checkRenderArgs(const RenderArgs& args) {
   if (args.fps) requireFiniteInRange("--fps", *args.fps, 0.001, 1000.0);
   requireInRange("--soak-every", args.soakEvery, 1, kIntMax);
   requireInRange("--shade-rate", args.shadeRate, 1, kMaxShadeRate);
+  requireInRange("--frames-in-flight", args.framesInFlight, 1, 2);
   requireFiniteInRange("--storage", args.storage, kMinStorage, kMaxStorage);
   if (args.bias) requireFiniteInRange("--bias", *args.bias, -kMaxAbsBias, kMaxAbsBias);
 }

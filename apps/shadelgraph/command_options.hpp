@@ -42,6 +42,7 @@ struct RenderArgs {
   std::optional<double> bias;  // empty: the adjuster decides
   double storage = 2.0;
   int shadeRate = 1;  // a shade frame every this many raster frames (docs/decoupled-shading.md)
+  int framesInFlight = 1;  // 2: the shade frame runs past its raster frame (docs/decoupled-shading.md)
   std::string stats;
   std::string trace;
   int frames = 2;

@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <stdexcept>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -42,7 +43,7 @@ void printTable(const gpu::FrameTimings& t, uint64_t transientBytes, const gpu::
 }
 
 void writeStats(const std::string& path, const AppSession& session, const render::FrameResult& frame,
-                const gpu::MemoryTotals& memory) {
+                const std::vector<double>& framesMs, const gpu::MemoryTotals& memory) {
   const auto d = session.decoupled->stats();
   const uint64_t shaded = uint64_t(d.counters.chunksShaded) * 64;
   nlohmann::json passMs = nlohmann::json::object(), passCpuMs = nlohmann::json::object();
@@ -60,6 +61,9 @@ void writeStats(const std::string& path, const AppSession& session, const render
   for (const auto& [category, bytes] : memory.bytesByCategory) memoryJson[category] = bytes;
   nlohmann::json stats{{"frame_ms", frame.timings.frameMs},
                        {"gpu_ms", frame.timings.gpuMs},
+                       // GPU time of each raster frame of --frames (first to last timestamp of
+                       // what the frame waits for; a shade frame running past it is not included).
+                       {"frames_ms", framesMs},
                        {"pass_ms", passMs},
                        {"pass_cpu_ms", passCpuMs},
                        {"triangles", session.renderer->gpuScene().triangleCount()},
@@ -99,6 +103,41 @@ void writeStats(const std::string& path, const AppSession& session, const render
   writeTextFile(path, "stats", stats.dump(2) + "\n");
 }
 
+constexpr size_t kTracedFrames = 8;
+
+// Every traced frame's passes on one GPU track per logical queue, their
+// recording on the CPU track, and a span per frame from its first recorded
+// pass until the host had waited for it (a tail, e.g. a shade frame left
+// running, goes on on its queue's track). GPU and CPU share one clock where
+// the device calibrates its timestamps with the host's.
+std::vector<gpu::TraceEvent> traceEvents(const std::vector<gpu::FrameTimings>& frames,
+                                         const std::vector<gpu::FrameTimings>& tails) {
+  std::vector<gpu::TraceEvent> events;
+  if (frames.empty()) return events;
+  const double cpuOrigin = frames.front().passes.empty() ? 0.0 : frames.front().passes.front().cpuClockMs;
+  const double gpuOrigin = frames.front().clocksAligned  ? cpuOrigin
+                           : frames.front().passes.empty() ? 0.0
+                                                           : frames.front().passes.front().gpuClockMs;
+  const auto add = [&](const gpu::FrameTimings& f, bool tail) {
+    if (f.frame < frames.front().frame) return;  // a tail of a frame before the traced ones
+    for (const auto& p : f.passes) {
+      if (p.tail != tail) continue;  // a tail's times come with the completed tails
+      events.push_back({p.name, "GPU " + std::string(graph::toString(p.queue)), p.gpuClockMs - gpuOrigin, p.gpuMs});
+    }
+  };
+  for (const auto& f : frames) {
+    add(f, false);
+    const std::string frame = "frame " + std::to_string(f.frame);
+    for (const auto& p : f.passes)
+      events.push_back({frame + " " + p.name, "CPU record", p.cpuClockMs - cpuOrigin, p.cpuMs});
+    if (!f.passes.empty())
+      events.push_back({frame + " (host waits)", "CPU frames", f.passes.front().cpuClockMs - cpuOrigin,
+                        f.doneCpuClockMs - f.passes.front().cpuClockMs});
+  }
+  for (const auto& t : tails) add(t, true);
+  return events;
+}
+
 // The camera at frame `frame` (30 per second) of the scene file's camera path `path`.
 scene::Camera pathCamera(const AppSession& session, int path, int frame) {
   if (session.cameraPaths.empty()) throw std::invalid_argument("--frame: the scene has no camera paths (a .json scene file defines them)");
@@ -122,9 +161,11 @@ void runRender(const RenderArgs& args) {
   parseSize("--size", args.size, settings.width, settings.height);
   if (args.camera) settings.camera = *args.camera;
   settings.aliasing = !args.noAliasing;
+  settings.framesInFlight = uint32_t(args.framesInFlight);
 
   plugins::DecoupledSettings decoupled{.storageFactor = args.storage, .filter = args.filter,
-                                      .shadeRate = uint32_t(args.shadeRate)};
+                                      .shadeRate = uint32_t(args.shadeRate),
+                                      .overlap = args.framesInFlight > 1};
   const std::map<std::string, plugins::DebugView> views{{"final", plugins::DebugView::Final},
                                                         {"level", plugins::DebugView::Level},
                                                         {"occupancy", plugins::DebugView::Occupancy},
@@ -145,11 +186,20 @@ void runRender(const RenderArgs& args) {
   if (!args.soakReport.empty()) soak.emplace(args.soakReport, uint32_t(args.soakEvery), uint32_t(args.frames));
   // The first frame pays for pipeline creation; report the last one.
   render::FrameResult frame;
+  std::vector<double> framesMs;
+  // The trace shows the last frames on the executor's clocks (several: frames overlap).
+  std::vector<gpu::FrameTimings> traced;
   for (int i = 0; i < args.frames; ++i) {
     if (animations.playing() && (i == 0 || args.fps))
       animations.poseAt(float(args.time + (args.fps ? i / *args.fps : 0.0)), *session.renderer);
+    settings.readback = i + 1 == args.frames;  // only the last is written (and a readback waits for the queue)
     frame = session.renderer->render(settings);
     if (soak) soak->add(uint32_t(i), frame.timings);
+    framesMs.push_back(frame.timings.gpuMs);
+    if (!args.trace.empty()) {
+      traced.push_back(frame.timings);
+      if (traced.size() > kTracedFrames) traced.erase(traced.begin());
+    }
   }
   image::writePng(args.output, frame.image.width, frame.image.height, frame.image.rgba8.data());
   const auto memory = session.device->memory().totals();
@@ -171,16 +221,10 @@ void runRender(const RenderArgs& args) {
                 d.shadeFrame ? "a shade frame" : "a fill frame", d.counters.chunksShaded, d.counters.chunksReused,
                 (unsigned long long)d.chunksFilled, (unsigned long long)d.chunksReused);
   if (soak) soak->finish();
-  if (!args.stats.empty()) writeStats(args.stats, session, frame, memory);
+  if (!args.stats.empty()) writeStats(args.stats, session, frame, framesMs, memory);
   if (!args.trace.empty()) {
-    std::vector<gpu::TraceEvent> events;
-    double cpuClock = 0;
-    for (const auto& p : frame.timings.passes) {
-      events.push_back({p.name, "GPU " + std::string(graph::toString(p.queue)), p.gpuStartMs, p.gpuMs});
-      events.push_back({p.name, "CPU record", cpuClock, p.cpuMs});
-      cpuClock += p.cpuMs;
-    }
-    gpu::writeChromeTrace(args.trace, events);
+    const auto tails = session.renderer->finishFrames();
+    gpu::writeChromeTrace(args.trace, traceEvents(traced, tails));
   }
   setExitCode(session.validationExitCode());
 }

@@ -1,4 +1,5 @@
 #include <shadelgraph/gpu/context.hpp>
+#include <shadelgraph/gpu/queue_families.hpp>
 
 #include <algorithm>
 #include <cstdlib>
@@ -203,26 +204,15 @@ void Context::createDevice() {
   std::vector<VkQueueFamilyProperties> families(count);
   vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice_, &count, families.data());
 
-  auto findFamily = [&](VkQueueFlags want, VkQueueFlags avoid) -> int {
-    for (uint32_t i = 0; i < count; ++i)
-      if ((families[i].queueFlags & want) == want && !(families[i].queueFlags & avoid)) return static_cast<int>(i);
-    return -1;
-  };
-  const int graphics = findFamily(VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT, 0);
-  if (graphics < 0) throw GpuError(std::string(properties_.deviceName) + " has no graphics+compute queue family");
-  int compute = findFamily(VK_QUEUE_COMPUTE_BIT, VK_QUEUE_GRAPHICS_BIT);
-  int transfer = findFamily(VK_QUEUE_TRANSFER_BIT, VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT);
-  if (compute < 0) compute = graphics;
-  if (transfer < 0) transfer = graphics;
+  const auto choice = chooseQueueFamilies(families);
+  if (!choice) throw GpuError(std::string(properties_.deviceName) + " has no graphics+compute queue family");
+  const uint32_t graphics = choice->graphics, compute = choice->compute, transfer = choice->transfer;
 
   std::vector<VkDeviceQueueCreateInfo> queueInfos;
   float priority = 1.0f;
-  for (int family : {graphics, compute, transfer}) {
-    bool seen = false;
-    for (auto& q : queueInfos) seen |= q.queueFamilyIndex == static_cast<uint32_t>(family);
-    if (seen) continue;
+  for (const uint32_t family : choice->distinct()) {
     VkDeviceQueueCreateInfo q{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-    q.queueFamilyIndex = static_cast<uint32_t>(family);
+    q.queueFamilyIndex = family;
     q.queueCount = 1;
     q.pQueuePriorities = &priority;
     queueInfos.push_back(q);
@@ -241,15 +231,47 @@ void Context::createDevice() {
   enable.v13.dynamicRendering = VK_TRUE;
   enable.v13.maintenance4 = VK_TRUE;
 
+  // Calibrated timestamps put GPU and CPU times of a trace on one clock.
+  std::vector<const char*> deviceExtensions;
+  bool calibrate = false;
+  {
+    uint32_t n = 0;
+    vkEnumerateDeviceExtensionProperties(physicalDevice_, nullptr, &n, nullptr);
+    std::vector<VkExtensionProperties> available(n);
+    vkEnumerateDeviceExtensionProperties(physicalDevice_, nullptr, &n, available.data());
+    for (const auto& e : available) calibrate |= std::strcmp(e.extensionName, VK_EXT_CALIBRATED_TIMESTAMPS_EXTENSION_NAME) == 0;
+    const auto domainsOf = reinterpret_cast<PFN_vkGetPhysicalDeviceCalibrateableTimeDomainsEXT>(
+        vkGetInstanceProcAddr(instance_, "vkGetPhysicalDeviceCalibrateableTimeDomainsEXT"));
+    bool device = false, monotonic = false;
+    if (calibrate && domainsOf) {
+      uint32_t domainCount = 0;
+      domainsOf(physicalDevice_, &domainCount, nullptr);
+      std::vector<VkTimeDomainEXT> domains(domainCount);
+      domainsOf(physicalDevice_, &domainCount, domains.data());
+      for (const auto d : domains) {
+        device |= d == VK_TIME_DOMAIN_DEVICE_EXT;
+        monotonic |= d == VK_TIME_DOMAIN_CLOCK_MONOTONIC_EXT;
+      }
+    }
+    calibrate = calibrate && device && monotonic;
+    if (calibrate) deviceExtensions.push_back(VK_EXT_CALIBRATED_TIMESTAMPS_EXTENSION_NAME);
+  }
+
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   info.pNext = &enable.core;
+  info.enabledExtensionCount = static_cast<uint32_t>(deviceExtensions.size());
+  info.ppEnabledExtensionNames = deviceExtensions.data();
   info.queueCreateInfoCount = static_cast<uint32_t>(queueInfos.size());
   info.pQueueCreateInfos = queueInfos.data();
   SG_VK(vkCreateDevice(physicalDevice_, &info, nullptr, &device_));
 
-  int familyOf[3] = {graphics, compute, transfer};
+  if (calibrate)
+    calibratedTimestamps_ =
+        reinterpret_cast<PFN_vkGetCalibratedTimestampsEXT>(vkGetDeviceProcAddr(device_, "vkGetCalibratedTimestampsEXT"));
+
+  const uint32_t familyOf[3] = {graphics, compute, transfer};
   for (int i = 0; i < 3; ++i) {
-    queues_[i].family = static_cast<uint32_t>(familyOf[i]);
+    queues_[i].family = familyOf[i];
     vkGetDeviceQueue(device_, queues_[i].family, 0, &queues_[i].queue);
   }
 
@@ -257,6 +279,18 @@ void Context::createDevice() {
   pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   pool.queueFamilyIndex = queues_[0].family;
   SG_VK(vkCreateCommandPool(device_, &pool, nullptr, &immediatePool_));
+}
+
+std::optional<int64_t> Context::hostMinusDeviceClockNs() const {
+  if (!calibratedTimestamps_) return std::nullopt;
+  const VkCalibratedTimestampInfoEXT infos[2] = {{VK_STRUCTURE_TYPE_CALIBRATED_TIMESTAMP_INFO_EXT, nullptr, VK_TIME_DOMAIN_DEVICE_EXT},
+                                                 {VK_STRUCTURE_TYPE_CALIBRATED_TIMESTAMP_INFO_EXT, nullptr,
+                                                  VK_TIME_DOMAIN_CLOCK_MONOTONIC_EXT}};
+  uint64_t stamps[2] = {};
+  uint64_t deviation = 0;
+  if (calibratedTimestamps_(device_, 2, infos, stamps, &deviation) != VK_SUCCESS) return std::nullopt;
+  const double deviceNs = double(stamps[0]) * double(properties_.limits.timestampPeriod);
+  return int64_t(stamps[1]) - int64_t(deviceNs);
 }
 
 std::vector<uint32_t> Context::queueFamilies() const {

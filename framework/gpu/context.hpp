@@ -3,6 +3,7 @@
 // render graph's logical queue classes map onto.
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,10 @@ class Context {
   // Messages from the validation layer (errors and non-allowed warnings).
   ValidationLog& validationLog() { return validationLog_; }
 
+  // The host's steady clock (CLOCK_MONOTONIC) minus the device's timestamp
+  // clock, in ns, now; empty when the device cannot say (VK_EXT_calibrated_timestamps).
+  std::optional<int64_t> hostMinusDeviceClockNs() const;
+
   // Records and submits one command buffer on the graphics queue and waits for it.
   void submitAndWait(const std::function<void(VkCommandBuffer)>& record);
   void setDebugName(VkObjectType type, uint64_t handle, const char* name) const;
@@ -73,6 +78,7 @@ class Context {
   bool validation_ = false;
   ValidationLog validationLog_;
   PFN_vkSetDebugUtilsObjectNameEXT setObjectName_ = nullptr;
+  PFN_vkGetCalibratedTimestampsEXT calibratedTimestamps_ = nullptr;  // set when device and host clocks calibrate
 };
 
 }  // namespace sg::gpu

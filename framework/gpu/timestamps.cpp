@@ -37,16 +37,45 @@ void GpuTimer::end(VkCommandBuffer cmd, uint32_t scope) {
 }
 
 std::vector<TimedScope> GpuTimer::read() const {
-  std::vector<TimedScope> out;
-  if (labels_.empty()) return out;
-  std::vector<uint64_t> ticks(labels_.size() * 2);
-  SG_VK(vkGetQueryPoolResults(device_, pool_, 0, static_cast<uint32_t>(ticks.size()), ticks.size() * 8, ticks.data(),
-                              8, VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
-  uint64_t first = ticks[0];
-  for (size_t i = 0; i < labels_.size(); ++i) first = std::min(first, ticks[2 * i]);
-  for (size_t i = 0; i < labels_.size(); ++i)
-    out.push_back({labels_[i], static_cast<double>(ticks[2 * i + 1] - ticks[2 * i]) * nsPerTick_ * 1e-6,
-                   static_cast<double>(ticks[2 * i] - first) * nsPerTick_ * 1e-6});
+  std::vector<uint32_t> all(labels_.size());
+  for (uint32_t i = 0; i < all.size(); ++i) all[i] = i;
+  return read(all);
+}
+
+std::vector<TimedScope> GpuTimer::read(std::span<const uint32_t> scopes) const {
+  std::vector<TimedScope> out(labels_.size());
+  for (size_t i = 0; i < labels_.size(); ++i) out[i].label = labels_[i];
+  if (scopes.empty()) return out;
+  std::vector<uint64_t> ticks(labels_.size() * 2, 0);
+  // Consecutive scopes in one call each (a frame's are usually one run).
+  for (size_t i = 0; i < scopes.size();) {
+    size_t j = i + 1;
+    while (j < scopes.size() && scopes[j] == scopes[j - 1] + 1) ++j;
+    const uint32_t first = scopes[i], count = uint32_t(j - i) * 2;
+    // Without WAIT first, per query: the caller has waited for these
+    // scopes' work, and lavapipe's WAIT waits for everything submitted (a
+    // frame's tail included). A query not yet available is then waited for.
+    std::vector<uint64_t> withAvailability(size_t(count) * 2);
+    const VkResult ready = vkGetQueryPoolResults(device_, pool_, first * 2, count, withAvailability.size() * 8,
+                                                 withAvailability.data(), 16,
+                                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);
+    bool available = ready == VK_SUCCESS || ready == VK_NOT_READY;
+    for (uint32_t q = 0; available && q < count; ++q) available = withAvailability[2 * q + 1] != 0;
+    if (available) {
+      for (uint32_t q = 0; q < count; ++q) ticks[first * 2 + q] = withAvailability[2 * q];
+    } else {
+      SG_VK(vkGetQueryPoolResults(device_, pool_, first * 2, count, count * 8, ticks.data() + first * 2, 8,
+                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    }
+    i = j;
+  }
+  uint64_t earliest = ticks[scopes[0] * 2];
+  for (const uint32_t i : scopes) earliest = std::min(earliest, ticks[2 * i]);
+  for (const uint32_t i : scopes) {
+    out[i].gpuMs = static_cast<double>(ticks[2 * i + 1] - ticks[2 * i]) * nsPerTick_ * 1e-6;
+    out[i].startMs = static_cast<double>(ticks[2 * i] - earliest) * nsPerTick_ * 1e-6;
+    out[i].startNs = static_cast<uint64_t>(static_cast<double>(ticks[2 * i]) * nsPerTick_);
+  }
   return out;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Per-label GPU timestamps (one query pair per scope) and a CPU stopwatch.
 #include <chrono>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -13,7 +14,8 @@ class Context;
 struct TimedScope {
   std::string label;
   double gpuMs = 0.0;
-  double startMs = 0.0;  // since the earliest scope of the frame (for traces)
+  double startMs = 0.0;  // since the earliest scope read (for traces)
+  uint64_t startNs = 0;  // the device's own clock, for ordering scopes of several frames
 };
 
 class GpuTimer {
@@ -28,6 +30,10 @@ class GpuTimer {
   void end(VkCommandBuffer cmd, uint32_t scope);
   // Waits for the results of every scope recorded since reset().
   std::vector<TimedScope> read() const;
+  // Only these scopes (their results are awaited; the others are left zero,
+  // e.g. work still running on another queue).
+  std::vector<TimedScope> read(std::span<const uint32_t> scopes) const;
+  uint32_t scopeCount() const { return static_cast<uint32_t>(labels_.size()); }
 
  private:
   VkDevice device_;

@@ -1,6 +1,7 @@
 #include <shadelgraph/graph/compile.hpp>
 
 #include <shadelgraph/graph/cull.hpp>
+#include <shadelgraph/graph/frame_boundary.hpp>
 #include <shadelgraph/graph/order.hpp>
 #include <shadelgraph/graph/plan_resources.hpp>
 #include <shadelgraph/graph/validate.hpp>
@@ -74,6 +75,7 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
   plan.outputWidth = options.outputWidth;
   plan.outputHeight = options.outputHeight;
   orderPasses(deps_, culled_, plan.order);
+  orderTailLast(graph, versions_, deps_, plan.order);
   planAllResources(graph, plan.order, options, usage_, plan.resources, requirements_, transients_,
                    plan.memoryEstimated);
   lendTo(plan.aliases, memory_.aliases, [&] {
@@ -100,6 +102,7 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
     lendTo(plan.waits, schedule_.waits,
            [&] { assignQueues(graph, plan.order, deps_, barriers_.handoffs, schedule_); });
   });
+  planFrameBoundary(graph, versions_, deps_, schedule_.passBatch, plan);
 
   // Accesses: one copy when the declaration holds them in pass order already
   // (passes declared one after the other), else pass by pass.

@@ -8,6 +8,7 @@
 #include <shadelgraph/graph/resource_desc.hpp>
 #include <shadelgraph/graph/sync_types.hpp>
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -47,6 +48,22 @@ struct Batch {
   Range passes;  // into CompiledPlan::order: batches are consecutive runs of it
   Range waits;   // into CompiledPlan::waits
   uint64_t signalValue = 0;  // signalled at the end of the batch; 0 when nobody waits on it
+  // Runs past the frame: none of the frame's results needs it, only later
+  // frames (through persistent resources); the host does not wait for it.
+  bool tail = false;
+};
+
+// The first and last batch using an external (imported, persistent, history)
+// resource on one logical queue, and the stages of that first use: where the
+// frame orders itself after earlier frames' uses of the same memory on other
+// queues (frame_boundary.hpp).
+struct ExternalUse {
+  ResourceId resource;
+  QueueClass queue = QueueClass::Graphics;
+  uint32_t firstBatch = kInvalidIndex;
+  uint32_t lastBatch = kInvalidIndex;
+  PipelineStage firstStages = PipelineStage::None;
+  friend bool operator==(const ExternalUse&, const ExternalUse&) = default;
 };
 
 // Leaves an external resource in its declared final state. Recorded right after
@@ -121,6 +138,10 @@ struct CompiledPlan {
   std::vector<PassId> order;               // kept passes, execution order
   std::vector<Batch> batches;              // submission order
   std::vector<FinalBarrier> finalBarriers;
+  // Per logical queue: the last batch the host waits for (kInvalidIndex: none);
+  // batches after it are the frame's tail.
+  std::array<uint32_t, kQueueClassCount> hostWaitBatch{kInvalidIndex, kInvalidIndex, kInvalidIndex};
+  std::vector<ExternalUse> externalUses;   // by resource, then queue
   std::vector<Heap> heaps;
   uint64_t heapBytes = 0;                  // total of heaps, as placed
   uint64_t heapBytesWithoutAliasing = 0;   // what the heaps would take if nothing aliased

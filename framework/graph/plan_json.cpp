@@ -129,7 +129,8 @@ std::string toJson(const CompiledPlan& plan) {
     batches.push_back({{"queue", toString(batch.queue)},
                        {"passes", names},
                        {"waits", waitsJson(plan.waitsOf(batch))},
-                       {"signalValue", batch.signalValue}});
+                       {"signalValue", batch.signalValue},
+                       {"tail", batch.tail}});
   }
   json finals = json::array();
   for (const FinalBarrier& f : plan.finalBarriers) {

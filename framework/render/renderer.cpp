@@ -39,11 +39,12 @@ Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, const plugin:
       layerTextures_(device, registry),
       gpuScene_(device.context(), device.memory(), scene),
       culling_(device.context(), device.memory(), gpuScene_.draws(), drawSpheres(scene, gpuScene_.draws())),
-      frameUniforms_(device.context(), device.memory(),
-                     {sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryLocation::Upload,
-                      "frame uniforms", "frame"}),
       executor_(device) {
   registry_.check();
+  for (auto& uniforms : frameUniforms_)
+    uniforms = gpu::Buffer(device.context(), device.memory(),
+                           {sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryLocation::Upload,
+                            "frame uniforms", "frame"});
   for (const auto& instance : scene.instances) modes_.push_back(instance.shading);
   for (const auto& draw : gpuScene_.draws())
     if (!registry_.hasMaterial(draw.materialStack))
@@ -98,7 +99,8 @@ scene::Camera Renderer::camera(const RenderSettings& settings) const {
 std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& settings) {
   const scene::Camera cam = camera(settings);
   const FrameUniforms uniforms = makeFrameUniforms(scene_, cam, settings.width, settings.height, drawSpheres_);
-  frameUniforms_.write(&uniforms, sizeof uniforms);
+  gpu::Buffer& uniformBuffer = frameUniforms_[frameNumber_ % 2];
+  uniformBuffer.write(&uniforms, sizeof uniforms);
 
   if (!output_ || output_->desc().width != settings.width || output_->desc().height != settings.height) {
     vkDeviceWaitIdle(device_.context().device());
@@ -112,7 +114,7 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
                           ? std::abs(uniforms.projection[1][1]) * 0.5f * float(settings.height)
                           : 0.0f;
   auto frame = std::make_unique<Frame>(Frame{
-      {gpuScene_, frameUniforms_, gpuScene_.allDraws(), registry_, layerTextures_},
+      {gpuScene_, uniformBuffer, gpuScene_.allDraws(), registry_, layerTextures_},
       {scene_, device_, executor_, modes_, drawSpheres_, frameNumber_++, cam.position(), focal, uniforms.viewProjection,
        settings.width, settings.height, settings.occlusionCulling ? &culling_ : nullptr},
       {}, {}, {}});
@@ -151,6 +153,8 @@ graph::CompiledPlan Renderer::plan(const RenderSettings& settings) {
 
 FrameResult Renderer::render(const RenderSettings& settings) {
   gpu::CpuTimer timer;
+  executor_.setFramesInFlight(settings.framesInFlight);
+  executor_.beginFrame();  // the host-written buffers of this frame's slot are free
   auto frame = declare(settings);
   const graph::CompiledPlan& plan = executor_.compile(frame->graph, {.outputWidth = settings.width, .outputHeight = settings.height,
                                                       .enableAliasing = settings.aliasing});
@@ -159,8 +163,13 @@ FrameResult Renderer::render(const RenderSettings& settings) {
   result.timings = executor_.execute(frame->graph, plan);
   result.timings.frameMs = timer.elapsedMs();
   result.transientBytes = executor_.transientBytes();
-  result.image = gpu::readImage(device_.context(), device_.memory(), *output_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+  if (settings.readback) result.image = gpu::readImage(device_.context(), device_.memory(), *output_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
   return result;
+}
+
+std::vector<gpu::FrameTimings> Renderer::finishFrames() {
+  executor_.finish();
+  return executor_.takeCompletedTails();
 }
 
 }  // namespace sg::render

@@ -27,6 +27,10 @@ struct RenderSettings {
   bool aliasing = true;
   // Skip draws hidden behind others (tested against this frame's depth of the draws visible last frame).
   bool occlusionCulling = true;
+  // Frames recorded while earlier ones run (a frame's tail, e.g. a shade
+  // frame, left running): 1 or 2.
+  uint32_t framesInFlight = 1;
+  bool readback = true;  // read the output image back (FrameResult::image)
 };
 
 struct FrameResult {
@@ -57,6 +61,9 @@ class Renderer {
   // Declares and compiles the frame `render` would run (with real memory requirements).
   graph::CompiledPlan plan(const RenderSettings& settings);
   FrameResult render(const RenderSettings& settings);
+  // Waits for the frames still running (a tail left in flight) and returns
+  // the timings of the tails completed since the last call.
+  std::vector<gpu::FrameTimings> finishFrames();
   const GpuScene& gpuScene() const { return gpuScene_; }
   const DrawCulling& culling() const { return culling_; }
   scene::Camera camera(const RenderSettings& settings) const;
@@ -76,7 +83,7 @@ class Renderer {
   LayerTextures layerTextures_;
   GpuScene gpuScene_;
   DrawCulling culling_;
-  gpu::Buffer frameUniforms_;
+  gpu::Buffer frameUniforms_[2];  // one per frame in flight
   std::optional<gpu::Image> output_;
   gpu::GraphExecutor executor_;
 };

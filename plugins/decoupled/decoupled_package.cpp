@@ -133,6 +133,7 @@ void registerDecoupledPackage(plugin::Registry& registry) {
                       if (!d.hasObjects()) return;
                       d.frame(ctx);
                       d.addCountersReadback(ctx.graph());
+                      d.addShadeFrameTail(ctx.graph(), ctx.registry());
                     }});
   registry.addPass({.name = "decoupled-debug-view",
                     .description = "with --view level|occupancy|sheet: replaces the colour with a view of decoupled shading",

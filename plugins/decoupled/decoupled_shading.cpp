@@ -14,6 +14,7 @@
 #include <shadelgraph/shadel/shadel_gpu_tables.hpp>
 
 #include "layer-shade/layer_shade.hpp"
+#include "shade-frame/shade_frame_work.hpp"
 #include "shade-reuse/shade_reuse.hpp"
 
 namespace sg::plugins {
@@ -54,9 +55,10 @@ void DecoupledShading::createTables(gpu::Device& device) {
                           {sizeof(ShadeCounters), VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryLocation::Readback,
                            "shade counters readback", "readback"});
   std::memset(readback_.mapped(), 0, sizeof(ShadeCounters));
-  params_ = gpu::Buffer(device.context(), device.memory(),
-                        {sizeof(DecoupledParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryLocation::Upload,
-                         "decoupled params", "decoupled tables"});
+  for (auto& params : params_)
+    params = gpu::Buffer(device.context(), device.memory(),
+                         {sizeof(DecoupledParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryLocation::Upload,
+                          "decoupled params", "decoupled tables"});
 }
 
 void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
@@ -147,7 +149,7 @@ void DecoupledShading::uploadTables(gpu::Device& device) {
   ownedEntryCount_ = uint32_t(tables.ownedEntries.size());
   idMapBytes_ = idTexels_.size() * 4;
   // Earlier frames have completed (the executor waits for each), so the old tables are free.
-  objects_ = upload(device, objects, "decoupled objects");
+  for (auto& buffer : objects_) buffer = upload(device, objects, "decoupled objects");
   shadelInstances_ = upload(device, tables.instances, "shadel instances");
   levelRects_ = upload(device, tables.levelRects, "level rects");
   ownedEntries_ = upload(device, tables.ownedEntries, "owned remap entries");
@@ -184,14 +186,15 @@ void DecoupledShading::chooseReuse(bool historyValid) {
   reuseAny_ = false;
   for (auto& slot : slots_) {
     if (!slot.allocated) continue;
-    slot.record.reuse = !shadeFrame_ && historyValid && slot.changedFrame != frames_ && !slot.reshadedWhole ? 1u : 0u;
+    // Overlapping, the raster frame always reuses: its shade frame runs after it.
+    slot.record.reuse = (!shadeFrame_ || overlapping()) && historyValid && slot.changedFrame != frames_ && !slot.reshadedWhole ? 1u : 0u;
     reuseAny_ = reuseAny_ || slot.record.reuse;
   }
   // Every record, rewritten each frame (reuse flags, transforms, materials):
   // the last frame that read the buffer has completed (the executor waits for each).
   std::vector<DecoupledObject> objects;
   for (const auto& slot : slots_) objects.push_back(slot.record);
-  if (!objects.empty()) objects_.write(objects.data(), objects.size() * sizeof(DecoupledObject));
+  if (!objects.empty()) objects_[ring()].write(objects.data(), objects.size() * sizeof(DecoupledObject));
 }
 
 void DecoupledShading::prepare(render::FrameContext& ctx) {
@@ -211,7 +214,10 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
   shadeFrames_ += shadeFrame_ ? 1 : 0;
   if (!space_) createTables(in.device);
   syncObjects(ctx);
-  if (tablesDirty_) uploadTables(in.device);
+  if (tablesDirty_) {
+    in.executor.finish();  // a frame still in flight may read the tables
+    uploadTables(in.device);
+  }
   // The adjuster reads the counters of the frame before, which was rendered
   // with lastFrameBias_.
   if (frames_ > 1 && !settings_.fixedBias) {
@@ -237,14 +243,14 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
   const DecoupledParams params{bias_, settings_.sheetSizeLog2 - 6, storage_.widthChunks, storage_.chunksPerCounter,
                                ownedEntryCount_, objectCount, storage_.capacityChunks(),
                                storage_.counterCount};
-  params_.write(&params, sizeof params);
+  params_[ring()].write(&params, sizeof params);
   graph::RenderGraph& graph = ctx.graph();
   frame_.reset();
   if (!hasObjects()) return;
   frame_.emplace(passes::DecoupledFrame{.view = ctx.view(frameObjects_),
                                         .objectIds = frameObjects_,
                                         .objectDraws = identity_,
-                                        .params = params_, .objects = objects_, .shadelInstances = shadelInstances_,
+                                        .params = params_[ring()], .objects = objects_[ring()], .shadelInstances = shadelInstances_,
                                         .levelRects = levelRects_, .ownedEntries = ownedEntries_, .idMaps = idMapBuffer_,
                                         .ownedEntryCount = ownedEntryCount_, .objectCount = objectCount,
                                         .filter = settings_.filter,
@@ -323,7 +329,25 @@ void DecoupledShading::addCountersReadback(graph::RenderGraph& graph) {
   });
 }
 
-void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, const plugin::Registry& materials) {
+void DecoupledShading::addShadeFrameTail(graph::RenderGraph& graph, const plugin::Registry& materials) {
+  if (!frame_ || !overlapping() || !shadeFrame_) return;
+  passes::DecoupledFrame& frame = *frame_;
+  const passes::DecoupledFrame raster = frame;
+  const bool reuse = reuseAny_;
+  frame.work = graph.createBuffer("shade-frame work", {.size = workBufferBytes(frame.objectCount, storage_.capacityChunks())});
+  frame.args = graph.createBuffer("shade-frame dispatch args", {.size = 12ull * (frame.objectCount + 1)});
+  frame.previousRemap = {};
+  passes::addShadeFrameWork(graph, frame);
+  reuseAny_ = false;
+  addLayerPasses(graph, materials, "shade-frame ");
+  reuseAny_ = reuse;
+  frame.work = raster.work;
+  frame.args = raster.args;
+  frame.previousRemap = raster.previousRemap;
+}
+
+void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, const plugin::Registry& materials,
+                                      const std::string& prefix) {
   passes::DecoupledFrame& frame = *frame_;
   const LayerHistory::Declared& history = declaredHistory_;
   // First what keeps last frame's shading, then the layers shade the rest.
@@ -353,7 +377,7 @@ void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, const plugin::R
       }
       steps.push_back(std::move(step));
     }
-    const std::string name = depth == 0 ? "layer-shade" : "layer-shade #" + std::to_string(depth + 1);
+    const std::string name = prefix + (depth == 0 ? "layer-shade" : "layer-shade #" + std::to_string(depth + 1));
     passes::addLayerShade(graph, frame, name, steps, {history.previousRemap, history.valid});
     for (size_t i = 0; i < steps.size(); ++i)
       (layerPlan_.depths[depth][i].final ? frame.shadedColor : images[steps[i].layer->name]) = steps[i].output;

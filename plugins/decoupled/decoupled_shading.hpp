@@ -48,6 +48,11 @@ struct DecoupledSettings {
   // in the others only chunks without valid shading from the last frame are
   // shaded (the fill), the rest copied. 1: every frame a shade frame.
   uint32_t shadeRate = 1;
+  // Frames in flight (issue 15): with a shade rate above 1 the shade frame
+  // runs after its raster frame's composite, as the frame's tail on async
+  // compute, and later raster frames read it; every raster frame reuses and
+  // fills. The renderer must run 2 frames in flight for it to overlap.
+  bool overlap = false;
   DebugView view = DebugView::Final;
   ShadeSpaceAdjusterOptions adjuster;
 };
@@ -87,6 +92,7 @@ class DecoupledShading {
   void prepare(render::FrameContext& ctx);
   // Does this frame shade objects decoupled / has it allocated objects at all?
   bool shading() const { return !frameObjects_.empty(); }
+  bool overlapping() const { return settings_.overlap && settings_.shadeRate > 1; }
   bool hasObjects() const { return allocatedObjects_ > 0; }
   bool needsSupport() const { return layerPlan_.needsSupport; }
   // This frame's shared state, its resources synchronised with the frame
@@ -95,8 +101,11 @@ class DecoupledShading {
   // Publishes the frame's current versions of these `shadel.*` resources.
   void publish(render::FrameContext& ctx, std::initializer_list<const char*> resources);
   // One layer-shade pass per depth of the frame's layer plan.
-  void addLayerPasses(graph::RenderGraph& graph, const plugin::Registry& materials);
+  void addLayerPasses(graph::RenderGraph& graph, const plugin::Registry& materials, const std::string& prefix = "");
   void addCountersReadback(graph::RenderGraph& graph);
+  // With `overlap`, in a shade frame: its own work list of every stored chunk
+  // and the layer passes over it, after composite (the frame's tail).
+  void addShadeFrameTail(graph::RenderGraph& graph, const plugin::Registry& materials);
   // This frame's composite filter instead of the setting (composite's
   // `filter` parameter): from a prepare step, before any pass declares.
   void setFrameFilter(int filter);
@@ -165,7 +174,11 @@ class DecoupledShading {
   uint64_t idMapBytes_ = 0;
   glm::uvec2 sheetRegionOrigin_{0}, sheetRegionSize_{1};  // allocated part of the sheet, in chunks
   uint64_t remapBytes_ = 0;
-  gpu::Buffer params_, objects_, shadelInstances_, levelRects_, ownedEntries_, idMapBuffer_, readback_;
+  // Written by the host every frame: one per frame in flight (a shade frame
+  // left running reads its own while the next frame is prepared).
+  gpu::Buffer params_[2], objects_[2];
+  uint32_t ring() const { return uint32_t(frames_ % 2); }
+  gpu::Buffer shadelInstances_, levelRects_, ownedEntries_, idMapBuffer_, readback_;
 };
 
 }  // namespace sg::plugins

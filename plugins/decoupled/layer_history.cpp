@@ -29,10 +29,12 @@ PersistentLayerHandles LayerHistory::declareImagePair(graph::RenderGraph& graph,
   auto& pair = images_[name];
   formatBytes_[name] = graph::bytesPerTexel(format);
   if (!pair[0] || pair[0].desc().width != width || pair[0].desc().height != height) {
+    executor.finish();  // a frame in flight may still use the old pair
     for (uint32_t i = 0; i < 2; ++i)
       pair[i] = gpu::Image(device.context(), device.memory(),
                            {.width = width, .height = height, .format = gpu::toVk(format),
                             .usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                            .concurrent = true,  // graphics (composite) and async compute (layers) both use it
                             .name = name + (i ? " (B)" : " (A)"), .category = "history"});
     // The graph expects them resting in General.
     device.context().submitAndWait([&](VkCommandBuffer cmd) {

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <string>
 
@@ -513,6 +514,7 @@ const BadCommand kBadCommands[] = {
     {"ShadeRateZero", "render --shade-rate 0", "--shade-rate 0"},
     {"ShadeRateNegative", "render --shade-rate -2", "--shade-rate -2"},
     {"ShadeRateNotANumber", "render --shade-rate fast", "--shade-rate"},
+    {"FramesInFlightThree", "render --frames-in-flight 3", "--frames-in-flight 3"},
     {"BenchShadeRatesZero", "bench --shade-rates 1,0", "--shade-rates 0"},
     {"BenchPathFramesOne", "bench --shade-rates 2 --path-frames 1", "--path-frames 1"},
     {"BenchFlickerFramesZero", "bench --flicker-frames 0", "--flicker-frames 0"},
@@ -571,10 +573,65 @@ TEST(Cli, ShadeRateStatsCountShadeFramesAndReuse) {
   const auto json = nlohmann::json::parse(in);
   EXPECT_EQ(json["raster_frames"], 5);
   EXPECT_EQ(json["shade_frames"], 2);
+  // The GPU time of every raster frame, in order.
+  ASSERT_TRUE(json["frames_ms"].is_array());
+  ASSERT_EQ(json["frames_ms"].size(), 5u);
+  for (const auto& ms : json["frames_ms"]) EXPECT_GT(ms.get<double>(), 0.0);
+  EXPECT_EQ(json["frames_ms"].back(), json["gpu_ms"]) << "the last frame is the one reported";
   EXPECT_EQ(json["shadels_filled"], 0);
   EXPECT_GT(json["shadels_reused"].get<double>(), 0.0);
   EXPECT_EQ(json["shadels_reused_last_frame"], json["shadels_allocated"]) << "frame 4 reuses every stored shadel";
   EXPECT_EQ(json["composite_misses"], 0);
+}
+
+// A trace of several frames holds each frame's passes on its queue's GPU
+// track, on one clock (later frames later), and each frame's host span.
+TEST(Cli, TraceOfSeveralFramesPutsThemOnOneClock) {
+  const auto trace = tempDir() / "frames-trace.json";
+  std::filesystem::remove(trace);
+  auto r = run("render --mode decoupled --size 96x64 --frames 3 --storage 16 -o " + (tempDir() / "frames-trace.png").string() +
+               " --trace " + trace.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(trace);
+  const auto json = nlohmann::json::parse(in);
+  std::map<int, std::string> tracks;
+  for (const auto& e : json["traceEvents"])
+    if (e["ph"] == "M") tracks[e["tid"].get<int>()] = e["args"]["name"];
+  std::vector<double> composites, frameSpans;
+  for (const auto& e : json["traceEvents"]) {
+    if (e["ph"] != "X") continue;
+    const std::string track = tracks[e["tid"].get<int>()];
+    if (track == "GPU Graphics" && e["name"] == "composite") composites.push_back(e["ts"].get<double>());
+    if (track == "CPU frames") frameSpans.push_back(e["ts"].get<double>());
+  }
+  ASSERT_EQ(composites.size(), 3u) << "one composite per frame";
+  EXPECT_LT(composites[0], composites[1]);
+  EXPECT_LT(composites[1], composites[2]);
+  EXPECT_EQ(frameSpans.size(), 3u);
+}
+
+// Two frames in flight at shade rate 2: the shade frames run as their frames'
+// tails on the async-compute track (timed once done), nothing is missed.
+TEST(Cli, FramesInFlightTraceShowsShadeFramesOnAsyncCompute) {
+  const auto trace = tempDir() / "in-flight-trace.json";
+  const auto stats = tempDir() / "in-flight-stats.json";
+  auto r = run("render --mode decoupled --size 96x64 --frames 5 --shade-rate 2 --frames-in-flight 2 --storage 16 -o " +
+               (tempDir() / "in-flight.png").string() + " --trace " + trace.string() + " --stats " + stats.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(trace);
+  const auto json = nlohmann::json::parse(in);
+  std::map<int, std::string> tracks;
+  for (const auto& e : json["traceEvents"])
+    if (e["ph"] == "M") tracks[e["tid"].get<int>()] = e["args"]["name"];
+  int shadeFrames = 0;
+  for (const auto& e : json["traceEvents"])
+    if (e["ph"] == "X" && tracks[e["tid"].get<int>()] == "GPU AsyncCompute" && e["name"] == "shade-frame layer-shade")
+      ++shadeFrames;
+  EXPECT_EQ(shadeFrames, 3) << "frames 0, 2 and 4";
+  std::ifstream statsIn(stats);
+  const auto s = nlohmann::json::parse(statsIn);
+  EXPECT_EQ(s["composite_misses"], 0);
+  EXPECT_EQ(s["frames_ms"].size(), 5u);
 }
 
 // A negative bias is a fixed bias too (finer shadels), not the adjuster.

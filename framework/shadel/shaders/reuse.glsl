@@ -11,10 +11,14 @@
 layout(set = 0, binding = kBindPreviousRemap, std430) readonly buffer PreviousRemap { SgRemapEntry previousRemap[]; };
 
 uint64_t sgReusedChunks(SgOwnedEntry owned, uint64_t occupancy) {
+#ifdef SG_SHADE_ALL
+  return uint64_t(0);  // the shade frame's own list (frames in flight): every chunk is shaded
+#else
   if (objects[owned.instanceId].reuse == 0u) return uint64_t(0);
   SgRemapEntry previous = previousRemap[owned.entryIndex];
   if (previous.storageBase == SG_NO_STORAGE || previous.objectInstanceId != owned.instanceId) return uint64_t(0);
   return occupancy & previous.occupancy;
+#endif
 }
 
 #endif

@@ -1,0 +1,88 @@
+#include <shadelgraph/graph/frame_boundary.hpp>
+
+#include <algorithm>
+#include <array>
+
+namespace sg::graph {
+namespace {
+
+bool isExternal(ResourceKind kind) { return !isTransient(kind); }
+
+}  // namespace
+
+std::vector<bool> neededByResults(const RenderGraph& graph, const VersionTable& versions,
+                                  const DependencyGraph& deps, std::span<const PassId> order) {
+  const GraphDeclaration& declared = graph.declaration();
+  // Roots, then (backwards over the order, as dependencies point forwards)
+  // every pass a needed pass depends on.
+  std::vector<bool> needed(graph.passCount(), false);
+  for (const ResourceHandle output : declared.outputs) {
+    const PassId producer = versions.producerOf(output.id, output.version);
+    if (producer.valid()) needed[producer.index] = true;
+  }
+  for (const PassId p : order) {
+    if (graph.pass(p).sideEffect) needed[p.index] = true;
+    for (const ResourceAccess& a : graph.accessesOf(p))
+      if (declared.traits[a.resource.index].kind == ResourceKind::Imported) needed[p.index] = true;
+  }
+  for (auto it = order.rbegin(); it != order.rend(); ++it) {
+    if (needed[it->index]) continue;
+    for (const Dependency& e : deps.successors(*it))
+      if (needed[e.to.index]) {
+        needed[it->index] = true;
+        break;
+      }
+  }
+  return needed;
+}
+
+void orderTailLast(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,
+                   std::vector<PassId>& order) {
+  const std::vector<bool> needed = neededByResults(graph, versions, deps, order);
+  bool seenTail = false, needsMove = false;
+  for (const PassId p : order) {
+    seenTail = seenTail || !needed[p.index];
+    needsMove = needsMove || (seenTail && needed[p.index]);
+  }
+  // Needed passes never depend on the others: both runs keep a valid order.
+  if (needsMove) std::stable_partition(order.begin(), order.end(), [&](PassId p) { return bool(needed[p.index]); });
+}
+
+void planFrameBoundary(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,
+                       std::span<const uint32_t> passBatch, CompiledPlan& plan) {
+  const GraphDeclaration& declared = graph.declaration();
+  const std::vector<bool> needed = neededByResults(graph, versions, deps, plan.order);
+
+  plan.hostWaitBatch.fill(kInvalidIndex);
+  for (const PassId p : plan.order)
+    if (needed[p.index]) plan.hostWaitBatch[queueIndex(graph.pass(p).queue)] = passBatch[p.index];
+  for (uint32_t b = 0; b < plan.batches.size(); ++b) {
+    Batch& batch = plan.batches[b];
+    const uint32_t last = plan.hostWaitBatch[queueIndex(batch.queue)];
+    batch.tail = last == kInvalidIndex || b > last;
+  }
+
+  // External resources: first and last batch per queue, in resource order.
+  plan.externalUses.clear();
+  std::vector<std::array<ExternalUse, kQueueClassCount>> uses;
+  for (const PassId p : plan.order) {
+    const QueueClass queue = graph.pass(p).queue;
+    const uint32_t batch = passBatch[p.index];
+    for (const ResourceAccess& a : graph.accessesOf(p)) {
+      if (!isExternal(declared.traits[a.resource.index].kind)) continue;
+      if (uses.empty()) uses.resize(graph.resourceCount());
+      ExternalUse& use = uses[a.resource.index][queueIndex(queue)];
+      if (use.firstBatch == kInvalidIndex) {
+        use = {a.resource, queue, batch, batch, a.stages};
+      } else if (use.firstBatch == batch) {
+        use.firstStages |= a.stages;
+      }
+      use.lastBatch = batch;
+    }
+  }
+  for (uint32_t r = 0; r < uses.size(); ++r)
+    for (const ExternalUse& use : uses[r])
+      if (use.firstBatch != kInvalidIndex) plan.externalUses.push_back(use);
+}
+
+}  // namespace sg::graph
