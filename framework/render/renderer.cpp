@@ -151,6 +151,10 @@ graph::CompiledPlan Renderer::plan(const RenderSettings& settings) {
 
 FrameResult Renderer::render(const RenderSettings& settings) {
   gpu::CpuTimer timer;
+  if (settings.time)
+    for (uint32_t i = 0; i < scene_.instances.size(); ++i)
+      if (scene_.instances[i].motion.moves())
+        setObjectTransform(i, scene::movedWorld(scene_.instances[i].motion, scene_.instances[i].world, *settings.time));
   auto frame = declare(settings);
   const graph::CompiledPlan& plan = executor_.compile(frame->graph, {.outputWidth = settings.width, .outputHeight = settings.height,
                                                       .enableAliasing = settings.aliasing});

@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include <shadelgraph/scene/object_motion.hpp>
+
 namespace sg::scene {
 
 // How an object is shaded. Auto lets the renderer decide (decoupled when the
@@ -22,6 +24,7 @@ struct Instance {
   std::string name;       // node name (or "node N" when unnamed)
   ShadingMode shading = ShadingMode::Auto;
   std::string material;   // its material (layer stack) by registered name; empty: the default, "gltf-pbr"
+  ObjectMotion motion;    // how it moves from `world` (its pose at time 0); none by default
 };
 
 }  // namespace sg::scene
