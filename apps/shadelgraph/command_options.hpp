@@ -42,9 +42,11 @@ struct RenderArgs {
   std::optional<double> bias;  // empty: the adjuster decides
   double storage = 2.0;
   int shadeRate = 1;  // a shade frame every this many raster frames (docs/decoupled-shading.md)
+  std::optional<double> shadeBudget;  // budget mode: layer-shade milliseconds a frame (instead of --shade-rate)
   std::string stats;
   std::string trace;
   int frames = 2;
+  bool still = false;  // moving objects stay at frame --frame's pose in every one of --frames
   std::string soakReport;
   int soakEvery = 100;
   bool noAliasing = false;
@@ -80,6 +82,9 @@ struct BenchArgs {
   std::vector<int> shadeRates;  // non-empty: the shade-rate sweep instead (bench_shade_rate.cpp)
   int pathFrames = 24;          // the shade-rate sweep: raster frames along its moving camera path
   std::string moveObject;       // the shade-rate sweep: an object (by name) that moves too
+  std::vector<double> shadeBudgets;  // the shade-rate sweep: budget mode configurations
+  std::string rateMaterial;     // the shade-rate sweep: every object's material
+  bool unkeptLayers = false;    // the shade-rate sweep: each rate also without keeping view-independent layers
   bool sceneRatios = false;  // each scene against the first instead (bench_scenes.cpp)
 };
 // bench's options, and its subcommand "graph" (returned) with graphArgs'.

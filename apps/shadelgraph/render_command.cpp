@@ -83,6 +83,14 @@ void writeStats(const std::string& path, const AppSession& session, const render
                        {"shade_frames", d.shadeFrames},
                        {"shadels_filled", d.chunksFilled * 64},
                        {"shadels_reused", d.chunksReused * 64},
+                       // The last frame: age in raster frames of the oldest shading composite
+                       // read (0: all shaded this frame); budget mode: shadels it left stale
+                       // (reused) and those it reshaded for their age, and the age limit.
+                       {"shadels_stale_max_age", d.counters.staleMaxAge},
+                       {"shadels_left_stale", uint64_t(d.counters.chunksReused) * 64},
+                       {"shadels_refreshed", uint64_t(d.counters.chunksRefreshed) * 64},
+                       {"stale_age_limit", d.staleAge.limit == plugins::kReuseAnyAge ? nlohmann::json(nullptr)
+                                                                                     : nlohmann::json(d.staleAge.limit)},
                        {"overflow_chunks", d.counters.overflowChunks},
                        {"composite_misses", d.counters.compositeMisses},
                        {"global_bias", d.bias},
@@ -123,7 +131,7 @@ void runRender(const RenderArgs& args) {
   settings.aliasing = !args.noAliasing;
 
   plugins::DecoupledSettings decoupled{.storageFactor = args.storage, .filter = args.filter,
-                                      .shadeRate = uint32_t(args.shadeRate)};
+                                      .shadeRate = uint32_t(args.shadeRate), .shadeBudgetMs = args.shadeBudget};
   const std::map<std::string, plugins::DebugView> views{{"final", plugins::DebugView::Final},
                                                         {"level", plugins::DebugView::Level},
                                                         {"occupancy", plugins::DebugView::Occupancy},
@@ -140,8 +148,13 @@ void runRender(const RenderArgs& args) {
   if (!args.soakReport.empty()) soak.emplace(args.soakReport, uint32_t(args.soakEvery), uint32_t(args.frames));
   // The first frame pays for pipeline creation; report the last one.
   render::FrameResult frame;
+  // The frames end at frame F (--frame, else 0): the written image is always
+  // that frame's pose of the moving objects, whatever --frames is.
+  const int lastFrame = args.frame.value_or(0);
   for (int i = 0; i < args.frames; ++i) {
+    settings.time = float(args.still ? lastFrame : lastFrame - (args.frames - 1 - i)) / 30.0f;
     frame = session.renderer->render(settings);
+    session.decoupled->observeTimings(frame.timings);
     if (soak) soak->add(uint32_t(i), frame.timings);
   }
   image::writePng(args.output, frame.image.width, frame.image.height, frame.image.rgba8.data());
@@ -157,6 +170,11 @@ void runRender(const RenderArgs& args) {
                 double(d.bias), d.counters.chunksMarked, d.counters.chunksAllocated, d.capacityChunks,
                 d.counters.overflowChunks, d.counters.compositeMisses,
                 d.counters.coveredPixels ? 64.0 * d.counters.chunksAllocated / d.counters.coveredPixels : 0.0);
+  if (d.objects && args.shadeBudget)
+    std::printf("shade budget %.2f ms (%.4f ms a chunk): last frame %u chunks shaded (%u for their age), %u left "
+                "stale, oldest %u frames\n",
+                *args.shadeBudget, d.msPerChunk, d.counters.chunksShaded, d.counters.chunksRefreshed,
+                d.counters.chunksReused, d.counters.staleMaxAge);
   if (d.objects && args.shadeRate > 1)
     std::printf("shade rate %d: %llu shade frames of %llu; last frame %s, %u chunks shaded, %u reused; over the run "
                 "%llu chunks filled, %llu reused\n",
