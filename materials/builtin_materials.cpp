@@ -2,6 +2,7 @@
 
 namespace sg::materials {
 
+using plugin::LayerDependence;
 using plugin::LayerPaths;
 using plugin::MaterialLayer;
 using plugin::MaterialStack;
@@ -14,8 +15,10 @@ void registerBuiltinMaterials(plugin::Registry& registry) {
 
   // Height -> normal: a neighbourhood read in shadel space, screen derivatives forward.
   const std::vector<std::pair<std::string, std::string>> bumps{{"BUMP_FREQUENCY", "16.0"}, {"BUMP_HEIGHT", "0.04"}};
+  // The height is a function of the texture coordinate alone: kept across shade frames, even while
+  // its object moves (docs/authoring-material-layers.md, "Layer rates").
   registry.addLayer({.name = "height", .source = "materials/height-normal/height.glsl", .function = "bumpHeight",
-                     .format = graph::Format::R16F, .parameters = bumps});
+                     .format = graph::Format::R16F, .dependsOn = LayerDependence::Surface, .parameters = bumps});
   registry.addLayer({.name = "normal-from-height", .source = "materials/height-normal/normal_from_height.glsl",
                      .function = "normalFromHeight", .reads = {{"height", 1}}, .paths = LayerPaths::DecoupledOnly});
   registry.addLayer({.name = "normal-from-height-screen",
@@ -42,6 +45,15 @@ void registerBuiltinMaterials(plugin::Registry& registry) {
   registry.addLayer({.name = "marble-shade", .source = "materials/marble/marble_shade.glsl",
                      .function = "shadeMarble", .reads = {{"marble", 0}}});
   registry.addMaterial({.name = "marble", .layers = {"marble", "marble-shade"}});
+
+  // glTF PBR split at the view: the diffuse part (lights and environment, no
+  // camera) is kept across shade frames while its object stays put; the
+  // specular part on top follows the shade frame.
+  registry.addLayer({.name = "diffuse-light", .source = "materials/split-pbr/diffuse_light.glsl",
+                     .function = "diffuseLight", .dependsOn = LayerDependence::World});
+  registry.addLayer({.name = "specular-light", .source = "materials/split-pbr/specular_light.glsl",
+                     .function = "specularLight", .reads = {{"diffuse-light", 0}}});
+  registry.addMaterial({.name = "split-pbr", .layers = {"diffuse-light", "specular-light"}});
 
   // Debug layers, each a material of its own.
   for (const auto& [name, source, function] :

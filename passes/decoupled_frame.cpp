@@ -42,6 +42,11 @@ void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const Decoup
       case kBindRemap: buffer(ctx.buffer(f.remap).handle()); break;
       case kBindPreviousRemap: buffer(ctx.buffer(f.previousRemap.valid() ? f.previousRemap : f.remap).handle()); break;
       case kBindOwnedEntries: buffer(f.ownedEntries.handle()); break;
+      // Without stamps something must be bound; the shaders do not touch it (params.stampsBound 0).
+      case kBindShadeStamps: buffer(ctx.buffer(f.stamps.valid() ? f.stamps : f.work).handle()); break;
+      case kBindPreviousStamps:
+        buffer(ctx.buffer(f.previousStamps.valid() ? f.previousStamps : f.work).handle());
+        break;
       case kBindCounters: buffer(ctx.buffer(f.counters).handle()); break;
       case kBindWork: buffer(ctx.buffer(f.work).handle()); break;
       case kBindArgs: buffer(ctx.buffer(f.args).handle()); break;

@@ -50,6 +50,10 @@ struct DecoupledFrame {
   // Invalid handles otherwise (kBindPreviousRemap then binds `remap`: no
   // object may reuse, so it is not read).
   graph::ResourceHandle previousRemap, previousShaded;
+  // With shading kept between frames: when each stored chunk's shading was
+  // computed (u32 raster frame per physical chunk), this frame's and last
+  // frame's; invalid otherwise (params.stampsBound 0: not read).
+  graph::ResourceHandle stamps, previousStamps;
 };
 
 // The define shadel-mark and composite are both compiled with: the filter

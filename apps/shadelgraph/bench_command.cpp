@@ -291,7 +291,9 @@ void runBench(const BenchArgs& args) {
   if (!args.shadeRates.empty()) {
     runShadeRateBench(context, device,
                       {.rates = args.shadeRates, .scenes = args.scenes, .sizes = args.sizes,
-                       .pathFrames = args.pathFrames, .movingObject = args.moveObject},
+                       .pathFrames = args.pathFrames, .movingObject = args.moveObject,
+                       .budgets = args.shadeBudgets, .material = args.rateMaterial,
+                       .unkeptLayers = args.unkeptLayers},
                       out);
     setExitCode(context.validationLog().count() ? 1 : 0);
     return;

@@ -54,6 +54,8 @@ struct RateConfig {
   std::string name;
   bool decoupled = false;
   uint32_t rate = 1;
+  std::optional<double> budgetMs;
+  bool keepLayers = true;
 };
 
 struct RateSession {
@@ -63,8 +65,8 @@ struct RateSession {
   std::vector<double> gpuMs, shadeFrameMs, fillFrameMs, psnrVsRate1;  // psnr: fill frames only
   std::map<std::string, std::vector<double>> shadePassMs, fillPassMs;  // forward's frames count as shade frames
   std::vector<bool> fillFrames;
-  uint32_t maxMisses = 0;
-  uint64_t chunksShaded = 0, chunksReused = 0;
+  uint32_t maxMisses = 0, maxStaleAge = 0;
+  uint64_t chunksShaded = 0, chunksReused = 0, chunksRefreshed = 0;
 };
 
 nlohmann::json runScene(gpu::Device& device, const ShadeRateBenchArgs& args, const std::string& scenePath,
@@ -72,18 +74,32 @@ nlohmann::json runScene(gpu::Device& device, const ShadeRateBenchArgs& args, con
   const auto loaded = loadSceneArgument(scenePath);
   const std::string sceneName = scenePath.empty() ? "default" : std::filesystem::path(scenePath).stem().string();
   std::vector<RateConfig> configs{{"forward", false, 1}};
-  for (const int rate : args.rates) configs.push_back({"decoupled rate " + std::to_string(rate), true, uint32_t(rate)});
+  for (const int rate : args.rates) {
+    configs.push_back({"decoupled rate " + std::to_string(rate), true, uint32_t(rate)});
+    if (args.unkeptLayers)
+      configs.push_back({"decoupled rate " + std::to_string(rate) + " unkept", true, uint32_t(rate), {}, false});
+  }
+  for (const double ms : args.budgets) {
+    char name[64];
+    std::snprintf(name, sizeof name, "decoupled budget %g ms", ms);
+    configs.push_back({name, true, 1, ms});
+  }
   std::vector<RateSession> sessions(configs.size());
   int rate1 = -1;
   for (size_t c = 0; c < configs.size(); ++c) {
     auto& s = sessions[c];
     s.scene = loaded.scene;
+    if (!args.material.empty())
+      for (auto& instance : s.scene.instances) instance.material = args.material;
     const auto mode = configs[c].decoupled ? scene::ShadingMode::Decoupled : scene::ShadingMode::Forward;
     auto made = plugins::makeDecoupledRenderer(device, s.scene, plugins::builtinRegistry(), mode,
-                                               plugins::DecoupledSettings{.shadeRate = configs[c].rate});
+                                               plugins::DecoupledSettings{.shadeRate = configs[c].rate,
+                                                                          .shadeBudgetMs = configs[c].budgetMs,
+                                                                          .keepViewIndependentLayers =
+                                                                              configs[c].keepLayers});
     s.decoupled = std::move(made.shading);
     s.renderer = std::move(made.renderer);
-    if (configs[c].decoupled && configs[c].rate == 1) rate1 = int(c);
+    if (configs[c].decoupled && configs[c].rate == 1 && !configs[c].budgetMs && configs[c].keepLayers) rate1 = int(c);
   }
   std::optional<uint32_t> moving;
   if (!args.movingObject.empty()) {
@@ -98,7 +114,10 @@ nlohmann::json runScene(gpu::Device& device, const ShadeRateBenchArgs& args, con
     for (size_t c = 0; c < configs.size(); ++c) {
       auto& s = sessions[c];
       if (moving) s.renderer->setObjectTransform(*moving, movedWorld(loaded.scene.instances[*moving].world, std::max(f, 0)));
-      auto frame = s.renderer->render({.width = width, .height = height, .cameraOverride = camera});
+      // The scene's moving objects (the default scene's gold sphere) move 1/30 s a frame.
+      auto frame = s.renderer->render(
+          {.width = width, .height = height, .cameraOverride = camera, .time = float(std::max(f, 0)) / 30.0f});
+      s.decoupled->observeTimings(frame.timings);
       if (f < 0) continue;
       const auto stats = s.decoupled->stats();
       s.gpuMs.push_back(frame.timings.gpuMs);
@@ -109,6 +128,8 @@ nlohmann::json runScene(gpu::Device& device, const ShadeRateBenchArgs& args, con
       s.maxMisses = std::max(s.maxMisses, stats.counters.compositeMisses);
       s.chunksShaded += stats.counters.chunksShaded;
       s.chunksReused += stats.counters.chunksReused;
+      s.chunksRefreshed += stats.counters.chunksRefreshed;
+      s.maxStaleAge = std::max(s.maxStaleAge, stats.counters.staleMaxAge);
       images[c] = std::move(frame.image);
     }
     if (f < 0 || rate1 < 0) continue;
@@ -145,11 +166,15 @@ nlohmann::json runScene(gpu::Device& device, const ShadeRateBenchArgs& args, con
                        {"composite_misses_max", s.maxMisses},
                        {"chunks_shaded_per_frame", double(s.chunksShaded) / double(args.pathFrames)},
                        {"chunks_reused_per_frame", double(s.chunksReused) / double(args.pathFrames)},
+                       {"chunks_refreshed_per_frame", double(s.chunksRefreshed) / double(args.pathFrames)},
+                       {"stale_max_age_max", s.maxStaleAge},
+                       {"budget_ms", configs[c].budgetMs ? nlohmann::json(*configs[c].budgetMs) : nlohmann::json(nullptr)},
+                       {"keep_view_independent_layers", configs[c].keepLayers},
                        {"psnr_vs_rate1_median", s.psnrVsRate1.empty() ? nlohmann::json(nullptr)
                                                                        : nlohmann::json(median(s.psnrVsRate1))}});
   }
   return {{"scene", sceneName}, {"width", width}, {"height", height}, {"path_frames", args.pathFrames},
-          {"moving_object", args.movingObject},
+          {"moving_object", args.movingObject}, {"material", args.material},
           {"degrees_per_frame", kDegreesPerFrame}, {"warmup_frames", kWarmupFrames}, {"configs", results}};
 }
 
@@ -163,11 +188,11 @@ void runShadeRateBench(gpu::Context& context, gpu::Device& device, const ShadeRa
   });
   const nlohmann::json results{{"machine", machineJson(context)}, {"runs", runs}};
   writeTextFile(out / "shade-rate.json", "results", results.dump(2) + "\n");
-  std::printf("%-14s %-9s %-18s %8s %6s %8s %6s %8s %8s %7s %7s %7s %6s\n", "scene", "size", "config", "median",
-              "÷fwd", "mean", "÷fwd", "shade ms", "fill ms", "shaded", "reused", "PSNR r1", "misses");
+  std::printf("%-14s %-9s %-26s %8s %6s %8s %6s %8s %8s %7s %7s %7s %6s %4s\n", "scene", "size", "config", "median",
+              "÷fwd", "mean", "÷fwd", "shade ms", "fill ms", "shaded", "reused", "PSNR r1", "misses", "age");
   for (const auto& run : runs)
     for (const auto& c : run["configs"])
-      std::printf("%-14s %4dx%-4d %-18s %8.2f %6.3f %8.2f %6.3f %8.2f %8.2f %7.0f %7.0f %7.2f %6u\n",
+      std::printf("%-14s %4dx%-4d %-26s %8.2f %6.3f %8.2f %6.3f %8.2f %8.2f %7.0f %7.0f %7.2f %6u %4u\n",
                   run["scene"].get<std::string>().c_str(), run["width"].get<int>(), run["height"].get<int>(),
                   c["config"].get<std::string>().c_str(), c["frame_ms_median"].get<double>(),
                   c["ratio_to_forward"].get<double>(), c["frame_ms_mean"].get<double>(),
@@ -175,7 +200,7 @@ void runShadeRateBench(gpu::Context& context, gpu::Device& device, const ShadeRa
                   c["fill_frame_ms_median"].get<double>(), c["chunks_shaded_per_frame"].get<double>(),
                   c["chunks_reused_per_frame"].get<double>(),
                   c["psnr_vs_rate1_median"].is_null() ? 0.0 : c["psnr_vs_rate1_median"].get<double>(),
-                  c["composite_misses_max"].get<uint32_t>());
+                  c["composite_misses_max"].get<uint32_t>(), c["stale_max_age_max"].get<uint32_t>());
   std::printf("wrote %s/shade-rate.json\n", out.c_str());
 }
 

@@ -21,6 +21,9 @@ struct ShadeRateBenchArgs {
   std::vector<std::string> sizes;
   int pathFrames = 24;
   std::string movingObject;  // non-empty: this object (by name) also moves, on a small circle
+  std::vector<double> budgets;  // budget mode configurations (--shade-budget MS each)
+  std::string material;         // non-empty: every object's material
+  bool unkeptLayers = false;    // each rate also with view-independent layers computed like the others
 };
 
 // Writes shade-rate.json into `out` and prints a table.

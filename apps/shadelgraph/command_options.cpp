@@ -83,14 +83,22 @@ void addRenderOptions(CLI::App& command, RenderArgs& args) {
                      "1 or 2; 2 with --shade-rate above 1: the shade frame runs on async compute after its raster "
                      "frame's composite, as the next raster frame is recorded, and later frames read it")
       ->capture_default_str();
+  auto* budget = command.add_option_function<double>(
+      "--shade-budget", [&args](const double& ms) { args.shadeBudget = ms; },
+      "budget mode: no shade frames; each frame fills what is missing, then reshades the stalest chunks this many "
+      "milliseconds of layer shading afford, 0.01 to 10000 (docs/decoupled-shading.md)");
+  budget->excludes("--shade-rate");
   command.add_option("--stats", args.stats, "write frame statistics as JSON");
   command.add_option("--trace", args.trace, "write per-pass timings as a Chrome trace (Perfetto)");
-  command.add_option("--frames", args.frames, "frames to render; the last is reported")->capture_default_str();
-  command.add_option("--time", args.time, "seconds into the scene's glTF animations (clamped to each one's keys)")
+  command.add_option("--frames", args.frames,
+                     "frames to render, ending at --frame (default 0) and --time: moving objects advance 1/30 s a "
+                     "frame and glTF animations 1/--fps s, the camera stays; the last is reported")
       ->capture_default_str();
-  command.add_option_function<double>(
-      "--fps", [&args](const double& fps) { args.fps = fps; },
-      "play the animations: frame i at --time + i / FPS, 0.001 to 1000 (default: every frame at --time)");
+  command.add_flag("--still", args.still, "moving objects and animations stay at the last frame's pose in all --frames");
+  command.add_option("--time", args.time,
+                     "seconds into the scene's glTF animations at the last frame (clamped to each one's keys)")
+      ->capture_default_str();
+  command.add_option("--fps", args.fps, "glTF animation frames per second, 0.001 to 1000")->capture_default_str();
   command.add_option("--animation", args.animation, "which glTF animations play: all, none, an index or a name")
       ->capture_default_str();
   command.add_option("--soak-report", args.soakReport,
@@ -112,10 +120,11 @@ void checkRenderArgs(const RenderArgs& args) {
   requireInRange("--path", args.path, 0, kIntMax);
   requireInRange("--frames", args.frames, 1, kMaxFrames);
   requireFiniteInRange("--time", args.time, -kMaxSeconds, kMaxSeconds);
-  if (args.fps) requireFiniteInRange("--fps", *args.fps, 0.001, 1000.0);
+  requireFiniteInRange("--fps", args.fps, 0.001, 1000.0);
   requireInRange("--soak-every", args.soakEvery, 1, kIntMax);
   requireInRange("--shade-rate", args.shadeRate, 1, kMaxShadeRate);
   requireInRange("--frames-in-flight", args.framesInFlight, 1, 2);
+  if (args.shadeBudget) requireFiniteInRange("--shade-budget", *args.shadeBudget, 0.01, 10000.0);
   requireFiniteInRange("--storage", args.storage, kMinStorage, kMaxStorage);
   if (args.bias) requireFiniteInRange("--bias", *args.bias, -kMaxAbsBias, kMaxAbsBias);
 }
@@ -168,6 +177,12 @@ CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& gr
   command.add_option("--move-object", args.moveObject,
                      "--shade-rates: this object (by name, e.g. 'gold sphere') also moves, on a circle of 0.25 units "
                      "every 96 frames (it is reshaded every frame)");
+  command.add_option("--shade-budgets", args.shadeBudgets,
+                     "--shade-rates: also budget mode with each of these layer-shade budgets in ms (comma-separated)")
+      ->delimiter(',');
+  command.add_option("--rate-material", args.rateMaterial, "--shade-rates: every object's material, e.g. split-pbr");
+  command.add_flag("--unkept-layers", args.unkeptLayers,
+                   "--shade-rates: each rate also with view-independent layers computed whenever their chunk is");
   auto* graph = command.add_subcommand("graph",
                                        "Instead: declare + compile time of synthetic render graphs by size (no device); "
                                        "writes graph.json and graph.csv into --out");
@@ -185,6 +200,7 @@ void checkBenchArgs(const BenchArgs& args) {
   requireInRange("--flicker-frames", args.flickerFrames, 2, 10000);  // flicker is the change between frames
   requireInRange("--reference-scale", args.referenceScale, 1, 8);
   for (const int rate : args.shadeRates) requireInRange("--shade-rates", rate, 1, kMaxShadeRate);
+  for (const double ms : args.shadeBudgets) requireFiniteInRange("--shade-budgets", ms, 0.01, 10000.0);
   requireInRange("--path-frames", args.pathFrames, 2, 100000);
   if (args.sizes.empty()) throw std::invalid_argument("--sizes: expected at least one WIDTHxHEIGHT");
   if (args.sceneRatios && args.scenes.size() < 2)

@@ -43,11 +43,13 @@ struct RenderArgs {
   double storage = 2.0;
   int shadeRate = 1;  // a shade frame every this many raster frames (docs/decoupled-shading.md)
   int framesInFlight = 1;  // 2: the shade frame runs past its raster frame (docs/decoupled-shading.md)
+  std::optional<double> shadeBudget;  // budget mode: layer-shade milliseconds a frame (instead of --shade-rate)
   std::string stats;
   std::string trace;
   int frames = 2;
-  double time = 0.0;           // seconds into the scene's glTF animations
-  std::optional<double> fps;   // given: frame i is at time + i / fps (the animations play); else every frame at time
+  bool still = false;  // moving objects and animations stay at the last frame's pose in every one of --frames
+  double time = 0.0;   // seconds into the scene's glTF animations at the last frame
+  double fps = 30.0;   // frames before the last step back 1/fps seconds each (unless --still)
   std::string animation = "all";
   std::string soakReport;
   int soakEvery = 100;
@@ -84,6 +86,9 @@ struct BenchArgs {
   std::vector<int> shadeRates;  // non-empty: the shade-rate sweep instead (bench_shade_rate.cpp)
   int pathFrames = 24;          // the shade-rate sweep: raster frames along its moving camera path
   std::string moveObject;       // the shade-rate sweep: an object (by name) that moves too
+  std::vector<double> shadeBudgets;  // the shade-rate sweep: budget mode configurations
+  std::string rateMaterial;     // the shade-rate sweep: every object's material
+  bool unkeptLayers = false;    // the shade-rate sweep: each rate also without keeping view-independent layers
   bool sceneRatios = false;  // each scene against the first instead (bench_scenes.cpp)
 };
 // bench's options, and its subcommand "graph" (returned) with graphArgs'.

@@ -88,6 +88,14 @@ void writeStats(const std::string& path, const AppSession& session, const render
                        {"shade_frames", d.shadeFrames},
                        {"shadels_filled", d.chunksFilled * 64},
                        {"shadels_reused", d.chunksReused * 64},
+                       // The last frame: age in raster frames of the oldest shading composite
+                       // read (0: all shaded this frame); budget mode: shadels it left stale
+                       // (reused) and those it reshaded for their age, and the age limit.
+                       {"shadels_stale_max_age", d.counters.staleMaxAge},
+                       {"shadels_left_stale", uint64_t(d.counters.chunksReused) * 64},
+                       {"shadels_refreshed", uint64_t(d.counters.chunksRefreshed) * 64},
+                       {"stale_age_limit", d.staleAge.limit == plugins::kReuseAnyAge ? nlohmann::json(nullptr)
+                                                                                     : nlohmann::json(d.staleAge.limit)},
                        {"overflow_chunks", d.counters.overflowChunks},
                        {"composite_misses", d.counters.compositeMisses},
                        {"global_bias", d.bias},
@@ -164,7 +172,7 @@ void runRender(const RenderArgs& args) {
   settings.framesInFlight = uint32_t(args.framesInFlight);
 
   plugins::DecoupledSettings decoupled{.storageFactor = args.storage, .filter = args.filter,
-                                      .shadeRate = uint32_t(args.shadeRate),
+                                      .shadeRate = uint32_t(args.shadeRate), .shadeBudgetMs = args.shadeBudget,
                                       .overlap = args.framesInFlight > 1};
   const std::map<std::string, plugins::DebugView> views{{"final", plugins::DebugView::Final},
                                                         {"level", plugins::DebugView::Level},
@@ -189,11 +197,16 @@ void runRender(const RenderArgs& args) {
   std::vector<double> framesMs;
   // The trace shows the last frames on the executor's clocks (several: frames overlap).
   std::vector<gpu::FrameTimings> traced;
+  // The frames end at frame F (--frame, else 0) and at --time: the written image
+  // is always that pose of the moving objects and animations, whatever --frames is.
+  const int lastFrame = args.frame.value_or(0);
   for (int i = 0; i < args.frames; ++i) {
-    if (animations.playing() && (i == 0 || args.fps))
-      animations.poseAt(float(args.time + (args.fps ? i / *args.fps : 0.0)), *session.renderer);
+    const int before = args.still ? 0 : args.frames - 1 - i;  // frames before the last
+    settings.time = float(lastFrame - before) / 30.0f;
+    if (animations.playing()) animations.poseAt(float(args.time - before / args.fps), *session.renderer);
     settings.readback = i + 1 == args.frames;  // only the last is written (and a readback waits for the queue)
     frame = session.renderer->render(settings);
+    session.decoupled->observeTimings(frame.timings);
     if (soak) soak->add(uint32_t(i), frame.timings);
     framesMs.push_back(frame.timings.gpuMs);
     if (!args.trace.empty()) {
@@ -214,6 +227,11 @@ void runRender(const RenderArgs& args) {
                 double(d.bias), d.counters.chunksMarked, d.counters.chunksAllocated, d.capacityChunks,
                 d.counters.overflowChunks, d.counters.compositeMisses,
                 d.counters.coveredPixels ? 64.0 * d.counters.chunksAllocated / d.counters.coveredPixels : 0.0);
+  if (d.objects && args.shadeBudget)
+    std::printf("shade budget %.2f ms (%.4f ms a chunk): last frame %u chunks shaded (%u for their age), %u left "
+                "stale, oldest %u frames\n",
+                *args.shadeBudget, d.msPerChunk, d.counters.chunksShaded, d.counters.chunksRefreshed,
+                d.counters.chunksReused, d.counters.staleMaxAge);
   if (d.objects && args.shadeRate > 1)
     std::printf("shade rate %d: %llu shade frames of %llu; last frame %s, %u chunks shaded, %u reused; over the run "
                 "%llu chunks filled, %llu reused\n",

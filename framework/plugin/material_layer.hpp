@@ -47,6 +47,18 @@ struct LayerFrameInput {
   std::string resource;  // the frame resource
 };
 
+// What a layer's value depends on besides its material and the shadel's
+// surface point: when a value kept from an earlier frame goes stale
+// (docs/authoring-material-layers.md, "Layer rates").
+enum class LayerDependence : uint8_t {
+  View,     // the camera (specular, anything that reads frame.cameraPosition): shaded every shade frame
+  World,    // the world pose and the lights, not the camera (diffuse lighting, a shadow term): kept until its object moves
+  Surface,  // only the surface in texture or object space (a procedural albedo, a height field): kept even when it moves rigidly
+};
+
+// A kept (World or Surface) layer is recomputed anyway on every this-many-th shade frame.
+inline constexpr uint32_t kDefaultRefreshShadeFrames = 8;
+
 struct MaterialLayer {
   std::string name;      // unique, e.g. "height"; also the GLSL accessor name (letters, digits, '_', '-')
   std::string source;    // GLSL virtual path, e.g. "materials/height-normal/height.glsl"
@@ -59,11 +71,20 @@ struct MaterialLayer {
   // shadel existed last frame (decoupled; the forward variant always computes).
   bool persistent = false;
   LayerPaths paths = LayerPaths::Both;
+  // View (default): shaded whenever its chunk is. World or Surface: view-independent,
+  // its decoupled values are kept across shade frames while their inputs hold
+  // (an intermediate layer keeps a layer image of its own), and recomputed every
+  // `refreshShadeFrames` shade frames (1 or more).
+  LayerDependence dependsOn = LayerDependence::View;
+  uint32_t refreshShadeFrames = kDefaultRefreshShadeFrames;
   std::vector<std::pair<std::string, std::string>> parameters;  // #define name value, before the source
   std::vector<LayerTexture> textures;
   std::vector<LayerFrameInput> frameInputs;
   std::string plugin;  // who registered it (set by the registry; named in errors)
 
+  bool viewIndependent() const { return dependsOn != LayerDependence::View; }
+  // Has a history image pair and reads last frame's values (sgPrevious).
+  bool keepsValues() const { return persistent || viewIndependent(); }
   uint32_t radius() const {
     uint32_t r = 0;
     for (const auto& read : reads) r = read.radius > r ? read.radius : r;

@@ -9,7 +9,7 @@
 
 #include <shadelgraph/plugin/registry.hpp>
 
-#define SG_PLUGIN_ABI_VERSION 3u
+#define SG_PLUGIN_ABI_VERSION 4u  // 4: MaterialLayer::dependsOn, refreshShadeFrames
 
 extern "C" {
 

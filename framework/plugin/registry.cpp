@@ -146,6 +146,10 @@ std::vector<std::string> Registry::problems() const {
       if (l.persistent && l.paths == LayerPaths::ForwardOnly)
         problems.push_back(who + ": is persistent, which only means something decoupled");
     }
+    if (l.viewIndependent() && l.refreshShadeFrames == 0)
+      problems.push_back(who + ": is view-independent with refreshShadeFrames 0; 1 or more (1: every shade frame)");
+    if (l.viewIndependent() && l.persistent)
+      problems.push_back(who + ": is both persistent and view-independent; a persistent layer decides its reuse itself");
     for (const auto& texture : l.textures) {
       if (!validName(texture.name) || texture.name.find('-') != std::string::npos)
         problems.push_back(who + ": texture name '" + texture.name + "' is not a GLSL identifier");
@@ -178,6 +182,9 @@ std::vector<std::string> Registry::problems() const {
     if (last.persistent)
       problems.push_back(who + ": its last layer '" + last.name +
                          "' is persistent; a persistent layer keeps its own image, so put a layer after it");
+    if (last.viewIndependent())
+      problems.push_back(who + ": its last layer '" + last.name +
+                         "' is view-independent; a kept layer keeps its own image, so put a layer after it");
     uint32_t support = 0;  // each layer widens what the one after it reads
     for (const auto& l : m.layers) support += layer(l).radius();
     if (support > kMaxLayerRadius)

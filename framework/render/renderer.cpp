@@ -155,6 +155,10 @@ FrameResult Renderer::render(const RenderSettings& settings) {
   gpu::CpuTimer timer;
   executor_.setFramesInFlight(settings.framesInFlight);
   executor_.beginFrame();  // the host-written buffers of this frame's slot are free
+  if (settings.time)
+    for (uint32_t i = 0; i < scene_.instances.size(); ++i)
+      if (scene_.instances[i].motion.moves())
+        setObjectTransform(i, scene::movedWorld(scene_.instances[i].motion, scene_.instances[i].world, *settings.time));
   auto frame = declare(settings);
   const graph::CompiledPlan& plan = executor_.compile(frame->graph, {.outputWidth = settings.width, .outputHeight = settings.height,
                                                       .enableAliasing = settings.aliasing});

@@ -25,6 +25,10 @@ struct RenderSettings {
   int camera = -1;  // index into the scene's cameras; -1: the first, or framing of the bounds
   std::optional<scene::Camera> cameraOverride;  // e.g. a pose along a camera path; wins over `camera`
   bool aliasing = true;
+  // Seconds into the scene's object motion (scene::ObjectMotion): when set,
+  // every object that moves is placed at that time before the frame (its
+  // setObjectTransform). Unset: objects keep the transforms they have.
+  std::optional<float> time;
   // Skip draws hidden behind others (tested against this frame's depth of the draws visible last frame).
   bool occlusionCulling = true;
   // Frames recorded while earlier ones run (a frame's tail, e.g. a shade

@@ -76,6 +76,10 @@ Scene makeDefaultScene(uint32_t textureSize) {
   for (float x : {-4.0f, 4.0f})
     for (float z : {-5.0f, 1.0f}) place(s, pillar, "pillar", at(x, 0, z));
   place(s, addMesh(s, "gold sphere", makeSphere(1.2f, 64, 32), goldMat), "gold sphere", at(0, 1.2f, -1.5f));
+  // It moves (frame 0 is the pose above): a 0.5-unit circle every 4 s, turning
+  // 20 degrees a second, so multi-frame runs and benchmarks see object motion.
+  s.instances.back().motion = {.type = ObjectMotion::Type::Orbit, .radius = 0.5f, .seconds = 4.0f,
+                               .spinDegreesPerSecond = 20.0f, .pivot = {0.0f, 1.2f, -1.5f}};
   place(s, addMesh(s, "torus", makeTorus(1.0f, 0.35f, 48, 24), paintMat), "torus",
         glm::rotate(at(-2.6f, 1.35f, 1.2f), glm::radians(70.0f), {1, 0, 0}));
   place(s, addMesh(s, "crate", makeBox({1, 1, 1}), paintMat), "crate",

@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include <shadelgraph/scene/object_motion.hpp>
+
 namespace sg::scene {
 
 // How an object is shaded. Auto lets the renderer decide (decoupled when the
@@ -23,6 +25,7 @@ struct Instance {
   ShadingMode shading = ShadingMode::Auto;
   std::string material;   // its material (layer stack) by registered name; empty: the default, "gltf-pbr"
   int node = -1;          // the glTF node it hangs off (Scene::nodes), -1: none (animations do not move it)
+  ObjectMotion motion;    // how it moves from `world` (its pose at time 0); none by default
 };
 
 }  // namespace sg::scene

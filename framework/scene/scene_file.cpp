@@ -177,6 +177,44 @@ CameraPath parseCameraPath(const Json& json, const std::string& path, size_t ind
   return out;
 }
 
+// An object's "path": rigid motion from its placed pose (object_motion.hpp).
+ObjectMotion parseObjectPath(const Json& json, const std::string& path, const glm::vec3& pivot) {
+  if (!json.is_object()) throw FormatError(path, "expected an object");
+  ObjectMotion out;
+  out.pivot = pivot;
+  const std::string type = text(json, "type", path, "");
+  out.spinDegreesPerSecond = number(json, "spinDegreesPerSecond", path, 0.0f, 1e6);
+  if (type == "orbit") {
+    allowOnly(json, path, {"type", "radius", "seconds", "spinDegreesPerSecond"});
+    out.type = ObjectMotion::Type::Orbit;
+    out.radius = requiredNumber(json, "radius", path, kMaxCoordinate);
+    out.seconds = number(json, "seconds", path, 10.0f);
+    if (!(out.radius > 0.0f)) throw FormatError(path + "/radius", "must be > 0");
+    if (!(out.seconds > 0.0f)) throw FormatError(path + "/seconds", "must be > 0");
+  } else if (type == "keys") {
+    allowOnly(json, path, {"type", "keys", "spinDegreesPerSecond"});
+    out.type = ObjectMotion::Type::Keys;
+    const auto keys = json.find("keys");
+    if (keys == json.end() || !keys->is_array() || keys->empty())
+      throw FormatError(path + "/keys", "expected an array of at least one key");
+    for (size_t k = 0; k < keys->size(); ++k) {
+      const std::string keyPath = path + "/keys/" + std::to_string(k);
+      const Json& key = (*keys)[k];
+      allowOnly(key, keyPath, {"t", "translation"});
+      ObjectKey parsed{requiredNumber(key, "t", keyPath), requiredVector<3>(key, "translation", keyPath, kMaxCoordinate)};
+      if (!out.keys.empty() && !(parsed.time > out.keys.back().time))
+        throw FormatError(keyPath + "/t", "key times must increase strictly");
+      out.keys.push_back(parsed);
+    }
+  } else if (type == "spin") {
+    allowOnly(json, path, {"type", "spinDegreesPerSecond"});
+    if (!json.contains("spinDegreesPerSecond")) throw FormatError(path + "/spinDegreesPerSecond", "required property is missing");
+  } else {
+    throw FormatError(path + "/type", "expected \"orbit\", \"keys\" or \"spin\"");
+  }
+  return out;
+}
+
 SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadOptions& options) {
   allowOnly(root, "", {"objects", "lights", "cameraPaths"});
   const auto objects = root.find("objects");
@@ -196,7 +234,7 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
     const std::string path = "/objects/" + std::to_string(i);
     const Json& object = (*objects)[i];
     allowOnly(object, path, {"gltf", "name", "translation", "rotation", "rotationDegrees", "scale", "shading",
-                               "material"});
+                               "material", "path"});
     const std::string gltf = text(object, "gltf", path, "");
     if (gltf.empty()) throw FormatError(path + "/gltf", "required property is missing");
     const std::filesystem::path gltfPath = (file.parent_path() / gltf).lexically_normal();
@@ -209,6 +247,8 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
     const std::string material = text(object, "material", path, "");
     const glm::mat4 transform = objectTransform(object, path);
     const std::string name = text(object, "name", path, gltfPath.stem().string());
+    const ObjectMotion motion =
+        object.contains("path") ? parseObjectPath(object["path"], path + "/path", glm::vec3(transform[3])) : ObjectMotion{};
 
     auto it = loaded.find(gltfPath);
     if (it == loaded.end()) {
@@ -241,6 +281,7 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
       instance.name = name + "/" + instance.name;
       if (shading) instance.shading = *shading;
       if (!material.empty()) instance.material = material;
+      instance.motion = motion;  // the whole object moves rigidly, every node with it
       result.scene.instances.push_back(std::move(instance));
     }
     Scene placed;  // lights and cameras, moved by appendScene's transform rules

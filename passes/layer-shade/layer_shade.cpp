@@ -42,7 +42,7 @@ gpu::ComputePipelineDesc layerShadePipeline(const plugin::MaterialLayer& layer) 
     layout.bindings.push_back({kBindLayerInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
   for (uint32_t i = 0; i < layer.frameInputs.size(); ++i)
     layout.bindings.push_back({render::kBindLayerFrameInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
-  if (layer.persistent) {
+  if (layer.keepsValues()) {
     layout.bindings.push_back({kBindLayerHistory, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
     layout.bindings.push_back({kBindPreviousRemap, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   }
@@ -61,7 +61,7 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
   for (auto& step : steps) {
     for (const auto input : step.inputs) pass.read(input, graph::Access::Sampled);
     for (const auto input : step.frameInputs) pass.read(input, graph::Access::Sampled);
-    if (step.layer->persistent) {
+    if (step.layer->keepsValues()) {
       pass.read(step.history, graph::Access::Sampled);
       persistent = true;
     }
@@ -90,7 +90,7 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
       for (uint32_t i = 0; i < step.inputs.size(); ++i) writes.push_back(sampled(kBindLayerInputs + i, step.inputs[i]));
       for (uint32_t i = 0; i < step.frameInputs.size(); ++i)
         writes.push_back(sampled(render::kBindLayerFrameInputs + i, step.frameInputs[i]));
-      if (step.layer->persistent) {
+      if (step.layer->keepsValues()) {
         writes.push_back(sampled(kBindLayerHistory, step.history));
         writes.push_back({kBindPreviousRemap, gpu::BufferBinding{ctx.buffer(history.previousRemap).handle()}});
       }

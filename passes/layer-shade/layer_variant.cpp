@@ -34,7 +34,7 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
         << "vec4 sgLayer_" << name << "(ivec2 offset) { return sgFetchLayer(sgLayerImage_" << name
         << ", offset); }\n";
   }
-  if (layer.persistent) {
+  if (layer.keepsValues()) {
     out << "layout(set = 0, binding = " << kBindLayerHistory << ") uniform sampler2D sgLayerHistory;\n"
         << "layout(set = 0, binding = " << kBindPreviousRemap
         << ", std430) readonly buffer PreviousRemap { SgRemapEntry previousRemap[]; };\n"
@@ -63,12 +63,21 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
       << "  if (!sgWorkGroupInList()) return;  // the surplus of a dispatch's last row\n"
       << "  Surface s;\n"
       << "  bool onSurface = sgBeginShadel(s);\n"
-      << "  vec4 value = onSurface ? " << layer.function << "(s) : vec4(0.0);\n"
+      << "  vec4 value = vec4(0.0);\n";
+  if (layer.viewIndependent()) {
+    // Kept while its object's bit for this layer is set (layer_rate.hpp): last
+    // frame's value where the shadel was stored, else computed.
+    out << "  bool keep = (objects[sgPush.objectIndex].keepLayers >> sgPush.persistentSlot & 1u) != 0u;\n"
+        << "  if (onSurface && !(keep && sgPrevious(value))) value = " << layer.function << "(s);\n";
+  } else {
+    out << "  if (onSurface) value = " << layer.function << "(s);\n";
+  }
+  out
       // Half floats overflow to Inf above 65,504 on some devices (lavapipe saturates): clamp, so
       // composite's filter never weighs an Inf (Inf x 0 = NaN).
       << "  imageStore(sgLayerOutput, sgShadel.target, "
       << (isHalfFloat(layer.format) ? "clamp(value, -65504.0, 65504.0)" : "value") << ");\n";
-  if (layer.persistent) {
+  if (layer.keepsValues()) {
     // One atomic per workgroup, not per shadel.
     out << "  if (gl_LocalInvocationIndex == 0u) { sgReusedCount = 0u; sgComputedCount = 0u; }\n"
         << "  barrier();\n"

@@ -12,8 +12,6 @@ namespace sg::passes {
 namespace {
 constexpr std::array kBindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindWork};
 constexpr std::array kOffsetBindings{kBindParams, kBindWork, kBindArgs};
-constexpr std::array kFillBindings{kBindParams, kBindObjects, kBindRemap, kBindOwnedEntries, kBindWork,
-                                   kBindPreviousRemap};
 
 gpu::ComputePipelineDesc phasePipeline(int phase) {
   return {.shader = {.path = "passes/shade-frame/shade_frame_work.comp", .defines = {{"SG_PHASE", std::to_string(phase)}}},
@@ -33,6 +31,10 @@ void addShadeFrameWork(graph::RenderGraph& graph, DecoupledFrame& shadeFrame) {
   pass.read(shadeFrame.remap, graph::Access::StorageRead);
   shadeFrame.work = pass.write(shadeFrame.work, graph::Access::StorageReadWrite);
   shadeFrame.args = pass.write(shadeFrame.args, graph::Access::StorageWrite);
+  // The fill step stamps every chunk with this frame (it is all shaded now) and may count ages.
+  if (shadeFrame.stamps.valid()) shadeFrame.stamps = pass.write(shadeFrame.stamps, graph::Access::StorageReadWrite);
+  if (shadeFrame.previousStamps.valid()) pass.read(shadeFrame.previousStamps, graph::Access::StorageRead);
+  shadeFrame.counters = pass.write(shadeFrame.counters, graph::Access::StorageReadWrite);
   pass.execute([frame = shadeFrame](PassContext& ctx) {
     const auto& clear = ctx.device().pipeline("shade-frame-clear", [] { return phasePipeline(0); });
     const auto& count = ctx.device().pipeline("shade-frame-count", [] { return phasePipeline(1); });
@@ -52,7 +54,7 @@ void addShadeFrameWork(graph::RenderGraph& graph, DecoupledFrame& shadeFrame) {
     bindDecoupled(ctx, offsets, frame, kOffsetBindings);
     vkCmdDispatch(ctx.cmd(), 1, 1, 1);
     computeToCompute(ctx.cmd());
-    bindDecoupled(ctx, fill, frame, kFillBindings);
+    bindDecoupled(ctx, fill, frame, workFillBindings());
     if (frame.ownedEntryCount) vkCmdDispatch(ctx.cmd(), (frame.ownedEntryCount + 63) / 64, 1, 1);
   });
 }

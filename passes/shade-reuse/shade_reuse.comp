@@ -1,12 +1,17 @@
 #version 460
-// Copies each chunk on the reuse list (work-aggregate) from last frame's shade
-// storage to its place in this frame's: shading kept across frames, one 8x8
-// workgroup per chunk. Dispatched in rows like the shade lists.
+// Copies each chunk on the reuse list (work-aggregate) from last frame's image
+// to its place in this frame's: the shade storage, and the image of every
+// view-independent layer kept across frames. One 8x8 workgroup per chunk,
+// dispatched in rows like the shade lists. SG_REUSE_FORMAT: the image's format.
 #include <framework/shadel/shaders/decoupled.glsl>
 #include <framework/shadel/shaders/work.glsl>
 
+#ifndef SG_REUSE_FORMAT
+#define SG_REUSE_FORMAT rgba16f
+#endif
+
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = kBindLayerImage, rgba16f) uniform writeonly image2D shaded;
+layout(set = 0, binding = kBindLayerImage, SG_REUSE_FORMAT) uniform writeonly image2D shaded;
 layout(set = 0, binding = kBindLayerHistory) uniform sampler2D previousShaded;
 
 void main() {

@@ -7,7 +7,7 @@
 namespace sg::passes {
 namespace {
 constexpr std::array kBindings{kBindParams, kBindObjects, kBindRemap, kBindOwnedEntries, kBindCounters, kBindWork,
-                               kBindPreviousRemap};
+                               kBindPreviousRemap, kBindPreviousStamps};
 }  // namespace
 
 gpu::ComputePipelineDesc shadelAllocatePipeline() {
@@ -18,6 +18,7 @@ void addShadelAllocate(graph::RenderGraph& graph, DecoupledFrame& frame) {
   auto& pass = graph.addPass("shadel-allocate", graph::QueueClass::AsyncCompute);
   frame.remap = pass.write(frame.remap, graph::Access::StorageReadWrite);
   if (frame.previousRemap.valid()) pass.read(frame.previousRemap, graph::Access::StorageRead);
+  if (frame.previousStamps.valid()) pass.read(frame.previousStamps, graph::Access::StorageRead);
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);
   frame.work = pass.write(frame.work, graph::Access::StorageReadWrite);
   pass.execute([frame](PassContext& ctx) {

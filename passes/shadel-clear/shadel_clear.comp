@@ -21,6 +21,7 @@ void main() {
   }
   if (i < kStorageCounters) counters.allocated[i] = 0u;
   if (i < kMaxLevels) counters.levelChunks[i] = 0u;
+  if (i < kStaleAgeBins) counters.staleAgeChunks[i] = 0u;
   if (i < kMaxPersistentLayers) {
     counters.layerReused[i] = 0u;
     counters.layerComputed[i] = 0u;
@@ -35,5 +36,7 @@ void main() {
     counters.compositeMisses = 0u;
     counters.coveredPixels = 0u;
     counters.supportChunks = 0u;
+    counters.staleMaxAge = 0u;
+    counters.chunksRefreshed = 0u;
   }
 }

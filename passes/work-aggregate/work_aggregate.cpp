@@ -8,13 +8,16 @@
 namespace sg::passes {
 namespace {
 constexpr std::array kOffsetBindings{kBindParams, kBindWork, kBindArgs};
-constexpr std::array kFillBindings{kBindParams, kBindObjects, kBindRemap, kBindOwnedEntries, kBindWork,
-                                   kBindPreviousRemap};
+constexpr std::array kFillBindings{kBindParams,        kBindObjects,        kBindRemap,
+                                   kBindOwnedEntries,  kBindWork,           kBindPreviousRemap,
+                                   kBindCounters,      kBindShadeStamps,    kBindPreviousStamps};
 }  // namespace
 
 gpu::ComputePipelineDesc workOffsetsPipeline() {
   return {.shader = {.path = "passes/work-aggregate/work_offsets.comp"}, .layout = decoupledLayout(kOffsetBindings)};
 }
+
+std::span<const uint32_t> workFillBindings() { return kFillBindings; }
 
 gpu::ComputePipelineDesc workFillPipeline() {
   return {.shader = {.path = "passes/work-aggregate/work_fill.comp"}, .layout = decoupledLayout(kFillBindings)};
@@ -24,6 +27,9 @@ void addWorkAggregate(graph::RenderGraph& graph, DecoupledFrame& frame) {
   auto& pass = graph.addPass("work-aggregate", graph::QueueClass::AsyncCompute);
   pass.read(frame.remap, graph::Access::StorageRead);
   if (frame.previousRemap.valid()) pass.read(frame.previousRemap, graph::Access::StorageRead);
+  if (frame.previousStamps.valid()) pass.read(frame.previousStamps, graph::Access::StorageRead);
+  if (frame.stamps.valid()) frame.stamps = pass.write(frame.stamps, graph::Access::StorageWrite);
+  frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);  // stale ages
   frame.work = pass.write(frame.work, graph::Access::StorageReadWrite);
   frame.args = pass.write(frame.args, graph::Access::StorageWrite);
   pass.execute([frame](PassContext& ctx) {

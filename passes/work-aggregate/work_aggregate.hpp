@@ -1,4 +1,6 @@
 #pragma once
+#include <span>
+
 #include <shadelgraph/graph/render_graph.hpp>
 #include <decoupled_frame.hpp>
 
@@ -11,5 +13,7 @@ void addWorkAggregate(graph::RenderGraph& graph, DecoupledFrame& frame);
 // Its two steps: the per-object offsets and arguments, then the work items.
 gpu::ComputePipelineDesc workOffsetsPipeline();
 gpu::ComputePipelineDesc workFillPipeline();
+// What the fill step binds (bindDecoupled), for another pass running it.
+std::span<const uint32_t> workFillBindings();
 
 }  // namespace sg::passes

@@ -85,7 +85,7 @@ void registerDecoupledPackage(plugin::Registry& registry) {
   registry.addPass(shadingPass("work-aggregate",
                                "per object the chunks to shade and one indirect dispatch (async compute)",
                                graph::QueueClass::AsyncCompute, {"shadel.remap", "shadel.counters", "shadel.work"},
-                               {"shadel.work", "shadel.args"}, passes::addWorkAggregate));
+                               {"shadel.work", "shadel.args", "shadel.counters"}, passes::addWorkAggregate));
   registry.addPass({.name = "layer-shade",
                     .description = "material layers over the chunks to shade, one pass per layer depth (async compute)",
                     .queue = graph::QueueClass::AsyncCompute,

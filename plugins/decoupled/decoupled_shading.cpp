@@ -15,6 +15,7 @@
 
 #include "layer-shade/layer_shade.hpp"
 #include "shade-frame/shade_frame_work.hpp"
+#include "layer_rate.hpp"
 #include "shade-reuse/shade_reuse.hpp"
 
 namespace sg::plugins {
@@ -31,6 +32,7 @@ gpu::Buffer upload(gpu::Device& device, const std::vector<T>& data, const char* 
 
 // A material that reads neighbours (support) or its own last value
 // (persistent layers) cannot have some chunks reused and others shaded.
+// (View-independent layers can: shade-reuse copies their images too.)
 bool reshadedWhole(const plugin::Registry& registry, const plugin::MaterialStack& material) {
   if (supportRadius(registry, material) > 0) return true;
   for (const auto& layer : material.layers)
@@ -43,9 +45,18 @@ bool reshadedWhole(const plugin::Registry& registry, const plugin::MaterialStack
 DecoupledShading::DecoupledShading(std::vector<ShadingChoice> choices, DecoupledSettings settings)
     : choices_(std::move(choices)), settings_(settings), adjuster_(settings.adjuster) {
   bias_ = settings_.fixedBias.value_or(adjuster_.bias());
+  if (settings_.shadeBudgetMs) budget_.emplace(*settings_.shadeBudgetMs, settings_.budgetMsPerChunk);
 }
 
 DecoupledShading::~DecoupledShading() = default;
+
+void DecoupledShading::observeTimings(const gpu::FrameTimings& timings) {
+  if (!budget_ || !countersPending_) return;
+  double ms = 0.0;
+  for (const auto& pass : timings.passes)
+    if (pass.name.starts_with("layer-shade")) ms += pass.gpuMs;
+  budget_->observeCost(ms, stats().counters.chunksShaded);
+}
 
 void DecoupledShading::createTables(gpu::Device& device) {
   space_ = std::make_unique<shadel::ShadelSpace>(shadel::ShadelSpaceConfig{settings_.sheetSizeLog2});
@@ -89,6 +100,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
          slot.materialStack != draw.materialStack)) {
       // Moved or given another material: what it stored no longer holds. The
       // record reaches the GPU with this frame's reuse flags (chooseReuse).
+      if (slot.record.material != draw.material || slot.materialStack != draw.materialStack) slot.materialFrame = frames_;
       slot.record.world = draw.world;
       slot.record.material = draw.material;
       slot.record.supportChunks = supportRadius(materials, material) > 0 ? 1u : 0u;
@@ -124,6 +136,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
     slot.allocated = true;
     slot.materialStack = draw.materialStack;
     slot.changedFrame = frames_;
+    slot.materialFrame = frames_;
     slot.reshadedWhole = reshadedWhole(materials, material);
     ++allocatedObjects_;
     slot.record = {draw.world, draw.firstIndex, draw.vertexOffset, draw.indexCount / 3, draw.material, offset,
@@ -182,13 +195,21 @@ void DecoupledShading::selectFrameObjects(render::FrameContext& ctx) {
   ctx.draws().decoupled = frameObjects_;
 }
 
-void DecoupledShading::chooseReuse(bool historyValid) {
+void DecoupledShading::chooseReuse(bool historyValid, const plugin::Registry& materials) {
   reuseAny_ = false;
   for (auto& slot : slots_) {
     if (!slot.allocated) continue;
     // Overlapping, the raster frame always reuses: its shade frame runs after it.
     slot.record.reuse = (!shadeFrame_ || overlapping()) && historyValid && slot.changedFrame != frames_ && !slot.reshadedWhole ? 1u : 0u;
     reuseAny_ = reuseAny_ || slot.record.reuse;
+    const LayerKeepState keep{.historyValid = historyValid && settings_.keepViewIndependentLayers,
+                              .materialChanged = slot.materialFrame == frames_,
+                              .moved = slot.changedFrame == frames_,
+                              // Budget mode has no shade frames: kept layers refresh every 8th raster frame.
+                              .shadeFrame = shadeFrame_ || budget_.has_value(),
+                              .shadeFrameIndex = budget_ ? frames_ : shadeFrames_};
+    slot.record.keepLayers =
+        keptLayerBits(materials, materials.material(slot.materialStack), layerPlan_.persistent, keep);
   }
   // Every record, rewritten each frame (reuse flags, transforms, materials):
   // the last frame that read the buffer has completed (the executor waits for each).
@@ -204,13 +225,19 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
   // The counters of the frame before (complete: frames are waited for) join the totals.
   if (countersPending_) {
     const auto c = stats().counters;
-    if (!shadeFrame_) chunksFilled_ += c.chunksShaded;
+    if (!shadeFrame_) chunksFilled_ += c.chunksShaded - c.chunksRefreshed;
     chunksReused_ += c.chunksReused;
     countersPending_ = false;
+    if (budget_) {
+      const uint64_t filled = c.chunksShaded - c.chunksRefreshed;
+      staleAge_ = budget_->nextAgeLimit(filled, shadeFrame_ ? 0 : filled, c.staleAgeChunks, staleAge_);
+    }
   }
   ++frames_;
   const uint32_t rate = std::max(settings_.shadeRate, 1u);
-  shadeFrame_ = (frames_ - 1) % rate == 0;
+  // Budget mode has no shade frames but the first (nothing is stored yet).
+  shadeFrame_ = budget_ ? frames_ == 1 : (frames_ - 1) % rate == 0;
+  if (budget_ && frames_ == 1) staleAge_ = {};
   shadeFrames_ += shadeFrame_ ? 1 : 0;
   if (!space_) createTables(in.device);
   syncObjects(ctx);
@@ -240,9 +267,11 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
                               ? settings_.storageChunks
                               : shadel::chunksForOutput(in.width, in.height, settings_.storageFactor * supportScale);
   storage_ = shadel::storageLayoutFor(chunks, std::clamp<uint32_t>(chunks / 256, 1, kStorageCounters));
+  const bool keepShading = rate > 1 || budget_.has_value();
   const DecoupledParams params{bias_, settings_.sheetSizeLog2 - 6, storage_.widthChunks, storage_.chunksPerCounter,
                                ownedEntryCount_, objectCount, storage_.capacityChunks(),
-                               storage_.counterCount};
+                               storage_.counterCount, uint32_t(frames_), budget_ ? staleAge_.limit : 0u,
+                               keepShading ? 1u : 0u, staleAge_.fraction};
   params_[ring()].write(&params, sizeof params);
   graph::RenderGraph& graph = ctx.graph();
   frame_.reset();
@@ -257,11 +286,10 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
                                         .baseline = settings_.baseline,
                                         .levelView = settings_.view == DebugView::Level});
   passes::DecoupledFrame& frame = *frame_;
-  const bool keepShading = rate > 1;
   declaredHistory_ = history_.declare(graph, in.device, in.executor, materials, layerPlan_.persistent, keepShading,
                                       storage_.widthTexels(), storage_.heightTexels(), remapBytes_, frames_,
                                       std::to_string(in.width) + "x" + std::to_string(in.height));
-  chooseReuse(declaredHistory_.valid);
+  chooseReuse(declaredHistory_.valid, materials);
   countersPending_ = true;  // counters-readback runs whenever objects are allocated
   frame.remap = declaredHistory_.remap;
   frame.previousRemap = declaredHistory_.previousRemap;
@@ -272,6 +300,8 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
   if (keepShading) {
     frame.shadedColor = declaredHistory_.shaded.current;
     frame.previousShaded = declaredHistory_.shaded.history;
+    frame.stamps = declaredHistory_.stamps.current;
+    frame.previousStamps = declaredHistory_.stamps.history;
   } else {
     frame.shadedColor = graph.createImage(
         "shade storage", {.format = graph::Format::RGBA16F,
@@ -350,17 +380,28 @@ void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, const plugin::R
                                       const std::string& prefix) {
   passes::DecoupledFrame& frame = *frame_;
   const LayerHistory::Declared& history = declaredHistory_;
-  // First what keeps last frame's shading, then the layers shade the rest.
-  if (reuseAny_) passes::addShadeReuse(graph, frame);
   // The current version of each intermediate layer's own image.
   std::map<std::string, graph::ResourceHandle> images;
   for (const auto& name : layerPlan_.images) {
     const auto& layer = materials.layer(name);
-    images[name] = layer.persistent
+    images[name] = layer.keepsValues()
                        ? history.layers.at(name).current
                        : graph.createImage("layer " + name,
                                            {.format = layer.format, .size = graph::Size::absolute(
                                                                         storage_.widthTexels(), storage_.heightTexels())});
+  }
+  // First what keeps last frame's shading (and view-independent layers'
+  // values, which must be under every stored chunk), then the layers shade the rest.
+  if (reuseAny_) {
+    std::vector<std::string> names;
+    std::vector<passes::KeptLayerImage> kept;
+    for (const auto& name : layerPlan_.persistent)
+      if (materials.layer(name).viewIndependent() && images.contains(name)) {
+        names.push_back(name);
+        kept.push_back({history.layers.at(name).history, images.at(name), materials.layer(name).format});
+      }
+    passes::addShadeReuse(graph, frame, kept);
+    for (size_t i = 0; i < kept.size(); ++i) images[names[i]] = kept[i].current;
   }
   for (size_t depth = 0; depth < layerPlan_.depths.size(); ++depth) {
     std::vector<passes::LayerShadeStep> steps;
@@ -370,7 +411,7 @@ void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, const plugin::R
       for (const auto& read : layer.reads) step.inputs.push_back(images.at(read.layer));
       for (const auto& input : layer.frameInputs)
         step.frameInputs.push_back(render::frameInputImage(frame.view.frameImages, layer, input));
-      if (layer.persistent) {
+      if (layer.keepsValues()) {
         step.history = history.layers.at(layer.name).history;
         const auto& persistent = layerPlan_.persistent;
         step.persistentSlot = uint32_t(std::find(persistent.begin(), persistent.end(), layer.name) - persistent.begin());
@@ -404,6 +445,9 @@ DecoupledStats DecoupledShading::stats() const {
   s.shadeFrames = shadeFrames_;
   s.chunksFilled = chunksFilled_ + (countersPending_ && !shadeFrame_ ? s.counters.chunksShaded : 0);
   s.chunksReused = chunksReused_ + (countersPending_ ? s.counters.chunksReused : 0);
+  if (countersPending_ && !shadeFrame_) s.chunksFilled -= s.counters.chunksRefreshed;
+  if (budget_) s.staleAge = staleAge_;
+  s.msPerChunk = budget_ ? budget_->msPerChunk() : 0.0;
   return s;
 }
 

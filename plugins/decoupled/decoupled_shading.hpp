@@ -21,6 +21,7 @@
 #include "decoupled_tables.hpp"
 #include "layer_history.hpp"
 #include "layer_plan.hpp"
+#include "shade_budget.hpp"
 #include "shade_space_adjuster.hpp"
 #include "shading_choice.hpp"
 
@@ -53,6 +54,15 @@ struct DecoupledSettings {
   // compute, and later raster frames read it; every raster frame reuses and
   // fills. The renderer must run 2 frames in flight for it to overlap.
   bool overlap = false;
+  // Budget mode (shade_budget.hpp), instead of shade frames: each frame fills
+  // what is missing and reshades the stalest reusable chunks this many
+  // milliseconds of layer shading afford (by the cost per chunk measured
+  // through observeTimings, else budgetMsPerChunk).
+  std::optional<double> shadeBudgetMs;
+  double budgetMsPerChunk = kInitialMsPerChunk;
+  // View-independent layers keep their values across shade frames (layer_rate.hpp); false: computed
+  // whenever their chunk is shaded, as view-dependent ones (bench comparisons).
+  bool keepViewIndependentLayers = true;
   DebugView view = DebugView::Final;
   ShadeSpaceAdjusterOptions adjuster;
 };
@@ -80,6 +90,10 @@ struct DecoupledStats {
   // them were shade frames, chunks shaded in the others because they had no
   // valid shading (the fill), and chunks copied from the frame before.
   uint64_t rasterFrames = 0, shadeFrames = 0, chunksFilled = 0, chunksReused = 0;
+  // Budget mode: the age limit the last frame ran with (kReuseAnyAge: none)
+  // and the cost per chunk it was chosen by.
+  StaleAgeLimit staleAge;
+  double msPerChunk = 0.0;
 };
 
 class DecoupledShading {
@@ -112,6 +126,8 @@ class DecoupledShading {
   // From the next frame on: a fixed bias, or the adjuster's (empty).
   void setFixedBias(std::optional<float> bias);
   const DecoupledSettings& settings() const { return settings_; }
+  // A finished frame's timings: budget mode learns the layer-shade cost per chunk from them.
+  void observeTimings(const gpu::FrameTimings& timings);
   glm::uvec2 sheetRegionOrigin() const { return sheetRegionOrigin_; }
   glm::uvec2 sheetRegionSize() const { return sheetRegionSize_; }
 
@@ -128,7 +144,8 @@ class DecoupledShading {
   void uploadTables(gpu::Device& device);
   // Which objects may keep last frame's shading this frame (their records' `reuse`);
   // writes every record to the GPU.
-  void chooseReuse(bool historyValid);
+  // Also which view-independent layers each object keeps (layer_rate.hpp).
+  void chooseReuse(bool historyValid, const plugin::Registry& materials);
 
   std::vector<ShadingChoice> choices_;
   DecoupledSettings settings_;
@@ -140,6 +157,8 @@ class DecoupledShading {
   bool shadeFrame_ = true;     // this frame shades every marked chunk
   bool reuseAny_ = false;      // some object may reuse this frame: shade-reuse runs
   bool countersPending_ = false;  // the readback holds counters not yet in the totals below
+  std::optional<ShadeBudget> budget_;
+  StaleAgeLimit staleAge_;  // this frame's (params.staleAgeLimit and staleAgeFraction)
   uint64_t rasterFrames_ = 0, shadeFrames_ = 0, chunksFilled_ = 0, chunksReused_ = 0;  // before the last frame
   // Per draw (a decoupled object's index is its draw's): its shadel space and
   // tables, while its object is decoupled.
@@ -150,6 +169,7 @@ class DecoupledShading {
     DecoupledObject record{};
     std::string materialStack;  // the material its stored shading was shaded with
     uint64_t changedFrame = 0;  // the frame it was allocated, moved or changed material: nothing to reuse then
+    uint64_t materialFrame = 0;  // the frame it was allocated or changed material (its kept layers are recomputed)
     // Its material reads neighbours or its own last value: those inputs must be
     // around and under every chunk each frame, so it is reshaded whole.
     bool reshadedWhole = false;

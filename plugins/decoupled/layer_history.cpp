@@ -1,5 +1,7 @@
 #include "layer_history.hpp"
 
+#include <algorithm>
+
 #include <shadelgraph/gpu/barriers.hpp>
 #include <shadelgraph/gpu/graph_to_vulkan.hpp>
 
@@ -52,6 +54,22 @@ PersistentLayerHandles LayerHistory::declareImagePair(graph::RenderGraph& graph,
   return handles;
 }
 
+PersistentLayerHandles LayerHistory::declareStamps(graph::RenderGraph& graph, gpu::Device& device,
+                                                   gpu::GraphExecutor& executor, uint64_t chunks, uint32_t current) {
+  const uint64_t bytes = std::max<uint64_t>(chunks, 1) * sizeof(uint32_t);
+  for (uint32_t i = 0; i < 2; ++i)
+    if (!stamps_[i] || stamps_[i].size() != bytes)
+      stamps_[i] = gpu::Buffer(device.context(), device.memory(),
+                               {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryLocation::Device,
+                                i ? "shade stamps (B)" : "shade stamps (A)", "history", /*concurrent*/ true});
+  PersistentLayerHandles handles;
+  handles.current = graph.importPersistentBuffer("shade stamps", {.size = bytes}, kResting);
+  handles.history = graph.history(handles.current);
+  executor.bindBuffer(handles.current, stamps_[current]);
+  executor.bindBuffer(handles.history, stamps_[1 - current]);
+  return handles;
+}
+
 LayerHistory::Declared LayerHistory::declare(graph::RenderGraph& graph, gpu::Device& device,
                                              gpu::GraphExecutor& executor, const plugin::Registry& registry,
                                              const std::vector<std::string>& layers, bool keepShading,
@@ -79,8 +97,11 @@ LayerHistory::Declared LayerHistory::declare(graph::RenderGraph& graph, gpu::Dev
     key += " " + name;
     out.layers[name] = declareImagePair(graph, device, executor, "layer " + name, layer.format, width, height, current);
   }
-  if (keepShading)
+  if (keepShading) {
     out.shaded = declareImagePair(graph, device, executor, "shade storage", graph::Format::RGBA16F, width, height, current);
+    // The storage is width x height texels of 8x8-texel chunks; the key holds its size.
+    out.stamps = declareStamps(graph, device, executor, uint64_t(width / 8) * (height / 8), current);
+  }
   // Last frame must have stored these layers at this size, with this remap pair.
   out.valid = consecutive && key == lastKey_;
   lastKey_ = key;
@@ -89,6 +110,7 @@ LayerHistory::Declared LayerHistory::declare(graph::RenderGraph& graph, gpu::Dev
 
 uint64_t LayerHistory::bytes() const {
   uint64_t total = remaps_[1] ? remaps_[1].size() : 0;
+  for (const auto& stamps : stamps_) total += stamps ? stamps.size() : 0;
   for (const auto& [name, pair] : images_)
     for (const auto& image : pair)
       if (image) total += uint64_t(image.desc().width) * image.desc().height * formatBytes_.at(name);

@@ -34,6 +34,7 @@ class LayerHistory {
     graph::ResourceHandle remap, previousRemap;
     std::map<std::string, PersistentLayerHandles> layers;
     PersistentLayerHandles shaded;  // keepShading: this frame's shade storage and last frame's
+    PersistentLayerHandles stamps;  // keepShading: per physical chunk, the frame its shading was computed in
     // Last frame (the frame just before, not an earlier one) ran the same
     // persistent layers and reuse with this storage size.
     bool valid = false;
@@ -51,7 +52,11 @@ class LayerHistory {
   PersistentLayerHandles declareImagePair(graph::RenderGraph& graph, gpu::Device& device,
                                           gpu::GraphExecutor& executor, const std::string& name, graph::Format format,
                                           uint32_t width, uint32_t height, uint32_t current);
+  // The stamp buffer pair, (re)created for `chunks` chunks; declared and bound for this frame's parity.
+  PersistentLayerHandles declareStamps(graph::RenderGraph& graph, gpu::Device& device, gpu::GraphExecutor& executor,
+                                       uint64_t chunks, uint32_t current);
   std::array<gpu::Buffer, 2> remaps_;
+  std::array<gpu::Buffer, 2> stamps_;
   std::map<std::string, std::array<gpu::Image, 2>> images_;
   std::map<std::string, uint32_t> formatBytes_;
   std::string lastKey_;  // the persistent layers, reuse and size of the last declared frame

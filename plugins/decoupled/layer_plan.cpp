@@ -31,7 +31,7 @@ LayerPlan planLayers(const plugin::Registry& registry, std::span<const uint32_t>
       step->objects.push_back(objects[i]);
       ++plan.dispatches;
       if (!final) addUnique(plan.images, name);
-      if (registry.layer(name).persistent) addUnique(plan.persistent, name);
+      if (registry.layer(name).keepsValues()) addUnique(plan.persistent, name);
     }
   }
   if (plan.persistent.size() > kMaxPersistentLayers)

@@ -22,7 +22,7 @@ struct LayerStep {
 struct LayerPlan {
   std::vector<std::vector<LayerStep>> depths;  // depths[d]: the steps of the d-th layer-shade pass
   std::vector<std::string> images;             // layers whose own image some step writes (intermediate)
-  std::vector<std::string> persistent;         // persistent layers in use; index = counter slot
+  std::vector<std::string> persistent;         // persistent and view-independent layers in use; index = counter slot
   uint32_t dispatches = 0;                     // sum over objects of their stack's size
   bool needsSupport = false;                   // some object's stack reads a neighbourhood
 };

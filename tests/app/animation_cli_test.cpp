@@ -1,5 +1,6 @@
-// glTF animations from the command line: --time poses the scene, --fps plays
-// it, --animation chooses; in both shading paths, validation on.
+// glTF animations from the command line: --time poses the scene (at the last
+// of --frames; those before step back 1/--fps each), --animation chooses; in
+// both shading paths, validation on.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -60,7 +61,7 @@ TEST_P(AnimationCli, TimePosesTheSceneAndFramesPlayIt) {
   const Rendered again = render(mode + " --time 1.2 --frames 1", "again");
   EXPECT_GT(differingPixels(start.image, later.image), 96u * 72u / 50) << "the boxes moved";
   EXPECT_EQ(differingPixels(later.image, again.image), 0u) << "a time is one pose";
-  const Rendered played = render(mode + " --time 1.0 --fps 10 --frames 3", "played");  // the last frame at 1.2 s
+  const Rendered played = render(mode + " --time 1.2 --fps 10 --frames 3", "played");  // at 1.0, 1.1 and 1.2 s
   EXPECT_GT(differingPixels(played.image, start.image), 96u * 72u / 50);
   if (std::string(GetParam()) == "decoupled") {
     EXPECT_EQ(played.stats["objects_decoupled"], 2) << played.stats.dump();

@@ -515,6 +515,9 @@ const BadCommand kBadCommands[] = {
     {"ShadeRateNegative", "render --shade-rate -2", "--shade-rate -2"},
     {"ShadeRateNotANumber", "render --shade-rate fast", "--shade-rate"},
     {"FramesInFlightThree", "render --frames-in-flight 3", "--frames-in-flight 3"},
+    {"ShadeBudgetZero", "render --shade-budget 0", "--shade-budget 0"},
+    {"ShadeBudgetNan", "render --shade-budget nan", "--shade-budget nan"},
+    {"ShadeBudgetWithShadeRate", "render --shade-budget 5 --shade-rate 2", "--shade-rate"},
     {"BenchShadeRatesZero", "bench --shade-rates 1,0", "--shade-rates 0"},
     {"BenchPathFramesOne", "bench --shade-rates 2 --path-frames 1", "--path-frames 1"},
     {"BenchFlickerFramesZero", "bench --flicker-frames 0", "--flicker-frames 0"},
@@ -562,11 +565,12 @@ nlohmann::json statsOf(const std::string& args, const std::string& name) {
 }
 
 // --shade-rate 3 over 5 frames: frames 0 and 3 shade, the others reuse (a
-// static camera fills nothing); the stats count it and nothing is missed.
+// static camera and, with --still, a static gold sphere fill nothing); the
+// stats count it and nothing is missed.
 TEST(Cli, ShadeRateStatsCountShadeFramesAndReuse) {
   const auto stats = tempDir() / "shade-rate.json";
   std::filesystem::remove(stats);
-  auto r = run("render --mode decoupled --size 96x64 --frames 5 --shade-rate 3 --storage 16 -o " +
+  auto r = run("render --mode decoupled --size 96x64 --frames 5 --still --shade-rate 3 --storage 16 -o " +
                (tempDir() / "shade-rate.png").string() + " --stats " + stats.string());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::ifstream in(stats);
@@ -581,6 +585,60 @@ TEST(Cli, ShadeRateStatsCountShadeFramesAndReuse) {
   EXPECT_EQ(json["shadels_filled"], 0);
   EXPECT_GT(json["shadels_reused"].get<double>(), 0.0);
   EXPECT_EQ(json["shadels_reused_last_frame"], json["shadels_allocated"]) << "frame 4 reuses every stored shadel";
+  EXPECT_EQ(json["shadels_stale_max_age"], 1) << "frame 4 reads frame 3's shading";
+  EXPECT_EQ(json["composite_misses"], 0);
+}
+
+// Without --still the default scene's gold sphere moves a frame at a time:
+// it is reshaded in the frames between shade frames (the fill), still with no miss.
+TEST(Cli, TheDefaultScenesMovingSphereIsReshadedBetweenShadeFrames) {
+  const auto stats = tempDir() / "shade-rate-moving.json";
+  std::filesystem::remove(stats);
+  auto r = run("render --mode decoupled --size 96x64 --frames 5 --shade-rate 3 --storage 16 -o " +
+               (tempDir() / "shade-rate-moving.png").string() + " --stats " + stats.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(stats);
+  const auto json = nlohmann::json::parse(in);
+  EXPECT_GT(json["shadels_filled"].get<double>(), 0.0) << "the sphere moved";
+  EXPECT_GT(json["shadels_reused"].get<double>(), 0.0) << "the rest did not";
+  EXPECT_EQ(json["composite_misses"], 0);
+}
+
+std::string fileBytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// --frames N ends at frame 0 (no --frame): the written image is frame 0's
+// pose of the moving objects however many frames ran before it.
+TEST(Cli, TheWrittenFrameIsFrame0WhateverFrames) {
+  const auto one = tempDir() / "frame0-once.png", three = tempDir() / "frame0-thrice.png",
+             still = tempDir() / "frame0-still.png";
+  ASSERT_EQ(run("render --mode forward --size 96x64 --frames 1 -o " + one.string()).exitCode, 0);
+  ASSERT_EQ(run("render --mode forward --size 96x64 --frames 3 -o " + three.string()).exitCode, 0);
+  ASSERT_EQ(run("render --mode forward --size 96x64 --frames 3 --still -o " + still.string()).exitCode, 0);
+  EXPECT_FALSE(fileBytes(one).empty());
+  EXPECT_EQ(fileBytes(one), fileBytes(three));
+  EXPECT_EQ(fileBytes(one), fileBytes(still));
+}
+
+// Budget mode: no shade frames after the first, what the budget leaves stale
+// is reported, nothing is missed.
+TEST(Cli, ShadeBudgetReportsWhatItLeftStale) {
+  const auto stats = tempDir() / "shade-budget.json";
+  std::filesystem::remove(stats);
+  auto r = run("render --mode decoupled --size 96x64 --frames 4 --still --shade-budget 0.05 --storage 16 -o " +
+               (tempDir() / "shade-budget.png").string() + " --stats " + stats.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("shade budget 0.05 ms"), std::string::npos) << r.output;
+  std::ifstream in(stats);
+  const auto json = nlohmann::json::parse(in);
+  EXPECT_EQ(json["shade_frames"], 1);
+  EXPECT_EQ(json["raster_frames"], 4);
+  for (const char* key : {"shadels_left_stale", "shadels_refreshed", "shadels_stale_max_age", "stale_age_limit"})
+    EXPECT_TRUE(json.contains(key)) << key;
+  EXPECT_GT(json["shadels_left_stale"].get<double>(), 0.0) << "0.05 ms does not pay for the whole scene";
+  EXPECT_GE(json["shadels_stale_max_age"].get<int>(), 1);
   EXPECT_EQ(json["composite_misses"], 0);
 }
 

@@ -34,6 +34,11 @@ SG_CONST uint kBindLayerHistory = 22u;             // persistent layers: last fr
 SG_CONST uint kBindPreviousRemap = 23u;            // and last frame's remap table
 // 24..27: the frame resources a layer samples (render::kBindLayerFrameInputs).
 SG_CONST uint kBindSupportMasks = 30u;             // support-expand's per-owned-entry masks
+// With shading kept between frames: per physical chunk of the shade storage,
+// the raster frame its shading was computed in (this frame's and last frame's).
+SG_CONST uint kBindShadeStamps = 31u;
+SG_CONST uint kBindPreviousStamps = 32u;
+SG_CONST uint kStaleAgeBins = 16u;  // SgShadeCounters.staleAgeChunks: ages 0..14, then 15 or more
 
 SG_CONST uint kStorageCounters = 16u;      // storage partitions, each with its allocation counter
 SG_CONST uint kMaxLevels = 16u;
@@ -60,7 +65,8 @@ struct SgDecoupledObject {
   vec2 tileOffset;     // shading UV = uv - tileOffset
   uint supportChunks;  // support-expand grows its marked chunks by this many (0: no neighbourhood layer)
   uint reuse;          // 1: chunks it marked last frame too are copied from last frame's storage, not shaded
-  uint pad1, pad2;  // 112 bytes, as std430 laid it out: every record's mat4 stays 16-byte aligned
+  uint keepLayers;     // bit p: its view-independent layer in persistent slot p keeps last frame's values (layer_rate.hpp)
+  uint pad2;  // 112 bytes, as std430 laid it out: every record's mat4 stays 16-byte aligned
 };
 
 // What the passes count, read back after the frame.
@@ -77,6 +83,9 @@ struct SgShadeCounters {
   uint layerComputed[kMaxPersistentLayers];  // and shadels computed
   uint chunksShaded;                 // chunks the layers shaded this frame (all of them on a shade frame)
   uint chunksReused;                 // chunks copied from last frame's storage instead (shade-reuse)
+  uint staleMaxAge;                  // raster frames since the oldest reused chunk was shaded (0: none reused)
+  uint chunksRefreshed;              // chunks that could have been reused but were shaded for their age (budget mode)
+  uint staleAgeChunks[kStaleAgeBins];  // reusable chunks by the age they would have if reused (budget mode)
 };
 
 // The frame's parameters (uniform).
@@ -89,6 +98,13 @@ struct SgDecoupledParams {
   uint objectCount;
   uint workCapacity;          // work items the work buffer holds
   uint storageCounters;       // partitions in use (<= kStorageCounters)
+  uint frameNumber;           // this raster frame's number (shade stamps)
+  // Budget mode (0: off): a reusable chunk older than this many raster frames
+  // is shaded instead; one exactly this old is when a hash of its place falls
+  // below staleAgeFraction (of 65536).
+  uint staleAgeLimit;
+  uint stampsBound;           // 1: the shade-stamp buffers are bound (shading kept between frames)
+  uint staleAgeFraction;
 };
 
 // Push constants of a layer's decoupled variant (layer-shade).

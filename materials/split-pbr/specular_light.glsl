@@ -1,0 +1,32 @@
+// Layer "specular-light" (view-dependent, the stack's last): the diffuse
+// layer's radiance plus glTF PBR's specular reflection of the lights and the
+// environment towards the camera.
+#include <materials/split-pbr/diffuse_light.glsl>
+
+vec4 specularLight(Surface s) {
+  vec4 diffuse = sgLayer(diffuse_light);
+  if (material.flags.w != 0u) return diffuse;  // unlit: the diffuse layer returned the base colour
+  SplitInputs m = splitInputs(s);
+  vec3 V = normalize(frame.cameraPosition.xyz - s.position);
+  float alpha = max(m.roughness * m.roughness, 1e-3);
+  vec3 f0 = mix(vec3(0.04), m.baseColor.rgb, m.metallic);
+  float NdotV = clamp(abs(dot(m.N, V)), 1e-4, 1.0);
+  vec3 color = diffuse.rgb;
+  for (uint i = 0u; i < frame.counts.x; ++i) {
+    LightSample light = sgLightAt(frame.lights[i], s.position);
+    vec3 H = normalize(V + light.direction);
+    float NdotL = clamp(dot(m.N, light.direction), 0.0, 1.0);
+    vec3 F = fresnelSchlick(f0, clamp(dot(V, H), 0.0, 1.0));
+    color += F * distributionGgx(clamp(dot(m.N, H), 0.0, 1.0), alpha) * visibilitySmithGgx(NdotL, NdotV, alpha) *
+             light.radiance * NdotL;
+  }
+  // The environment's specular term, as shadeMetallicRoughness computes it.
+  vec3 R = reflect(-V, m.N);
+  vec3 specularEnv = mix(environmentRadiance(R.y), environmentRadiance(0.3), m.roughness * m.roughness);
+  vec4 c0 = vec4(-1.0, -0.0275, -0.572, 0.022), c1 = vec4(1.0, 0.0425, 1.04, -0.04);
+  vec4 r = m.roughness * c0 + c1;
+  float a004 = min(r.x * r.x, exp2(-9.28 * NdotV)) * r.x + r.y;
+  vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
+  color += m.occlusion * specularEnv * (f0 * ab.x + ab.y);
+  return vec4(color, diffuse.a);
+}
