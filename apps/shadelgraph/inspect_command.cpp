@@ -1,5 +1,5 @@
 // shadelgraph inspect <scene>: per mesh, triangles, UV sets, the shading-chart
-// verdict with its counts, and materials. No device needed.
+// verdict with its counts, and materials; the animations. No device needed.
 #include <cstdio>
 #include <set>
 
@@ -47,6 +47,18 @@ void addInspectCommand(CLI::App& app) {
       }
       std::printf("\n  materials:");
       for (int m : materials) std::printf(" '%s'", s.materials[size_t(m)].name.c_str());
+      std::printf("\n");
+    }
+    for (const auto& animation : s.animations) {
+      const char* paths[] = {"translation", "rotation", "scale", "weights"};
+      const char* interpolations[] = {"STEP", "LINEAR", "CUBICSPLINE"};
+      std::printf("animation '%s': %.3f s, %zu channels:", animation.name.c_str(), double(animation.duration()),
+                  animation.channels.size());
+      for (size_t c = 0; c < animation.channels.size(); ++c) {
+        const auto& channel = animation.channels[c];
+        std::printf("%s '%s' %s %s", c ? "," : "", s.nodes[size_t(channel.node)].name.c_str(), paths[int(channel.path)],
+                    interpolations[int(animation.samplers[size_t(channel.sampler)].interpolation)]);
+      }
       std::printf("\n");
     }
     for (const auto& w : s.warnings) std::printf("warning: %s\n", w.c_str());

@@ -59,6 +59,12 @@ void writeStats(const std::string& path, const AppSession& session, const render
   }
   nlohmann::json memoryJson = nlohmann::json::object();
   for (const auto& [category, bytes] : memory.bytesByCategory) memoryJson[category] = bytes;
+  // Each object's shading and why (auto mode's choice, or why it cannot go decoupled).
+  nlohmann::json objects = nlohmann::json::array();
+  for (const auto& choice : session.decoupled->choices())
+    objects.push_back({{"name", session.scene.instances[choice.instance].name},
+                       {"shading", choice.decoupled ? "decoupled" : "forward"},
+                       {"reason", choice.reason}});
   nlohmann::json stats{{"frame_ms", frame.timings.frameMs},
                        {"gpu_ms", frame.timings.gpuMs},
                        // GPU time of each raster frame of --frames (first to last timestamp of
@@ -72,6 +78,7 @@ void writeStats(const std::string& path, const AppSession& session, const render
                        {"memory_bytes", memoryJson},
                        {"objects_forward", session.scene.instances.size() - d.objects},
                        {"objects_decoupled", d.objects},
+                       {"objects", objects},
                        {"covered_pixels", d.counters.coveredPixels},
                        {"shadels_marked", uint64_t(d.counters.chunksMarked) * 64},
                        {"shadels_allocated", uint64_t(d.counters.chunksAllocated) * 64},

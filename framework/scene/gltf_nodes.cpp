@@ -203,6 +203,7 @@ class NodeWalker {
   // The node's local transform kept in Scene::nodes (already checked finite by localTransform).
   int keep(const tinygltf::Node& in, int index, int parent) {
     Node out;
+    out.name = in.name.empty() ? "node " + std::to_string(index) : in.name;
     out.parent = parent;
     if (in.matrix.size() == 16) {
       out.hasMatrix = true;

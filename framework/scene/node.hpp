@@ -1,7 +1,7 @@
 #pragma once
 // The node hierarchy of the loaded glTF files, kept so that animations can
 // move it: instances and cameras name the node they hang off.
-#include <vector>
+#include <string>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -9,6 +9,7 @@
 namespace sg::scene {
 
 struct Node {
+  std::string name;  // the glTF node's, or "node N" (its index in the file)
   int parent = -1;  // index into Scene::nodes, always lower than this node's own; -1: a root
   // Local transform: translation * rotation * scale, or `matrix` when the file gives one
   // (glTF forbids animating such nodes).

@@ -63,6 +63,12 @@ TEST_P(AnimationCli, TimePosesTheSceneAndFramesPlayIt) {
   EXPECT_EQ(differingPixels(later.image, again.image), 0u) << "a time is one pose";
   const Rendered played = render(mode + " --time 1.2 --fps 10 --frames 3", "played");  // at 1.0, 1.1 and 1.2 s
   EXPECT_GT(differingPixels(played.image, start.image), 96u * 72u / 50);
+  // Every object with its shading and the reason, as --mode asked.
+  ASSERT_EQ(played.stats["objects"].size(), 2u) << played.stats.dump();
+  for (const auto& object : played.stats["objects"]) {
+    EXPECT_EQ(object["shading"], GetParam()) << object.dump();
+    EXPECT_FALSE(object["reason"].get<std::string>().empty()) << object.dump();
+  }
   if (std::string(GetParam()) == "decoupled") {
     EXPECT_EQ(played.stats["objects_decoupled"], 2) << played.stats.dump();
     EXPECT_EQ(played.stats["composite_misses"], 0) << played.stats.dump();
@@ -71,6 +77,15 @@ TEST_P(AnimationCli, TimePosesTheSceneAndFramesPlayIt) {
 
 INSTANTIATE_TEST_SUITE_P(Paths, AnimationCli, testing::Values("forward", "decoupled"),
                          [](const testing::TestParamInfo<const char*>& param) { return std::string(param.param); });
+
+TEST(AnimationCliInspect, ListsEveryAnimationWithItsChannels) {
+  SG_REQUIRE_ASSETS();
+  const auto r = sg::test::runCli("inspect " + sg::test::samplePath("InterpolationTest").string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const char* line : {"animation 'Step Scale': ", " scale STEP", "animation 'CubicSpline Rotation': ",
+                           " rotation CUBICSPLINE", "animation 'Linear Translation': ", " translation LINEAR"})
+    EXPECT_NE(r.output.find(line), std::string::npos) << line << " missing from:\n" << r.output;
+}
 
 void expectOneLineError(const sg::test::CliRun& r, const std::string& mentions) {
   EXPECT_EQ(r.exitCode, 1) << r.output;
