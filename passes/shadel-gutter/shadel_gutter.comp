@@ -6,11 +6,18 @@
 // level's edge, or where that neighbour chunk has no storage this frame (no
 // pixel's footprint started in it: the edge of what is visible at this level),
 // the gutter repeats the chunk's own edge shadel, as if clamped there.
-// One workgroup per owned remap entry, one invocation per chunk.
+// 32 owned remap entries per workgroup (a workgroup per entry cost more in
+// dispatch than the copies); its 64 lanes share their stored chunks' 17
+// gutter texels each.
 #include <framework/shadel/shaders/decoupled.glsl>
 
 layout(local_size_x = 64) in;
 layout(set = 0, binding = kBindLayerImage, rgba16f) uniform image2D shaded;
+
+const uint kGutterTexels = 2u * SG_CHUNK_SIZE + 1u;  // column 8, row 8, the corner
+const uint kEntriesPerGroup = 32u;                     // 8 KiB of listed chunks: within every device's 16 KiB
+shared uint chunkCount;
+shared uint chunks[kEntriesPerGroup * SG_CHUNKS_PER_ENTRY];  // entry of this group << 16 | chunk << 8 | its place in the entry's storage
 
 // The physical chunk of the chunk holding `shadel`, SG_INVALID_CHUNK past the level's edge or without storage.
 uint storedChunk(uvec2 shadel, SgLevelRect rect) {
@@ -20,26 +27,35 @@ uint storedChunk(uvec2 shadel, SgLevelRect rect) {
 }
 
 void main() {
-  uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-  if (group >= params.ownedEntryCount) return;  // the surplus of the last row
-  SgOwnedEntry owned = ownedEntries[group];
-  uint chunk = gl_LocalInvocationIndex;
-  uint physical = sgPhysicalChunk(remap[owned.entryIndex], chunk);
-  if (physical == SG_INVALID_CHUNK) return;
-  SgLevelRect rect = sgLevelRect(owned.instanceId, owned.level);
-  uvec2 origin = sgVirtualShadel(SgShadelAddress(owned.entryIndex, chunk, 0u), params.entriesPerSideLog2);
-  // Levels are powers of two: a neighbouring chunk is wholly inside the level or wholly past its edge.
-  uint right = storedChunk(origin + uvec2(SG_CHUNK_SIZE, 0u), rect);
-  uint below = storedChunk(origin + uvec2(0u, SG_CHUNK_SIZE), rect);
-  uint corner = storedChunk(origin + uvec2(SG_CHUNK_SIZE), rect);
-  for (uint k = 0u; k < 2u * SG_CHUNK_SIZE + 1u; ++k) {
-    // Column 8 (k < 8), row 8 (k < 16), then the corner.
+  uint lane = gl_LocalInvocationIndex;
+  uint first = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * kEntriesPerGroup;
+  if (lane == 0u) chunkCount = 0u;
+  barrier();
+  // Each lane lists its entry's stored chunks.
+  if (lane < kEntriesPerGroup && first + lane < params.ownedEntryCount) {
+    SgRemapEntry entry = remap[ownedEntries[first + lane].entryIndex];
+    uvec2 halves = unpackUint2x32(entry.occupancy);
+    uint count = entry.storageBase == SG_NO_STORAGE ? 0u : uint(bitCount(halves.x) + bitCount(halves.y));
+    if (count != 0u) {
+      uint at = atomicAdd(chunkCount, count), place = 0u;
+      for (uint c = 0u; c < SG_CHUNKS_PER_ENTRY; ++c)
+        if (sgIsChunkMarked(entry.occupancy, c)) chunks[at + place] = (lane << 16u) | (c << 8u) | place++;
+    }
+  }
+  barrier();
+  for (uint t = lane; t < chunkCount * kGutterTexels; t += gl_WorkGroupSize.x) {
+    uint item = chunks[t / kGutterTexels], k = t % kGutterTexels;
+    SgOwnedEntry owned = ownedEntries[first + (item >> 16u)];
+    uint physical = remap[owned.entryIndex].storageBase + (item & 0xFFu);
+    SgLevelRect rect = sgLevelRect(owned.instanceId, owned.level);
+    uvec2 origin = sgVirtualShadel(SgShadelAddress(owned.entryIndex, (item >> 8u) & 0xFFu, 0u), params.entriesPerSideLog2);
     uvec2 inTile = k < SG_CHUNK_SIZE ? uvec2(SG_CHUNK_SIZE, k)
                    : k < 2u * SG_CHUNK_SIZE ? uvec2(k - SG_CHUNK_SIZE, SG_CHUNK_SIZE) : uvec2(SG_CHUNK_SIZE);
-    uint source = k < SG_CHUNK_SIZE ? right : k < 2u * SG_CHUNK_SIZE ? below : corner;
+    uvec2 shadel = origin + inTile;
+    uint source = storedChunk(shadel, rect);
     uvec2 from = source == SG_INVALID_CHUNK
                      ? sgStoredTexel(physical, min(inTile, uvec2(SG_CHUNK_SIZE - 1u)), params.storageWidthChunks)
-                     : sgStoredTexel(source, inTile & (SG_CHUNK_SIZE - 1u), params.storageWidthChunks);
+                     : sgStoredTexel(source, shadel & (SG_CHUNK_SIZE - 1u), params.storageWidthChunks);
     imageStore(shaded, ivec2(sgStoredTexel(physical, inTile, params.storageWidthChunks)), imageLoad(shaded, ivec2(from)));
   }
 }

@@ -24,7 +24,7 @@ void addShadelGutter(graph::RenderGraph& graph, DecoupledFrame& frame) {
   pass.execute([frame](PassContext& ctx) {
     const auto& pipeline = ctx.device().pipeline("shadel-gutter", shadelGutterPipeline);
     bindDecoupled(ctx, pipeline, frame, kBindings);
-    const uint32_t groups = frame.ownedEntryCount;  // one per owned entry
+    const uint32_t groups = (frame.ownedEntryCount + 31) / 32;  // 32 owned entries each (the shader's kEntriesPerGroup)
     if (groups)
       vkCmdDispatch(ctx.cmd(), std::min(groups, kMaxGroupsPerRow), (groups + kMaxGroupsPerRow - 1) / kMaxGroupsPerRow, 1);
   });
