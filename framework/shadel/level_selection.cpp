@@ -40,12 +40,12 @@ LevelSelection selectFilterLevel(CompositeFilter filter, glm::vec2 dShadelDx, gl
 
 BilinearTaps bilinearTaps(glm::vec2 uv, uint32_t levelSize) {
   const float size = static_cast<float>(levelSize);
-  const glm::vec2 p = uv * size - 0.5f;
+  const glm::vec2 p = glm::clamp(uv * size - 0.5f, glm::vec2(0.0f), glm::vec2(size - 1.0f));
   const glm::vec2 base = glm::floor(p);
   BilinearTaps taps;
-  taps.lo = glm::uvec2(glm::clamp(base, glm::vec2(0.0f), glm::vec2(size - 1.0f)));
-  taps.hi = glm::uvec2(glm::clamp(base + 1.0f, glm::vec2(0.0f), glm::vec2(size - 1.0f)));
-  taps.weight = glm::clamp(p - base, glm::vec2(0.0f), glm::vec2(1.0f));
+  taps.lo = glm::uvec2(base);
+  taps.hi = glm::min(taps.lo + 1u, glm::uvec2(levelSize - 1));
+  taps.weight = p - base;
   return taps;
 }
 
@@ -72,32 +72,28 @@ glm::uvec2 nearestTap(const BilinearTaps& taps) {
 FilterFootprint filterFootprint(CompositeFilter filter, glm::vec2 uv, const LevelSelection& selection,
                                 std::span<const LevelRect> levels) {
   FilterFootprint footprint;
+  const bool twoLevels = filter == CompositeFilter::Trilinear && selection.coarse != selection.fine;
+  for (uint32_t level : {selection.fine, selection.coarse}) {
+    if (footprint.tileCount == (twoLevels ? 2u : 1u)) break;
+    const LevelRect& rect = levels[level];
+    const BilinearTaps taps = bilinearTaps(uv, rect.size);
+    footprint.tiles[footprint.tileCount++] = rect.origin + taps.lo;
+  }
   if (filter == CompositeFilter::Point) {
     const LevelRect& rect = levels[selection.fine];
     footprint.shadels[footprint.count++] = rect.origin + nearestTap(bilinearTaps(uv, rect.size));
     return footprint;
   }
   const TrilinearFootprint trilinear = trilinearFootprint(uv, selection, levels);
-  footprint.count = filter == CompositeFilter::Trilinear && selection.coarse != selection.fine ? 8 : 4;
+  footprint.count = twoLevels ? 8 : 4;
   for (uint32_t i = 0; i < footprint.count; ++i) footprint.shadels[i] = trilinear.shadels[i];
   return footprint;
 }
 
-EntryMask footprintEntryMask(glm::uvec2 lo, glm::uvec2 hi, uint32_t side, uint32_t entriesPerSideLog2) {
-  const glm::uvec2 eLo = lo >> kEntrySizeLog2, eHi = hi >> kEntrySizeLog2;
-  const glm::uvec2 cLo = (lo >> kChunkSizeLog2) & (kEntryChunks - 1), cHi = (hi >> kChunkSizeLog2) & (kEntryChunks - 1);
-  const bool splitX = eLo.x != eHi.x, splitY = eLo.y != eHi.y;
-  const bool sx = (side & 1) != 0, sy = (side & 2) != 0;
-  EntryMask result;
-  if ((sx && !splitX) || (sy && !splitY)) return result;
-  const glm::uvec2 entry{sx ? eHi.x : eLo.x, sy ? eHi.y : eLo.y};
-  const uint32_t columns = splitX ? (1u << (sx ? cHi.x : cLo.x)) : ((1u << cLo.x) | (1u << cHi.x));
-  const uint32_t rowLo = splitY ? (sy ? cHi.y : cLo.y) : cLo.y;
-  const uint32_t rowHi = splitY ? rowLo : cHi.y;
-  result.used = true;
-  result.entryIndex = (entry.y << entriesPerSideLog2) | entry.x;
-  result.mask = (uint64_t{columns} << (rowLo * kEntryChunks)) | (uint64_t{columns} << (rowHi * kEntryChunks));
-  return result;
+bool inFootprintTile(glm::uvec2 tileShadel, glm::uvec2 shadel) {
+  const glm::uvec2 chunkOrigin = tileShadel & ~(kChunkSize - 1);
+  return glm::all(glm::greaterThanEqual(shadel, chunkOrigin)) &&
+         glm::all(glm::lessThan(shadel, chunkOrigin + kStoredChunkSize));
 }
 
 }  // namespace sg::shadel

@@ -1,7 +1,7 @@
 #pragma once
-// Detail-level selection and the trilinear footprint, shared by shadel-mark
-// (which marks every shadel the footprint touches) and composite (which
-// reads them): both must run exactly this math, or composite reads shadels
+// Detail-level selection and the filters' footprints, shared by shadel-mark
+// (which marks the chunk whose tile holds a level's footprint) and composite
+// (which reads them): both must run exactly this math, or composite reads shadels
 // nobody marked. Mirrored by shaders/shadel_level.glsl.
 #include <array>
 #include <cstdint>
@@ -30,7 +30,9 @@ LevelSelection selectDetailLevel(glm::vec2 dShadelDx, glm::vec2 dShadelDy, float
 
 // The 2x2 bilinear taps of a level of `levelSize` shadels at a shading UV in
 // [0,1]²: level-local shadels {lo.x, hi.x} x {lo.y, hi.y}, clamped to the
-// level's edge (the chart does not wrap), and the weights of hi. uv *
+// level's edge (the chart does not wrap), and the weights of hi: the
+// sample is clamped to the level's texel centres, so a clamped tap weighs 0
+// and lo + 1 may stand in for hi (composite's tile read). uv *
 // levelSize is exact in float (a power-of-two scale), so C++ and GLSL agree
 // bit for bit. GLSL: sgBilinearTaps.
 struct BilinearTaps {
@@ -70,24 +72,22 @@ glm::uvec2 nearestTap(const BilinearTaps& taps);
 
 // The virtual shadels a filter reads: point 1 (fine level), bilinear 4 (fine
 // level), trilinear 8, or 4 when the coarse level is the fine one.
-// `selection`: selectFilterLevel's for the same filter.
+// `selection`: selectFilterLevel's for the same filter. Composite reads each
+// level's shadels from one chunk tile (the chunk and its one-shadel gutter,
+// storedTexel): the tile of `tiles[i]`, the level's top-left tap, one per
+// level read. shadel-mark marks exactly the chunks of `tiles`.
+// GLSL: sgFootprintTileShadel.
 struct FilterFootprint {
   std::array<glm::uvec2, 8> shadels{};
   uint32_t count = 0;
+  std::array<glm::uvec2, 2> tiles{};
+  uint32_t tileCount = 0;
 };
 FilterFootprint filterFootprint(CompositeFilter filter, glm::vec2 uv, const LevelSelection& selection,
                                 std::span<const LevelRect> levels);
 
-// shadel-mark's update of one level of a footprint: the virtual-shadel
-// rectangle [lo, hi] (hi - lo in {0,1}²) touches at most 2x2 remap entries;
-// `side` (0..3: x bit, y bit) picks one. `used` is false when that side is the
-// same entry as one already covered; else the entry's index and the
-// occupancy bits of every chunk of the rectangle in it. GLSL: sgFootprintEntryMask.
-struct EntryMask {
-  bool used = false;
-  uint32_t entryIndex = 0;
-  uint64_t mask = 0;
-};
-EntryMask footprintEntryMask(glm::uvec2 lo, glm::uvec2 hi, uint32_t side, uint32_t entriesPerSideLog2);
+// Whether the tile of tileShadel's chunk (its 8x8 shadels, the next column
+// and the next row) holds `shadel`.
+bool inFootprintTile(glm::uvec2 tileShadel, glm::uvec2 shadel);
 
 }  // namespace sg::shadel

@@ -21,6 +21,11 @@ inline constexpr uint32_t kEntrySize = 64;            // shadels per remap entry
 inline constexpr uint32_t kEntrySizeLog2 = 6;
 inline constexpr uint32_t kChunksPerEntry = 64;       // one occupancy bit each
 inline constexpr uint32_t kShadelsPerChunk = 64;
+// A chunk's tile in shade storage: its 8x8 shadels plus a one-shadel gutter
+// right and below, a copy of the next chunks' first column and row
+// (passes/shadel-gutter), so a bilinear footprint whose top-left tap is in
+// the chunk never leaves its tile: composite needs one remap lookup per level.
+inline constexpr uint32_t kStoredChunkSize = kChunkSize + 1;
 
 // RemapEntry::storageBase of an entry that got no storage (never marked, or
 // the allocator's partition overflowed).

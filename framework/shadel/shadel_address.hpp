@@ -71,11 +71,18 @@ inline uint32_t physicalChunk(const RemapEntry& entry, uint32_t chunkIndex) {
 uint32_t physicalChunkOf(std::span<const RemapEntry> remap, glm::uvec2 shadel, uint32_t entriesPerSideLog2);
 
 // Physical storage is a 2D image (one per layer) of widthChunks x heightChunks
-// chunks, chunk c at (c % widthChunks, c / widthChunks), texels row-major
-// inside. GLSL: sgStorageTexel.
-inline glm::uvec2 storageTexel(uint32_t physicalChunkIndex, uint32_t texelIndex, uint32_t widthChunks) {
+// chunk tiles of kStoredChunkSize² texels (the chunk and its gutter), chunk c
+// at (c % widthChunks, c / widthChunks). `inTile` in [0, kStoredChunkSize)²:
+// texel (x, y) of the tile holds the chunk's shadel (x, y), x or y = 8 the
+// gutter. GLSL: sgStoredTexel.
+inline glm::uvec2 storedTexel(uint32_t physicalChunkIndex, glm::uvec2 inTile, uint32_t widthChunks) {
   const glm::uvec2 chunk(physicalChunkIndex % widthChunks, physicalChunkIndex / widthChunks);
-  return chunk * kChunkSize + glm::uvec2(texelIndex & (kChunkSize - 1), texelIndex >> 3);
+  return chunk * kStoredChunkSize + inTile;
+}
+
+// The texel of shadel texelIndex (row-major 8x8) of a physical chunk. GLSL: sgStorageTexel.
+inline glm::uvec2 storageTexel(uint32_t physicalChunkIndex, uint32_t texelIndex, uint32_t widthChunks) {
+  return storedTexel(physicalChunkIndex, glm::uvec2(texelIndex & (kChunkSize - 1), texelIndex >> 3), widthChunks);
 }
 
 // Which of `counterCount` allocation counters (storage partitions)

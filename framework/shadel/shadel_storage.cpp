@@ -17,7 +17,7 @@ StorageLayout storageLayoutFor(uint32_t chunks, uint32_t counterCount, uint32_t 
   layout.counterCount = std::clamp(counterCount, 1u, chunks);
   layout.chunksPerCounter = (chunks + layout.counterCount - 1) / layout.counterCount;
   const uint32_t needed = layout.capacityChunks();
-  const uint32_t maxWidth = std::max(std::bit_floor(maxImageSize / 8), 1u);
+  const uint32_t maxWidth = std::max(std::bit_floor(maxImageSize / kStoredChunkSize), 1u);
   const auto side = static_cast<uint32_t>(std::ceil(std::sqrt(static_cast<double>(needed))));
   layout.widthChunks = std::min(std::bit_ceil(side), maxWidth);
   layout.heightChunks = (needed + layout.widthChunks - 1) / layout.widthChunks;

@@ -7,6 +7,8 @@
 // that overflows every frame.
 #include <cstdint>
 
+#include <shadelgraph/shadel/remap_entry.hpp>
+
 namespace sg::shadel {
 
 inline constexpr double kDefaultStorageFactor = 2.0;
@@ -16,7 +18,7 @@ inline constexpr double kMinStorageFactor = 1.25;
 // with factor raised to kMinStorageFactor if below it.
 uint32_t chunksForOutput(uint32_t width, uint32_t height, double factor = kDefaultStorageFactor);
 
-// A layer image of widthChunks x heightChunks chunks (see storageTexel in
+// A layer image of widthChunks x heightChunks chunk tiles (see storedTexel in
 // shadel_address.hpp), split into `counterCount` equal partitions, each
 // filled by its own atomic counter in shadel-allocate: partition c starts at
 // chunk c * chunksPerCounter. Chunks past counterCount * chunksPerCounter are
@@ -28,8 +30,8 @@ struct StorageLayout {
   uint32_t chunksPerCounter = 0;
 
   uint32_t capacityChunks() const { return counterCount * chunksPerCounter; }
-  uint32_t widthTexels() const { return widthChunks * 8; }
-  uint32_t heightTexels() const { return heightChunks * 8; }
+  uint32_t widthTexels() const { return widthChunks * kStoredChunkSize; }
+  uint32_t heightTexels() const { return heightChunks * kStoredChunkSize; }
 };
 
 // At least `chunks` usable chunks in an image no wider than maxImageSize

@@ -6,6 +6,8 @@
 
 #include <shadelgraph/gpu/pass_context.hpp>
 
+#include "shadel-gutter/shadel_gutter.hpp"
+
 namespace sg::passes {
 namespace {
 constexpr std::array kBindings{kBindFrame, kBindParams, kBindObjects,  kBindShadelInstances,
@@ -32,6 +34,8 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
   if (frame.markedFilter >= 0 && frame.markedFilter != frame.filter)
     throw std::logic_error("composite filter " + std::to_string(frame.filter) + " differs from shadel-mark's " +
                            std::to_string(frame.markedFilter));
+  // Each level's footprint is read from one chunk tile: fill the tiles' gutters first.
+  addShadelGutter(graph, frame);
   auto& pass = graph.addPass("composite", graph::QueueClass::Graphics);
   pass.read(color, graph::Access::ColorAttachmentRead);
   pass.read(depth, graph::Access::DepthRead);

@@ -1,8 +1,9 @@
 #version 460
 // Filters the shaded samples: the same level selection as shadel-mark
 // (sgSelectFilterLevel: the nearest level for point and bilinear, fine and
-// coarse for trilinear), then the filter's taps through the remap table. A lookup that finds no stored shadel is counted
-// (composite misses: must be zero, the watertightness guarantee).
+// coarse for trilinear), then the filter's taps from one chunk tile per
+// level. A lookup that finds no stored shadel is counted (composite misses:
+// must be zero, the watertightness guarantee).
 #include <framework/render/shaders/object.glsl>
 #include <framework/shadel/shaders/decoupled.glsl>
 #include <framework/render/shaders/debug_color.glsl>
@@ -19,24 +20,23 @@ layout(location = 0) out vec4 outColor;
 #endif
 const uint kFilter = SG_FILTER;
 
-vec4 fetchShadel(uvec2 shadel) {
+// The level's footprint is in one chunk tile of shade storage (the chunk and
+// its one-shadel gutter): the tile of the top-left tap, the chunk shadel-mark
+// marked. One remap lookup per level.
+vec4 filterLevel(uint level) {
+  SgLevelRect rect = sgLevelRect(object.objectId, level);
+  SgBilinearTaps taps = sgBilinearTaps(inShadingUv, rect.size);
+  uvec2 shadel = sgFootprintTileShadel(rect, taps);
   SgShadelAddress a = sgShadelAddress(shadel, params.entriesPerSideLog2);
   uint physical = sgPhysicalChunk(remap[a.entryIndex], a.chunkIndex);
   if (physical == SG_INVALID_CHUNK) {
     atomicAdd(counters.compositeMisses, 1u);
     return vec4(1.0, 0.0, 1.0, 1.0);  // magenta: visible if it ever happens
   }
-  return texelFetch(layerImage, ivec2(sgStorageTexel(physical, a.texelIndex, params.storageWidthChunks)), 0);
-}
-
-vec4 filterLevel(uint level) {
-  SgLevelRect rect = sgLevelRect(object.objectId, level);
-  SgBilinearTaps taps = sgBilinearTaps(inShadingUv, rect.size);
-  if (kFilter == SG_FILTER_POINT) return fetchShadel(rect.origin + sgNearestTap(taps));
-  // A remap read per tap: reading a level's shared entry once (a branch for
-  // taps that straddle an entry edge) measured no faster here (issue 14).
-  vec4 c00 = fetchShadel(sgFootprintShadel(rect, taps, 0u)), c10 = fetchShadel(sgFootprintShadel(rect, taps, 1u));
-  vec4 c01 = fetchShadel(sgFootprintShadel(rect, taps, 2u)), c11 = fetchShadel(sgFootprintShadel(rect, taps, 3u));
+  ivec2 t = ivec2(sgStoredTexel(physical, shadel & (SG_CHUNK_SIZE - 1u), params.storageWidthChunks));
+  if (kFilter == SG_FILTER_POINT) return texelFetch(layerImage, t + ivec2(greaterThanEqual(taps.weight, vec2(0.5))), 0);
+  vec4 c00 = texelFetch(layerImage, t, 0), c10 = texelFetch(layerImage, t + ivec2(1, 0), 0);
+  vec4 c01 = texelFetch(layerImage, t + ivec2(0, 1), 0), c11 = texelFetch(layerImage, t + ivec2(1, 1), 0);
   return mix(mix(c00, c10, taps.weight.x), mix(c01, c11, taps.weight.x), taps.weight.y);
 }
 

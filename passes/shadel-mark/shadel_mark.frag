@@ -1,11 +1,10 @@
 #version 460
-// Marks the chunks of every shadel composite will read for this pixel: the
-// footprint of the composite filter (SG_FILTER, the same define composite is
-// compiled with) at the levels sgSelectFilterLevel picks for it: point, the
-// nearest shadel of the nearest level; bilinear, the 2x2 taps of the nearest
-// level; trilinear, the 2x2 of the fine and of the coarse level.
-// Each remap entry the footprint touches is read once (the taps of a level
-// usually share it) and atomically updated only when a bit is missing.
+// Marks the chunks composite will read for this pixel: at each level the
+// composite filter (SG_FILTER, the same define composite is compiled with)
+// reads (sgSelectFilterLevel: the nearest for point and bilinear, fine and
+// coarse for trilinear), the chunk of the footprint's top-left tap, whose
+// tile in shade storage (the chunk and a one-shadel gutter) holds the whole
+// footprint. One remap read per level, an atomic only when the bit is missing.
 // Early depth test: hidden surfaces mark nothing. No colour output.
 #include <framework/render/shaders/object.glsl>
 #include <framework/shadel/shaders/decoupled.glsl>
@@ -36,27 +35,14 @@ void markLevel(uint level) {
 
 const bool kMarkCoarse = true;
 #else
-// Marks every chunk of the virtual-shadel rectangle [lo, hi] (hi - lo in {0,1}²).
-void markRect(uvec2 lo, uvec2 hi) {
-  for (uint side = 0u; side < 4u; ++side) {
-    uint entry;
-    uint64_t mask;
-    if (!sgFootprintEntryMask(lo, hi, side, params.entriesPerSideLog2, entry, mask)) continue;
-    // Read first: most pixels find their chunks already marked, and a plain
-    // read is much cheaper than an atomic.
-    if ((remap[entry].occupancy & mask) != mask) atomicOr(remap[entry].occupancy, mask);
-  }
-}
-
 void markLevel(uint level) {
   SgLevelRect rect = sgLevelRect(object.objectId, level);
-  SgBilinearTaps taps = sgBilinearTaps(inShadingUv, rect.size);
-  if (SG_FILTER == SG_FILTER_POINT) {
-    uvec2 shadel = rect.origin + sgNearestTap(taps);
-    markRect(shadel, shadel);
-  } else {
-    markRect(rect.origin + taps.lo, rect.origin + taps.hi);
-  }
+  SgShadelAddress a = sgShadelAddress(sgFootprintTileShadel(rect, sgBilinearTaps(inShadingUv, rect.size)),
+                                      params.entriesPerSideLog2);
+  uint64_t bit = sgChunkBit(a.chunkIndex);
+  // Read first: most pixels find their chunk already marked, and a plain
+  // read is much cheaper than an atomic.
+  if ((remap[a.entryIndex].occupancy & bit) == uint64_t(0)) atomicOr(remap[a.entryIndex].occupancy, bit);
 }
 
 const bool kMarkCoarse = SG_FILTER == SG_FILTER_TRILINEAR;

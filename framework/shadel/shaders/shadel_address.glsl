@@ -20,6 +20,7 @@ const uint SG_ENTRY_CHUNKS = 8u;
 const uint SG_ENTRY_SIZE = 64u;
 const uint SG_ENTRY_SIZE_LOG2 = 6u;
 const uint SG_CHUNKS_PER_ENTRY = 64u;
+const uint SG_STORED_CHUNK_SIZE = 9u;  // a chunk's tile in storage: 8x8 and a one-shadel gutter right and below
 const uint SG_NO_STORAGE = 0xFFFFFFFFu;
 const uint SG_NO_INSTANCE = 0xFFFFFFFFu;
 const uint SG_INVALID_CHUNK = 0xFFFFFFFFu;
@@ -102,10 +103,16 @@ uint sgPhysicalChunk(SgRemapEntry entry, uint chunkIndex) {
   return entry.storageBase + sgChunksBefore(entry.occupancy, chunkIndex);
 }
 
-// Mirrors sg::shadel::storageTexel: the texel of a physical chunk in a layer image.
-uvec2 sgStorageTexel(uint physicalChunk, uint texelIndex, uint widthChunks) {
+// Mirrors sg::shadel::storedTexel: texel `inTile` (in [0,9)², 8 = the
+// gutter) of a physical chunk's tile in a layer image.
+uvec2 sgStoredTexel(uint physicalChunk, uvec2 inTile, uint widthChunks) {
   uvec2 chunk = uvec2(physicalChunk % widthChunks, physicalChunk / widthChunks);
-  return chunk * SG_CHUNK_SIZE + uvec2(texelIndex & (SG_CHUNK_SIZE - 1u), texelIndex >> 3u);
+  return chunk * SG_STORED_CHUNK_SIZE + inTile;
+}
+
+// Mirrors sg::shadel::storageTexel: the texel of shadel texelIndex (8x8 row-major) of a physical chunk.
+uvec2 sgStorageTexel(uint physicalChunk, uint texelIndex, uint widthChunks) {
+  return sgStoredTexel(physicalChunk, uvec2(texelIndex & (SG_CHUNK_SIZE - 1u), texelIndex >> 3u), widthChunks);
 }
 
 // Mirrors sg::shadel::storageCounterFor: the allocation counter (storage

@@ -55,15 +55,16 @@ struct SgBilinearTaps {
 };
 
 // Mirrors sg::shadel::bilinearTaps. uv: shading UV in [0,1]² (tileOffset
-// already subtracted).
+// already subtracted). The sample is clamped to the level's texel centres,
+// so a tap clamped at the edge (hi == lo) weighs nothing.
 SgBilinearTaps sgBilinearTaps(vec2 uv, uint levelSize) {
   float size = float(levelSize);
-  vec2 p = uv * size - 0.5;
+  vec2 p = clamp(uv * size - 0.5, vec2(0.0), vec2(size - 1.0));
   vec2 base = floor(p);
   SgBilinearTaps taps;
-  taps.lo = uvec2(clamp(base, vec2(0.0), vec2(size - 1.0)));
-  taps.hi = uvec2(clamp(base + 1.0, vec2(0.0), vec2(size - 1.0)));
-  taps.weight = clamp(p - base, vec2(0.0), vec2(1.0));
+  taps.lo = uvec2(base);
+  taps.hi = min(taps.lo + 1u, uvec2(levelSize - 1u));
+  taps.weight = p - base;
   return taps;
 }
 
@@ -80,29 +81,11 @@ uvec2 sgNearestTap(SgBilinearTaps taps) {
   return uvec2(taps.weight.x >= 0.5 ? taps.hi.x : taps.lo.x, taps.weight.y >= 0.5 ? taps.hi.y : taps.lo.y);
 }
 
-// Mirrors sg::shadel::footprintEntryMask: the virtual-shadel rectangle
-// [lo, hi] (hi - lo in {0,1}², a filter's footprint at one level) touches at
-// most 2x2 remap entries; `side` (0..3: x bit, y bit) picks one. Returns
-// false when that side is the same entry as one already covered, else the
-// entry's index and the occupancy bits of every chunk of the rectangle in
-// it. shadel-mark reads each entry once and sets all its bits at once.
-bool sgFootprintEntryMask(uvec2 lo, uvec2 hi, uint side, uint entriesPerSideLog2, out uint entryIndex,
-                          out uint64_t mask) {
-  uvec2 eLo = lo >> SG_ENTRY_SIZE_LOG2, eHi = hi >> SG_ENTRY_SIZE_LOG2;
-  uvec2 cLo = (lo >> SG_CHUNK_SIZE_LOG2) & (SG_ENTRY_CHUNKS - 1u);
-  uvec2 cHi = (hi >> SG_CHUNK_SIZE_LOG2) & (SG_ENTRY_CHUNKS - 1u);
-  bool splitX = eLo.x != eHi.x, splitY = eLo.y != eHi.y;
-  bool sx = (side & 1u) != 0u, sy = (side & 2u) != 0u;
-  entryIndex = 0u;
-  mask = uint64_t(0u);
-  if ((sx && !splitX) || (sy && !splitY)) return false;
-  uvec2 entry = uvec2(sx ? eHi.x : eLo.x, sy ? eHi.y : eLo.y);
-  uint columns = splitX ? (1u << (sx ? cHi.x : cLo.x)) : ((1u << cLo.x) | (1u << cHi.x));
-  uint rowLo = splitY ? (sy ? cHi.y : cLo.y) : cLo.y;
-  uint rowHi = splitY ? rowLo : cHi.y;
-  entryIndex = (entry.y << entriesPerSideLog2) | entry.x;
-  mask = (uint64_t(columns) << (rowLo * SG_ENTRY_CHUNKS)) | (uint64_t(columns) << (rowHi * SG_ENTRY_CHUNKS));
-  return true;
-}
+// Mirrors sg::shadel::FilterFootprint::tiles: a level's footprint is read
+// from one chunk tile, the one of its top-left tap (shade storage keeps a
+// one-shadel gutter right of and below each chunk, sgStoredTexel), at
+// (tile shadel & 7) + {0,1}². shadel-mark marks that chunk, composite looks
+// it up once.
+uvec2 sgFootprintTileShadel(SgLevelRect rect, SgBilinearTaps taps) { return rect.origin + taps.lo; }
 
 #endif

@@ -25,6 +25,7 @@
 #include <layer-shade/layer_shade.hpp>
 #include <shadel-allocate/shadel_allocate.hpp>
 #include <shadel-clear/shadel_clear.hpp>
+#include <shadel-gutter/shadel_gutter.hpp>
 #include <shadel-mark/shadel_mark.hpp>
 #include <shade-reuse/shade_reuse.hpp>
 #include <shadows/shadows.hpp>
@@ -236,6 +237,7 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   errors += mismatches("work-offsets", passes::workOffsetsPipeline());
   errors += mismatches("work-fill", passes::workFillPipeline());
   errors += mismatches("shade-reuse", passes::shadeReusePipeline());
+  errors += mismatches("shadel-gutter", passes::shadelGutterPipeline());
   for (int filter : {0, 1, 2})
     for (bool levelView : {false, true})
       errors += mismatches("composite filter=" + std::to_string(filter), passes::compositePipeline(filter, levelView));

@@ -91,16 +91,10 @@ std::string compareMirrorResults(const std::vector<uint32_t>& cases, const uint3
     const glm::uvec2 nearest = nearestTap(taps);
     if (r[21] != nearest.x || r[22] != nearest.y) return fail("nearestTap", r[21] * 1e6 + r[22], nearest.x * 1e6 + nearest.y);
 
-    const uint32_t sel = c[8];
-    const glm::uvec2 lo((sel & 4) ? (c[0] | 63u) : c[0], (sel & 8) ? (c[1] | 7u) : c[1]);
-    const glm::uvec2 hi = lo + glm::uvec2((sel >> 4) & 1, (sel >> 5) & 1);
-    const EntryMask m = footprintEntryMask(lo, hi, sel & 3, c[2]);
-    const uint32_t maskWords[] = {m.used ? m.entryIndex : 0xFFFFFFFFu, static_cast<uint32_t>(m.mask),
-                                  static_cast<uint32_t>(m.mask >> 32)};
-    static const char* maskNames[] = {"footprintEntryMask.entryIndex", "footprintEntryMask.mask.lo",
-                                      "footprintEntryMask.mask.hi"};
-    for (size_t k = 0; k < 3; ++k)
-      if (r[23 + k] != maskWords[k]) return fail(maskNames[k], r[23 + k], maskWords[k]);
+    const glm::uvec2 stored = storedTexel(c[7], {c[3] % 9, c[8] % 9}, c[9]);
+    if (r[23] != stored.x || r[24] != stored.y) return fail("storedTexel", r[23] * 1e6 + r[24], stored.x * 1e6 + stored.y);
+    // FilterFootprint::tiles: the level's top-left tap, level-local here.
+    if (r[25] != (taps.lo.x | (taps.lo.y << 16))) return fail("footprint tile", r[25], taps.lo.x | (taps.lo.y << 16));
   }
   return {};
 }

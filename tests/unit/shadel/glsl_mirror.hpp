@@ -70,17 +70,12 @@ void main() {
   results[r + 21u] = nearest.x;
   results[r + 22u] = nearest.y;
 
-  // A footprint rectangle at (cases 0, 1), pushed to entry/chunk edges by bits of case 8.
-  uint sel = cases[c + 8u];
-  uvec2 lo = uvec2((sel & 4u) != 0u ? (cases[c] | 63u) : cases[c], (sel & 8u) != 0u ? (cases[c + 1u] | 7u) : cases[c + 1u]);
-  uvec2 hi = lo + uvec2((sel >> 4u) & 1u, (sel >> 5u) & 1u);
-  uint entryIndex;
-  uint64_t mask;
-  bool used = sgFootprintEntryMask(lo, hi, sel & 3u, log2, entryIndex, mask);
-  results[r + 23u] = used ? entryIndex : 0xFFFFFFFFu;
-  uvec2 maskWords = unpackUint2x32(mask);
-  results[r + 24u] = maskWords.x;
-  results[r + 25u] = maskWords.y;
+  // The tile texel (cases 3, 8 mod 9: gutter included) of physical chunk case 7.
+  uvec2 stored = sgStoredTexel(cases[c + 7u], uvec2(cases[c + 3u] % 9u, cases[c + 8u] % 9u), cases[c + 9u]);
+  results[r + 23u] = stored.x;
+  results[r + 24u] = stored.y;
+  uvec2 tile = sgFootprintTileShadel(rect, taps);
+  results[r + 25u] = (tile.x - 1000u) | ((tile.y - 2000u) << 16u);
 }
 )";
 

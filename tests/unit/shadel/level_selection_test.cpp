@@ -109,13 +109,21 @@ TEST(BilinearTaps, TexelCentresAndEdges) {
   taps = bilinearTaps({4.0f / 8, 1.0f / 8}, 8);
   EXPECT_EQ(taps.lo, glm::uvec2(3, 0));
   EXPECT_EQ(taps.weight, glm::vec2(0.5f));
-  // The chart's edges clamp instead of wrapping.
+  // The chart's edges clamp instead of wrapping: the sample moves to the
+  // edge texel's centre, so a tap past it weighs nothing.
   taps = bilinearTaps({0.0f, 1.0f}, 8);
   EXPECT_EQ(taps.lo, glm::uvec2(0, 7));
-  EXPECT_EQ(taps.hi, glm::uvec2(0, 7));
+  EXPECT_EQ(taps.hi, glm::uvec2(1, 7));
+  EXPECT_EQ(taps.weight, glm::vec2(0.0f));
   taps = bilinearTaps({-0.01f, 1.01f}, 8);
   EXPECT_EQ(taps.lo, glm::uvec2(0, 7));
-  EXPECT_EQ(taps.hi, glm::uvec2(0, 7));
+  EXPECT_EQ(taps.hi, glm::uvec2(1, 7));
+  EXPECT_EQ(taps.weight, glm::vec2(0.0f));
+  // A one-shadel level.
+  taps = bilinearTaps({0.7f, 0.2f}, 1);
+  EXPECT_EQ(taps.lo, glm::uvec2(0));
+  EXPECT_EQ(taps.hi, glm::uvec2(0));
+  EXPECT_EQ(taps.weight, glm::vec2(0.0f));
 }
 
 TEST(TrilinearFootprint, StaysInsideTheInstanceLevels) {
@@ -174,30 +182,33 @@ TEST(FilterFootprint, PointAndBilinearAreInsideTrilinear) {
   EXPECT_EQ(filterFootprint(CompositeFilter::Trilinear, {0.3f, 0.6f}, single, levels).count, 4u);
 }
 
-// shadel-mark's per-entry masks mark exactly the chunks of the footprint's
-// shadels, each entry once, across chunk and entry boundaries.
-TEST(FootprintEntryMask, MarksExactlyTheChunksOfTheRectangle) {
+// Composite reads each level's footprint from one chunk tile (the chunk and
+// its one-shadel gutter): the tile of the chunk shadel-mark marks. Across
+// chunk and entry edges, at level edges and for levels smaller than a chunk.
+TEST(FilterFootprint, EveryTapIsInTheMarkedChunksTile) {
+  const LevelRect levels[] = {{{4096, 0}, 128, 128}, {{4224, 64}, 64, 64}, {{4288, 72}, 4, 8}};
   std::mt19937 rng(11);
+  std::uniform_real_distribution<float> uvDistribution(-0.02f, 1.02f), blend(0.0f, 1.0f);
   for (int i = 0; i < 20000; ++i) {
-    const uint32_t log2 = 10;
-    // Near entry and chunk boundaries half the time.
-    glm::uvec2 lo(rng() % 4000, rng() % 4000);
-    if (i % 2) lo = (lo & ~63u) + glm::uvec2(rng() % 2 ? 63 : 7, rng() % 2 ? 63 : 15);
-    const glm::uvec2 hi = lo + glm::uvec2(rng() % 2, rng() % 2);
-    std::map<uint32_t, uint64_t> expected, marked;
-    for (uint32_t y = lo.y; y <= hi.y; ++y)
-      for (uint32_t x = lo.x; x <= hi.x; ++x) {
-        const ShadelAddress a = addressOf({x, y}, log2);
-        expected[a.entryIndex] |= uint64_t{1} << a.chunkIndex;
+    const glm::vec2 uv(uvDistribution(rng), uvDistribution(rng));
+    const uint32_t fine = rng() % 3;
+    const LevelSelection selection{float(fine), fine, std::min(fine + 1, 2u), fine == 2 ? 0.0f : blend(rng)};
+    for (CompositeFilter filter : {CompositeFilter::Point, CompositeFilter::Bilinear, CompositeFilter::Trilinear}) {
+      const FilterFootprint footprint = filterFootprint(filter, uv, selection, levels);
+      const bool twoLevels = filter == CompositeFilter::Trilinear && selection.coarse != selection.fine;
+      ASSERT_EQ(footprint.tileCount, twoLevels ? 2u : 1u);
+      for (uint32_t k = 0; k < footprint.count; ++k) {
+        const uint32_t tile = k < 4 ? 0 : 1;
+        ASSERT_TRUE(inFootprintTile(footprint.tiles[tile], footprint.shadels[k]))
+            << "uv " << uv.x << "," << uv.y << " level " << (tile ? selection.coarse : selection.fine);
       }
-    for (uint32_t side = 0; side < 4; ++side) {
-      const EntryMask m = footprintEntryMask(lo, hi, side, log2);
-      if (!m.used) continue;
-      ASSERT_EQ(marked.count(m.entryIndex), 0u) << "entry read twice";
-      marked[m.entryIndex] = m.mask;
     }
-    ASSERT_EQ(marked, expected) << "lo " << lo.x << "," << lo.y << " hi " << hi.x << "," << hi.y;
   }
+  // The tile is the chunk's 9x9: its own 8x8, the next column and row.
+  EXPECT_TRUE(inFootprintTile({71, 7}, {72, 8}));
+  EXPECT_TRUE(inFootprintTile({64, 0}, {64, 0}));
+  EXPECT_FALSE(inFootprintTile({71, 7}, {73, 7}));
+  EXPECT_FALSE(inFootprintTile({71, 8}, {71, 7}));
 }
 
 }  // namespace

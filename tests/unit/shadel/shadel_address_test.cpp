@@ -170,15 +170,21 @@ TEST(ShadelStorage, LayoutHoldsEveryChunkAndPartitionsEvenly) {
     EXPECT_LT(layout.capacityChunks(), chunks + layout.counterCount);
     EXPECT_GE(uint64_t{layout.widthChunks} * layout.heightChunks, layout.capacityChunks());
     EXPECT_LE(layout.widthTexels(), 16384u);
-    // Every usable chunk and texel has its own place in the image.
+    // Every usable chunk's texels and gutter have their own place in the image.
     std::set<std::pair<uint32_t, uint32_t>> seen;
-    for (uint32_t c = 0; c < std::min(layout.capacityChunks(), 2000u); ++c)
+    for (uint32_t c = 0; c < std::min(layout.capacityChunks(), 2000u); ++c) {
       for (uint32_t t : {0u, 9u, 63u}) {
         const glm::uvec2 texel = storageTexel(c, t, layout.widthChunks);
+        ASSERT_EQ(texel, storedTexel(c, {t % kChunkSize, t / kChunkSize}, layout.widthChunks));
+        ASSERT_TRUE(seen.insert({texel.x, texel.y}).second);
+      }
+      for (glm::uvec2 gutter : {glm::uvec2(8, 0), glm::uvec2(8, 7), glm::uvec2(0, 8), glm::uvec2(8, 8)}) {
+        const glm::uvec2 texel = storedTexel(c, gutter, layout.widthChunks);
         ASSERT_LT(texel.x, layout.widthTexels());
         ASSERT_LT(texel.y, layout.heightTexels());
         ASSERT_TRUE(seen.insert({texel.x, texel.y}).second);
       }
+    }
   }
 }
 

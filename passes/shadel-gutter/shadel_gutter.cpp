@@ -1,0 +1,33 @@
+#include "shadel_gutter.hpp"
+
+#include <algorithm>
+#include <array>
+
+#include <shadelgraph/gpu/pass_context.hpp>
+
+namespace sg::passes {
+namespace {
+constexpr std::array kBindings{kBindParams, kBindShadelInstances, kBindLevelRects, kBindRemap, kBindOwnedEntries,
+                               kBindLayerImage};
+constexpr uint32_t kMaxGroupsPerRow = 65535;  // maxComputeWorkGroupCount[0]'s guaranteed minimum
+}  // namespace
+
+gpu::ComputePipelineDesc shadelGutterPipeline() {
+  return {.shader = {.path = "passes/shadel-gutter/shadel_gutter.comp"},
+          .layout = decoupledLayout(kBindings, /*layerImageStorage*/ true)};
+}
+
+void addShadelGutter(graph::RenderGraph& graph, DecoupledFrame& frame) {
+  auto& pass = graph.addPass("shadel-gutter", graph::QueueClass::AsyncCompute);
+  pass.read(frame.remap, graph::Access::StorageRead);
+  frame.shadedColor = pass.write(frame.shadedColor, graph::Access::StorageReadWrite);
+  pass.execute([frame](PassContext& ctx) {
+    const auto& pipeline = ctx.device().pipeline("shadel-gutter", shadelGutterPipeline);
+    bindDecoupled(ctx, pipeline, frame, kBindings);
+    const uint32_t groups = (frame.ownedEntryCount + 31) / 32;  // 32 owned entries each (the shader's kEntriesPerGroup)
+    if (groups)
+      vkCmdDispatch(ctx.cmd(), std::min(groups, kMaxGroupsPerRow), (groups + kMaxGroupsPerRow - 1) / kMaxGroupsPerRow, 1);
+  });
+}
+
+}  // namespace sg::passes
