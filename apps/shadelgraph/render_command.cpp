@@ -179,8 +179,8 @@ void runRender(const RenderArgs& args) {
   settings.framesInFlight = uint32_t(args.framesInFlight);
 
   plugins::DecoupledSettings decoupled{.storageFactor = args.storage, .filter = args.filter,
-                                      .shadeRate = uint32_t(args.shadeRate), .shadeBudgetMs = args.shadeBudget,
-                                      .overlap = args.framesInFlight > 1};
+                                      .shadeRate = uint32_t(args.shadeRate), .overlap = args.framesInFlight > 1,
+                                      .shadeBudgetMs = args.shadeBudget};
   const std::map<std::string, plugins::DebugView> views{{"final", plugins::DebugView::Final},
                                                         {"level", plugins::DebugView::Level},
                                                         {"occupancy", plugins::DebugView::Occupancy},

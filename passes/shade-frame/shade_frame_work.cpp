@@ -13,11 +13,6 @@ namespace {
 constexpr std::array kBindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindWork};
 constexpr std::array kOffsetBindings{kBindParams, kBindWork, kBindArgs};
 
-gpu::ComputePipelineDesc phasePipeline(int phase) {
-  return {.shader = {.path = "passes/shade-frame/shade_frame_work.comp", .defines = {{"SG_PHASE", std::to_string(phase)}}},
-          .layout = decoupledLayout(kBindings)};
-}
-
 // Each step reads (and adds to) what the one before wrote.
 void computeToCompute(VkCommandBuffer cmd) {
   gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
@@ -25,6 +20,17 @@ void computeToCompute(VkCommandBuffer cmd) {
                       VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
 }
 }  // namespace
+
+gpu::ComputePipelineDesc shadeFramePhasePipeline(int phase) {
+  return {.shader = {.path = "passes/shade-frame/shade_frame_work.comp", .defines = {{"SG_PHASE", std::to_string(phase)}}},
+          .layout = decoupledLayout(kBindings)};
+}
+
+gpu::ComputePipelineDesc shadeFrameFillPipeline() {
+  auto desc = workFillPipeline();
+  desc.shader.defines.push_back({"SG_SHADE_ALL", "1"});
+  return desc;
+}
 
 void addShadeFrameWork(graph::RenderGraph& graph, DecoupledFrame& shadeFrame) {
   auto& pass = graph.addPass("shade-frame-work", graph::QueueClass::AsyncCompute);
@@ -36,14 +42,10 @@ void addShadeFrameWork(graph::RenderGraph& graph, DecoupledFrame& shadeFrame) {
   if (shadeFrame.previousStamps.valid()) pass.read(shadeFrame.previousStamps, graph::Access::StorageRead);
   shadeFrame.counters = pass.write(shadeFrame.counters, graph::Access::StorageReadWrite);
   pass.execute([frame = shadeFrame](PassContext& ctx) {
-    const auto& clear = ctx.device().pipeline("shade-frame-clear", [] { return phasePipeline(0); });
-    const auto& count = ctx.device().pipeline("shade-frame-count", [] { return phasePipeline(1); });
+    const auto& clear = ctx.device().pipeline("shade-frame-clear", [] { return shadeFramePhasePipeline(0); });
+    const auto& count = ctx.device().pipeline("shade-frame-count", [] { return shadeFramePhasePipeline(1); });
     const auto& offsets = ctx.device().pipeline("work-offsets", workOffsetsPipeline);
-    const auto& fill = ctx.device().pipeline("work-fill-all", [] {
-      auto desc = workFillPipeline();
-      desc.shader.defines.push_back({"SG_SHADE_ALL", "1"});
-      return desc;
-    });
+    const auto& fill = ctx.device().pipeline("work-fill-all", shadeFrameFillPipeline);
     const uint32_t slots = kWorkSlotsPerObject * frame.objectCount + kWorkGlobalSlots;
     bindDecoupled(ctx, clear, frame, kBindings);
     vkCmdDispatch(ctx.cmd(), (slots + 63) / 64, 1, 1);

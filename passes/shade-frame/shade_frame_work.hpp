@@ -9,5 +9,9 @@ namespace sg::passes {
 // frame's own buffers), for layer-shade passes declared after composite.
 // Async compute. shadeFrame.previousRemap must be invalid (nothing is reused).
 void addShadeFrameWork(graph::RenderGraph& graph, DecoupledFrame& shadeFrame);
+// Its steps: 0 zeroes the list's counters, 1 counts each object's stored
+// chunks; then work-offsets and shadeFrameFillPipeline (work-fill, nothing reused).
+gpu::ComputePipelineDesc shadeFramePhasePipeline(int phase);
+gpu::ComputePipelineDesc shadeFrameFillPipeline();
 
 }  // namespace sg::passes

@@ -102,7 +102,8 @@ void registerDecoupledPackage(plugin::Registry& registry) {
   registry.addPass({.name = "composite",
                     .description = "draws decoupled objects filtering their shaded samples through the remap table",
                     .reads = {"scene.hdr", "scene.depth", "shadel.shaded", "shadel.remap", "shadel.counters"},
-                    .writes = {"scene.hdr", "shadel.counters"},
+                    // shadel.shaded: its shadel-gutter step fills the tiles' gutters first.
+                    .writes = {"scene.hdr", "shadel.shaded", "shadel.counters"},
                     .parameters = {{"filter", -1, "0 point, 1 bilinear, 2 trilinear; -1: the renderer's setting"}},
                     // The filter is settled here, before any pass declares: shadel-mark
                     // marks the footprint of the same filter.
@@ -121,7 +122,7 @@ void registerDecoupledPackage(plugin::Registry& registry) {
                       passes::DecoupledFrame& frame = d.frame(ctx);
                       ctx.write("scene.hdr", passes::addComposite(ctx.graph(), frame, ctx.read("scene.hdr"),
                                                                   ctx.read("scene.depth")));
-                      d.publish(ctx, {"shadel.counters"});
+                      d.publish(ctx, {"shadel.shaded", "shadel.counters"});
                     }});
   registry.addPass({.name = "counters-readback",
                     .description = "copies the shade counters for the adjuster and the stats (read a frame later)",

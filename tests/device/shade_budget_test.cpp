@@ -90,16 +90,21 @@ TEST(ShadeBudget, StalestChunksAreReshadedFirst) {
   ASSERT_GT(visible, 40u);
   const double quarterMs = 0.01 * double(visible / 4);
   Session n(scene::makeDefaultScene(64), scene::ShadingMode::Decoupled, budgetOf(quarterMs));
+  uint32_t refreshed = 0, frames = 0;
   for (int frame = 0; frame < 12; ++frame) {
     n.render(kSize, panCamera(0));
     const auto s = n.stats();
     EXPECT_EQ(s.counters.compositeMisses, 0u);
     if (frame < 2) continue;
     EXPECT_GT(s.counters.chunksRefreshed, 0u) << "frame " << frame;
-    EXPECT_LE(s.counters.chunksRefreshed, visible / 2) << "frame " << frame << ": about the budget";
+    EXPECT_LT(s.counters.chunksRefreshed, visible) << "frame " << frame << ": never everything";
     EXPECT_GT(s.counters.chunksReused, 0u) << "frame " << frame << ": the rest left stale";
     if (frame >= 6) { EXPECT_LE(s.counters.staleMaxAge, 6u) << "frame " << frame; }
+    refreshed += s.counters.chunksRefreshed;
+    ++frames;
   }
+  // The budget is met on average (one frame of latency, whole age bins): within 2x of it.
+  EXPECT_LE(refreshed / frames, visible / 2) << "about the budget on average";
 }
 
 }  // namespace

@@ -25,6 +25,7 @@
 #include <layer-shade/layer_shade.hpp>
 #include <shadel-allocate/shadel_allocate.hpp>
 #include <shadel-clear/shadel_clear.hpp>
+#include <shade-frame/shade_frame_work.hpp>
 #include <shadel-gutter/shadel_gutter.hpp>
 #include <shadel-mark/shadel_mark.hpp>
 #include <shade-reuse/shade_reuse.hpp>
@@ -238,6 +239,8 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   errors += mismatches("work-fill", passes::workFillPipeline());
   errors += mismatches("shade-reuse", passes::shadeReusePipeline());
   errors += mismatches("shadel-gutter", passes::shadelGutterPipeline());
+  for (int phase : {0, 1}) errors += mismatches("shade-frame-work", passes::shadeFramePhasePipeline(phase));
+  errors += mismatches("work-fill SG_SHADE_ALL", passes::shadeFrameFillPipeline());
   for (int filter : {0, 1, 2})
     for (bool levelView : {false, true})
       errors += mismatches("composite filter=" + std::to_string(filter), passes::compositePipeline(filter, levelView));
