@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 
 #include <builtin_plugins.hpp>
 #include <builtin_shaders.hpp>
@@ -16,6 +17,22 @@
 #include "device_fixture.hpp"
 
 namespace sg::test {
+
+// A camera panning sideways over the default scene, `step` units a frame (the shade-rate tests' path).
+inline scene::Camera panCamera(int frame, float step = 0.15f) {
+  scene::Camera camera{.name = "pan", .yfov = 0.9f, .znear = 0.05f, .zfar = 100.0f};
+  const float x = -1.5f + step * float(frame);
+  camera.world = scene::lookAtWorld({x, 2.0f, 6.0f}, {x * 0.5f, 1.0f, -1.0f});
+  return camera;
+}
+
+// The index of the object called `name` (a test failure and 0 if there is none).
+inline uint32_t instanceNamed(const scene::Scene& scene, const std::string& name) {
+  for (uint32_t i = 0; i < scene.instances.size(); ++i)
+    if (scene.instances[i].name == name) return i;
+  ADD_FAILURE() << "no object '" << name << "' in the scene";
+  return 0;
+}
 
 // A scene rendered through the decoupled recipe with every object in `mode`.
 class Session {

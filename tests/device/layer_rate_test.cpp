@@ -23,19 +23,7 @@ plugins::DecoupledSettings settingsAt(uint32_t rate) {
   return {.storageChunks = 8192, .fixedBias = 0.0f, .shadeRate = rate};
 }
 
-scene::Camera panCamera(int frame) {
-  scene::Camera camera{.name = "pan", .yfov = 0.9f, .znear = 0.05f, .zfar = 100.0f};
-  const float x = -1.5f + 0.15f * float(frame);
-  camera.world = scene::lookAtWorld({x, 2.0f, 6.0f}, {x * 0.5f, 1.0f, -1.0f});
-  return camera;
-}
 
-uint32_t instanceNamed(const scene::Scene& scene, const std::string& name) {
-  for (uint32_t i = 0; i < scene.instances.size(); ++i)
-    if (scene.instances[i].name == name) return i;
-  ADD_FAILURE() << "no object '" << name << "'";
-  return 0;
-}
 
 // The default scene with every object in `material`, or only `only` when given.
 scene::Scene sceneWith(const std::string& material, const std::string& only = "") {

@@ -21,12 +21,6 @@ plugins::DecoupledSettings budgetOf(double ms) {
   return {.storageChunks = 8192, .fixedBias = 0.0f, .shadeBudgetMs = ms, .budgetMsPerChunk = 0.01};
 }
 
-scene::Camera panCamera(int frame) {
-  scene::Camera camera{.name = "pan", .yfov = 0.9f, .znear = 0.05f, .zfar = 100.0f};
-  const float x = -1.5f + 0.15f * float(frame);
-  camera.world = scene::lookAtWorld({x, 2.0f, 6.0f}, {x * 0.5f, 1.0f, -1.0f});
-  return camera;
-}
 
 // Shade rate 4, static camera: the oldest shading read is 0, 1, 2, 3 frames
 // old through a shade period, then 0 again on the next shade frame.

@@ -24,12 +24,6 @@ plugins::DecoupledSettings settingsAt(uint32_t rate, bool overlap) {
   return {.storageChunks = 8192, .fixedBias = 0.0f, .shadeRate = rate, .overlap = overlap};
 }
 
-scene::Camera panCamera(int frame) {
-  scene::Camera camera{.name = "pan", .yfov = 0.9f, .znear = 0.05f, .zfar = 100.0f};
-  const float x = -1.5f + 0.1f * float(frame);
-  camera.world = scene::lookAtWorld({x, 2.0f, 6.0f}, {x * 0.5f, 1.0f, -1.0f});
-  return camera;
-}
 
 render::FrameResult renderInFlight(Session& s, const scene::Camera& camera) {
   return s.renderer().render({.width = kSize, .height = kSize, .cameraOverride = camera, .framesInFlight = 2});
@@ -44,11 +38,11 @@ bool hasTailPass(const graph::CompiledPlan& plan, const std::string& name) {
 
 TEST(ShadeFrameOverlap, ShadeFrameIsTheTailOfItsRasterFrame) {
   Session s(scene::makeDefaultScene(64), scene::ShadingMode::Decoupled, settingsAt(4, true));
-  const auto plan = s.plan(kSize, panCamera(0));  // frame 0: a shade frame
+  const auto plan = s.plan(kSize, panCamera(0, 0.1f));  // frame 0: a shade frame
   EXPECT_TRUE(hasTailPass(plan, "shade-frame-work"));
   EXPECT_TRUE(hasTailPass(plan, "shade-frame layer-shade"));
   EXPECT_FALSE(hasTailPass(plan, "composite"));
-  const auto next = s.plan(kSize, panCamera(0));  // frame 1: raster only
+  const auto next = s.plan(kSize, panCamera(0, 0.1f));  // frame 1: raster only
   EXPECT_FALSE(hasTailPass(next, "shade-frame layer-shade"));
 }
 
@@ -59,8 +53,8 @@ TEST(ShadeFrameOverlap, StaticCameraGivesTheImagesOfRate1) {
   Session one(scene, scene::ShadingMode::Decoupled, settingsAt(1, false));
   Session n(scene, scene::ShadingMode::Decoupled, settingsAt(4, true));
   for (int frame = 0; frame < 9; ++frame) {
-    const auto expected = one.render(kSize, panCamera(0));
-    const auto image = renderInFlight(n, panCamera(0)).image;
+    const auto expected = one.render(kSize, panCamera(0, 0.1f));
+    const auto image = renderInFlight(n, panCamera(0, 0.1f)).image;
     const auto diff = image::compareRgba8(expected.rgba8, image.rgba8);
     EXPECT_EQ(diff.maxAbs, 0) << "frame " << frame << ": PSNR " << diff.psnr;
     const auto st = n.stats();
@@ -85,7 +79,7 @@ TEST(ShadeFrameOverlap, MovingCameraAndObjectMissNothing) {
   Session n(scene, scene::ShadingMode::Decoupled, settingsAt(4, true));
   for (int frame = 0; frame < 30; ++frame) {
     n.renderer().setObjectTransform(sphere, glm::translate(glm::mat4(1.0f), {0.02f * float(frame), 0.0f, 0.0f}) * start);
-    renderInFlight(n, panCamera(frame));
+    renderInFlight(n, panCamera(frame, 0.1f));
     const auto st = n.stats();
     EXPECT_EQ(st.counters.compositeMisses, 0u) << "frame " << frame;
     EXPECT_EQ(st.counters.overflowChunks, 0u) << "frame " << frame;

@@ -26,12 +26,6 @@ plugins::DecoupledSettings settingsAt(uint32_t rate) {
   return {.storageChunks = 8192, .fixedBias = 0.0f, .shadeRate = rate};
 }
 
-scene::Camera panCamera(int frame) {
-  scene::Camera camera{.name = "pan", .yfov = 0.9f, .znear = 0.05f, .zfar = 100.0f};
-  const float x = -1.5f + 0.15f * float(frame);
-  camera.world = scene::lookAtWorld({x, 2.0f, 6.0f}, {x * 0.5f, 1.0f, -1.0f});
-  return camera;
-}
 
 void expectSameImage(const gpu::HostImage& expected, const gpu::HostImage& actual, const std::string& what) {
   const auto diff = image::compareRgba8(expected.rgba8, actual.rgba8);
@@ -167,12 +161,6 @@ TEST(ShadeRateInvalidation, ResizeReusesNothing) {
   }
 }
 
-uint32_t instanceNamed(const scene::Scene& scene, const std::string& name) {
-  for (uint32_t i = 0; i < scene.instances.size(); ++i)
-    if (scene.instances[i].name == name) return i;
-  ADD_FAILURE() << "no object '" << name << "' in the scene";
-  return 0;
-}
 
 // `change` applied to both sessions before frame 2 (rate 8: a fill frame):
 // that frame shows exactly what rate 1 shows, so the changed object's stored
