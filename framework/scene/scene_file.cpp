@@ -140,6 +140,22 @@ Light parseLight(const Json& json, const std::string& path) {
   return light;
 }
 
+// A path's "keys": a non-empty array, each key parsed by `parse(key, keyPath)`, times increasing strictly.
+template <class Key, class Parse>
+std::vector<Key> keyList(const Json& json, const std::string& path, Parse parse) {
+  const auto keys = json.find("keys");
+  if (keys == json.end() || !keys->is_array() || keys->empty())
+    throw FormatError(path + "/keys", "expected an array of at least one key");
+  std::vector<Key> out;
+  for (size_t k = 0; k < keys->size(); ++k) {
+    const std::string keyPath = path + "/keys/" + std::to_string(k);
+    Key parsed = parse((*keys)[k], keyPath);
+    if (!out.empty() && !(parsed.time > out.back().time)) throw FormatError(keyPath + "/t", "key times must increase strictly");
+    out.push_back(parsed);
+  }
+  return out;
+}
+
 CameraPath parseCameraPath(const Json& json, const std::string& path, size_t index) {
   if (!json.is_object()) throw FormatError(path, "expected an object");
   CameraPath out;
@@ -157,20 +173,13 @@ CameraPath parseCameraPath(const Json& json, const std::string& path, size_t ind
   } else if (type == "keys") {
     allowOnly(json, path, {"type", "name", "keys"});
     out.type = CameraPath::Type::Keys;
-    const auto keys = json.find("keys");
-    if (keys == json.end() || !keys->is_array() || keys->empty())
-      throw FormatError(path + "/keys", "expected an array of at least one key");
-    for (size_t k = 0; k < keys->size(); ++k) {
-      const std::string keyPath = path + "/keys/" + std::to_string(k);
-      const Json& key = (*keys)[k];
+    out.keys = keyList<CameraKey>(json, path, [](const Json& key, const std::string& keyPath) {
       allowOnly(key, keyPath, {"t", "position", "target"});
       CameraKey parsed{requiredNumber(key, "t", keyPath), requiredVector<3>(key, "position", keyPath, kMaxCoordinate),
                        requiredVector<3>(key, "target", keyPath, kMaxCoordinate)};
-      if (!out.keys.empty() && !(parsed.time > out.keys.back().time))
-        throw FormatError(keyPath + "/t", "key times must increase strictly");
       if (parsed.position == parsed.target) throw FormatError(keyPath, "position and target are the same point");
-      out.keys.push_back(parsed);
-    }
+      return parsed;
+    });
   } else {
     throw FormatError(path + "/type", "expected \"orbit\" or \"keys\"");
   }
@@ -194,18 +203,10 @@ ObjectMotion parseObjectPath(const Json& json, const std::string& path, const gl
   } else if (type == "keys") {
     allowOnly(json, path, {"type", "keys", "spinDegreesPerSecond"});
     out.type = ObjectMotion::Type::Keys;
-    const auto keys = json.find("keys");
-    if (keys == json.end() || !keys->is_array() || keys->empty())
-      throw FormatError(path + "/keys", "expected an array of at least one key");
-    for (size_t k = 0; k < keys->size(); ++k) {
-      const std::string keyPath = path + "/keys/" + std::to_string(k);
-      const Json& key = (*keys)[k];
+    out.keys = keyList<ObjectKey>(json, path, [](const Json& key, const std::string& keyPath) {
       allowOnly(key, keyPath, {"t", "translation"});
-      ObjectKey parsed{requiredNumber(key, "t", keyPath), requiredVector<3>(key, "translation", keyPath, kMaxCoordinate)};
-      if (!out.keys.empty() && !(parsed.time > out.keys.back().time))
-        throw FormatError(keyPath + "/t", "key times must increase strictly");
-      out.keys.push_back(parsed);
-    }
+      return ObjectKey{requiredNumber(key, "t", keyPath), requiredVector<3>(key, "translation", keyPath, kMaxCoordinate)};
+    });
   } else if (type == "spin") {
     allowOnly(json, path, {"type", "spinDegreesPerSecond"});
     if (!json.contains("spinDegreesPerSecond")) throw FormatError(path + "/spinDegreesPerSecond", "required property is missing");
