@@ -1,6 +1,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <vector>
 
 #include <shadelgraph/scene/gltf_accessor.hpp>
 #include <shadelgraph/scene/gltf_animation.hpp>
@@ -44,12 +45,11 @@ class AnimationReader {
       }
       out.channels.push_back({node, *path, channel.sampler});
     }
-    for (size_t s = 0; s < in.samplers.size(); ++s) {
-      std::optional<AnimatedPath> use;  // what a kept channel drives with it; unused samplers are only read
-      for (const AnimationChannel& channel : out.channels)
-        if (channel.sampler == static_cast<int>(s)) use = channel.path;
-      out.samplers.push_back(sampler(in.samplers[s], name + " sampler " + std::to_string(s), use));
-    }
+    // What a kept channel drives with each sampler (the last one's path); unused samplers are only read.
+    std::vector<std::optional<AnimatedPath>> use(in.samplers.size());
+    for (const AnimationChannel& channel : out.channels) use[static_cast<size_t>(channel.sampler)] = channel.path;
+    for (size_t s = 0; s < in.samplers.size(); ++s)
+      out.samplers.push_back(sampler(in.samplers[s], name + " sampler " + std::to_string(s), use[s]));
     for (const AnimationChannel& channel : out.channels) {
       const AnimationSampler& s = out.samplers[static_cast<size_t>(channel.sampler)];
       const uint32_t width = channel.path == AnimatedPath::Rotation ? 4u : channel.path == AnimatedPath::Weights ? s.width : 3u;
