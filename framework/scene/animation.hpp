@@ -32,6 +32,7 @@ struct Animation {
   std::string name;
   std::vector<AnimationSampler> samplers;
   std::vector<AnimationChannel> channels;
+  float timeOffset = 0.0f;  // seconds into its clock at time 0 (a scene file's "timeOffset")
 
   // The last keyframe time of any sampler (0 without samplers).
   float duration() const;

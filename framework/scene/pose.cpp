@@ -15,7 +15,7 @@ std::vector<glm::mat4> poseNodes(const Scene& scene, std::span<const int> animat
       const AnimationSampler& sampler = animation.samplers[static_cast<size_t>(channel.sampler)];
       Node& node = nodes[static_cast<size_t>(channel.node)];
       const bool rotation = channel.path == AnimatedPath::Rotation;
-      sampleAt(sampler, t, rotation, value);
+      sampleAt(sampler, t + animation.timeOffset, rotation, value);
       if (rotation) node.rotation = glm::quat(value[3], value[0], value[1], value[2]);
       else if (channel.path == AnimatedPath::Translation) node.translation = glm::vec3(value[0], value[1], value[2]);
       else node.scale = glm::vec3(value[0], value[1], value[2]);

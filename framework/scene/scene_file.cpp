@@ -216,6 +216,36 @@ ObjectMotion parseObjectPath(const Json& json, const std::string& path, const gl
   return out;
 }
 
+std::string animationChoices(const std::vector<Animation>& animations) {
+  std::string names;
+  for (size_t a = 0; a < animations.size() && a < 20; ++a)
+    names += (a ? ", " : "") + std::to_string(a) + " '" + capText(animations[a].name, 80) + "'";
+  return "expected \"all\", \"none\", an index or a name; " +
+         (names.empty() ? std::string("the glTF file has no animations") : "the glTF file's animations are " + names);
+}
+
+// The object's "animation" ("all" by default, "none", an index or a name) out
+// of its glTF file's, each starting "timeOffset" seconds into its clock.
+std::vector<Animation> chosenAnimations(const Json& object, const std::string& path,
+                                        const std::vector<Animation>& animations) {
+  const float offset = number(object, "timeOffset", path, 0.0f);
+  std::vector<Animation> chosen;
+  const auto it = object.find("animation");
+  if (it == object.end() || (it->is_string() && it->get<std::string>() == "all")) {
+    chosen = animations;
+  } else if (it->is_number_unsigned() && it->get<uint64_t>() < animations.size()) {
+    chosen = {animations[it->get<size_t>()]};
+  } else if (it->is_string() && it->get<std::string>() != "none") {
+    for (const Animation& animation : animations)
+      if (animation.name == it->get<std::string>()) chosen = {animation};
+    if (chosen.empty()) throw FormatError(path + "/animation", animationChoices(animations));
+  } else if (!it->is_string()) {
+    throw FormatError(path + "/animation", animationChoices(animations));
+  }
+  for (Animation& animation : chosen) animation.timeOffset = offset;
+  return chosen;
+}
+
 SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadOptions& options) {
   allowOnly(root, "", {"objects", "lights", "cameraPaths"});
   const auto objects = root.find("objects");
@@ -228,6 +258,8 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
     std::vector<Instance> instances;
     std::vector<Light> lights;
     std::vector<Camera> cameras;
+    std::vector<Node> nodes;  // each object gets its own copy, so each animates on its own
+    std::vector<Animation> animations;
     int meshBase = 0;
   };
   std::map<std::filesystem::path, Placements> loaded;
@@ -235,7 +267,7 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
     const std::string path = "/objects/" + std::to_string(i);
     const Json& object = (*objects)[i];
     allowOnly(object, path, {"gltf", "name", "translation", "rotation", "rotationDegrees", "scale", "shading",
-                               "material", "path"});
+                               "material", "path", "animation", "timeOffset"});
     const std::string gltf = text(object, "gltf", path, "");
     if (gltf.empty()) throw FormatError(path + "/gltf", "required property is missing");
     const std::filesystem::path gltfPath = (file.parent_path() / gltf).lexically_normal();
@@ -259,25 +291,32 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
       } catch (const SceneError& error) {
         throw FormatError(path + "/gltf", error.what());
       }
-      // One load, placed once per object: its node hierarchy is not kept, so nothing animates.
-      if (!scene.animations.empty())
-        scene.warnings.push_back(std::to_string(scene.animations.size()) +
-                                 " animation(s) not played: a scene file does not choose animations yet");
-      scene.nodes.clear();
-      scene.animations.clear();
-      for (Instance& instance : scene.instances) instance.node = -1;
-      for (Camera& camera : scene.cameras) camera.node = -1;
-      Placements placements{std::move(scene.instances), std::move(scene.lights), std::move(scene.cameras),
-                            static_cast<int>(result.scene.meshes.size())};
+      // One load; its nodes and animations are placed once per object below.
+      Placements placements{std::move(scene.instances), std::move(scene.lights),     std::move(scene.cameras),
+                            std::move(scene.nodes),     std::move(scene.animations), static_cast<int>(result.scene.meshes.size())};
       scene.instances.clear();
       scene.lights.clear();
       scene.cameras.clear();
+      scene.nodes.clear();
+      scene.animations.clear();
       appendScene(result.scene, std::move(scene), glm::mat4(1.0f), gltfPath.filename().string() + ": ");
       it = loaded.emplace(gltfPath, std::move(placements)).first;
     }
     const Placements& placements = it->second;
+    const int nodeBase = static_cast<int>(result.scene.nodes.size());
+    for (Node node : placements.nodes) {
+      if (node.parent < 0) node.placement = transform * node.placement;
+      else node.parent += nodeBase;
+      result.scene.nodes.push_back(std::move(node));
+    }
+    for (Animation animation : chosenAnimations(object, path, placements.animations)) {
+      for (AnimationChannel& channel : animation.channels) channel.node += nodeBase;
+      animation.name = name + "/" + animation.name;
+      result.scene.animations.push_back(std::move(animation));
+    }
     for (Instance instance : placements.instances) {
       instance.mesh += placements.meshBase;
+      if (instance.node >= 0) instance.node += nodeBase;
       instance.world = transform * instance.world;
       instance.name = name + "/" + instance.name;
       if (shading) instance.shading = *shading;
@@ -288,6 +327,8 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
     Scene placed;  // lights and cameras, moved by appendScene's transform rules
     placed.lights = placements.lights;
     placed.cameras = placements.cameras;
+    for (Camera& camera : placed.cameras)
+      if (camera.node >= 0) camera.node += nodeBase;
     appendScene(result.scene, std::move(placed), transform);
   }
 

@@ -11,6 +11,8 @@
 #include <shadelgraph/scene/animation.hpp>
 #include <shadelgraph/scene/gltf_loader.hpp>
 #include <shadelgraph/scene/pose.hpp>
+#include <shadelgraph/scene/scene_error.hpp>
+#include <shadelgraph/scene/scene_file.hpp>
 
 #include "scene_test_support.hpp"
 
@@ -119,6 +121,44 @@ TEST(AnimationLoading, PosesTheHierarchyAtATime) {
   EXPECT_EQ(glm::vec3(scene.instances[0].world[3]), glm::vec3(10, 1, 0)) << "the parent's x plus a quarter of the slide";
   applyPose(scene, poseNodes(scene, {}, 0.5f));
   EXPECT_EQ(glm::vec3(scene.instances[0].world[3]), glm::vec3(10, 0, 0)) << "no animation: the rest pose";
+}
+
+// Three objects place the file of AnimatedFile: each gets its own nodes, and
+// the animation it chooses runs on its own clock.
+TEST(SceneFileAnimation, EachObjectAnimatesOnItsOwnClock) {
+  AnimatedFile file;
+  file.write();
+  const auto scenePath = file.dir.write("scene.json", R"({"objects": [
+    {"gltf": "animated.gltf", "name": "a"},
+    {"gltf": "animated.gltf", "name": "b", "translation": [0, 0, 5], "animation": "slide", "timeOffset": 1},
+    {"gltf": "animated.gltf", "name": "c", "translation": [0, 0, 9], "animation": "none"}]})");
+  Scene scene = loadSceneFile(scenePath).scene;
+  ASSERT_EQ(scene.animations.size(), 2u);
+  EXPECT_EQ(scene.animations[0].name, "a/slide");
+  EXPECT_EQ(scene.animations[1].name, "b/slide");
+  EXPECT_EQ(scene.animations[1].timeOffset, 1.0f);
+  ASSERT_EQ(scene.nodes.size(), 6u) << "a copy of the file's two nodes per object";
+  ASSERT_EQ(scene.instances.size(), 3u);
+  applyPose(scene, poseNodes(scene, allAnimations(scene), 0.5f));
+  EXPECT_EQ(glm::vec3(scene.instances[0].world[3]), glm::vec3(10, 1, 0)) << "a: a quarter of the slide";
+  EXPECT_EQ(glm::vec3(scene.instances[1].world[3]), glm::vec3(10, 3, 5)) << "b: 1.5 s into it, where it was placed";
+  EXPECT_EQ(glm::vec3(scene.instances[2].world[3]), glm::vec3(10, 0, 9)) << "c: no animation, the rest pose";
+}
+
+TEST(SceneFileAnimation, AnUnknownChoiceNamesTheAnimationsThereAre) {
+  AnimatedFile file;
+  file.write();
+  for (const char* choice : {R"("walk")", "3", "true"}) {
+    const auto scenePath =
+        file.dir.write("scene.json", std::string(R"({"objects": [{"gltf": "animated.gltf", "animation": )") + choice + "}]}");
+    try {
+      loadSceneFile(scenePath);
+      ADD_FAILURE() << choice << " was accepted";
+    } catch (const SceneError& error) {
+      EXPECT_THAT(error.what(), HasSubstr("/objects/0/animation")) << choice;
+      EXPECT_THAT(error.what(), HasSubstr("0 'slide'")) << choice;
+    }
+  }
 }
 
 TEST(AnimationLoading, KeyTimesMustIncrease) {
