@@ -187,9 +187,10 @@ nlohmann::json runScene(gpu::Device& device, const ShadeRateBenchArgs& args, con
   // pixels would disturb forward's timed ones), at the same pose and time.
   RateSession reference;
   reference.scene = makeScene();
-  reference.renderer = plugins::makeDecoupledRenderer(device, reference.scene, plugins::builtinRegistry(),
-                                                      scene::ShadingMode::Forward, {})
-                           .renderer;
+  auto madeReference = plugins::makeDecoupledRenderer(device, reference.scene, plugins::builtinRegistry(),
+                                                      scene::ShadingMode::Forward, {});
+  reference.decoupled = std::move(madeReference.shading);
+  reference.renderer = std::move(madeReference.renderer);
   std::optional<uint32_t> moving;
   if (!args.movingObject.empty()) {
     for (uint32_t i = 0; i < loaded.scene.instances.size(); ++i)
