@@ -4,6 +4,10 @@
   front drawn) and per-pass stacked GPU time bars, one pair per scene and size;
 - materials.json (bench --materials): accuracy against time, each material's
   forward and decoupled runs joined;
+- shade-rate.json (bench --shade-rates): per scene and size, the raster
+  frame's median and mean against forward by configuration (the issue's
+  targets 0.8 and 0.6 marked), ꟻLIP and flicker against frame time, and the
+  frame split into raster passes, shade-space bookkeeping, shading and gaps;
 - graph.json (bench graph): declare + compile time against graph size, log-log,
   with the linear growth from the smallest size for comparison.
 Usage: plot_bench.py RESULTS_DIR"""
@@ -85,6 +89,81 @@ def plot_materials(run, out):
     plt.close(fig)
 
 
+def plot_shade_rate(run, out):
+    tag = f"{run['scene']}-{run['width']}x{run['height']}"
+    configs = run["configs"]
+    names = [c["config"].replace("decoupled ", "") for c in configs]
+    fig, axes = plt.subplots(1, 4, figsize=(22, 5))
+
+    ax = axes[0]
+    x = range(len(configs))
+    ax.bar([i - 0.2 for i in x], [c["ratio_to_forward"] for c in configs], 0.4, label="median frame")
+    ax.bar([i + 0.2 for i in x], [c["ratio_mean_to_forward"] for c in configs], 0.4, label="mean frame")
+    tails = [(i, c["ratio_mean_with_tail_to_forward"]) for i, c in enumerate(configs) if c.get("tail_ms_median")]
+    if tails:
+        ax.scatter([t[0] + 0.2 for t in tails], [t[1] for t in tails], marker="_", s=300, color="black", zorder=3,
+                   label="mean frame + its tail")
+    for target, style in ((0.8, "--"), (0.6, ":")):
+        ax.axhline(target, linestyle=style, color="gray", label=f"target {target}× (rate {2 if target == 0.8 else 4})")
+    ax.axhline(1.0, color="tab:red", linewidth=0.8)
+    ax.set_xticks(list(x))
+    ax.set_xticklabels(names, rotation=35, ha="right", fontsize=8)
+    ax.set_ylabel("raster frame ÷ forward (GPU time)")
+    ax.set_title("Cost against forward", fontsize=10)
+    ax.legend(fontsize=7)
+
+    ax = axes[1]
+    for c, name in zip(configs, names):
+        color = "tab:red" if not c["decoupled"] else ("tab:green" if c.get("in_flight") else "tab:blue")
+        ax.scatter(c["frame_ms_mean"], c["flip_mean"], color=color, zorder=3)
+        ax.annotate(name, (c["frame_ms_mean"], c["flip_mean"]), textcoords="offset points", xytext=(4, 4), fontsize=7)
+    ax.set_xlabel("mean raster frame GPU time (ms)")
+    ax.set_ylabel("mean FLIP vs 16-spp reference of the same frame")
+    ax.set_title("Error against time", fontsize=10)
+    ax.grid(alpha=0.3)
+    twin = ax.twinx()
+    twin.scatter([c["frame_ms_mean"] for c in configs], [c["flicker_excess"] for c in configs], marker="x",
+                 color="gray", label="flicker excess (right)")
+    twin.set_ylabel("flicker excess (T(test) − T(reference))")
+    twin.legend(fontsize=7, loc="lower right")
+
+    ax = axes[2]
+    groups = (("raster", "raster passes"), ("shade_space", "shade space"), ("shading", "shading"), ("gaps", "gaps"))
+    bottoms = [0.0] * len(configs)
+    for key, label in groups:
+        values = [(c["pass_groups_ms_median"] or {}).get(key, 0.0) for c in configs]
+        ax.bar(list(x), values, bottom=bottoms, label=label)
+        bottoms = [b + v for b, v in zip(bottoms, values)]
+    ax.axhline(configs[0]["frame_ms_median"], color="tab:red", linewidth=0.8, label="forward frame")
+    ax.set_xticks(list(x))
+    ax.set_xticklabels(names, rotation=35, ha="right", fontsize=8)
+    ax.set_ylabel("median ms per raster frame")
+    ax.set_title("Where the raster frame goes", fontsize=10)
+    ax.legend(fontsize=7)
+
+    # Staleness: each frame's FLIP minus rate 1's at the same pose (shading lagging the camera).
+    ax = axes[3]
+    rate1 = next((c for c in configs if c["decoupled"] and c["shade_rate"] == 1 and c.get("budget_ms") is None
+                  and not c.get("in_flight") and c.get("keep_view_independent_layers", True)), None)
+    if rate1:
+        for c, name in zip(configs, names):
+            if not c["decoupled"] or c is rate1:
+                continue
+            delta = [a - b for a, b in zip(c["flip_samples"], rate1["flip_samples"])]
+            ax.plot(range(len(delta)), delta, "--" if c.get("in_flight") else "-", label=name)
+        ax.axhline(0.0, color="gray", linewidth=0.8)
+        ax.legend(fontsize=7)
+    ax.set_xlabel("path frame")
+    ax.set_ylabel("FLIP − rate 1's FLIP, same frame")
+    ax.set_title("What staleness adds, frame by frame", fontsize=10)
+    ax.grid(alpha=0.3)
+
+    fig.suptitle(f"Shade rates along a moving camera: {tag}")
+    fig.tight_layout()
+    fig.savefig(out / f"shade-rate-{tag}.png", dpi=100)
+    plt.close(fig)
+
+
 def plot_graph(results, out):
     sizes = results["sizes"]
     passes = [s["passes"] for s in sizes]
@@ -119,11 +198,15 @@ def main():
         for run in json.loads((out / "materials.json").read_text())["runs"]:
             plot_materials(run, out)
         found = True
+    if (out / "shade-rate.json").exists():
+        for run in json.loads((out / "shade-rate.json").read_text())["runs"]:
+            plot_shade_rate(run, out)
+        found = True
     if (out / "graph.json").exists():
         plot_graph(json.loads((out / "graph.json").read_text()), out)
         found = True
     if not found:
-        sys.exit(f"plot_bench.py: no results.json, materials.json or graph.json in {out}")
+        sys.exit(f"plot_bench.py: no results.json, materials.json, shade-rate.json or graph.json in {out}")
     print(f"wrote plots to {out}")
 
 

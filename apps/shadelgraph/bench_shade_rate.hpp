@@ -5,7 +5,11 @@
 // configuration keeps its own state across the path: its reuse needs the
 // frame before). Reports median and mean raster-frame GPU time over the path
 // (shade frames included), their ratio to forward, per-pass medians of shade
-// and fill frames, and what staleness costs (PSNR against rate 1, fill frames).
+// and fill frames and the raster passes' share (the floor), ꟻLIP and PSNR of
+// every frame against a forward reference of the same frame (referenceScale²
+// spp) and flicker along the path, what staleness costs (PSNR against rate 1,
+// fill frames), and with framesInFlight 2 each rate above 1 also with the
+// shade frame in flight, and the wall time of consecutive frames.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -24,6 +28,8 @@ struct ShadeRateBenchArgs {
   std::vector<double> budgets;  // budget mode configurations (--shade-budget MS each)
   std::string material;         // non-empty: every object's material
   bool unkeptLayers = false;    // each rate also with view-independent layers computed like the others
+  int referenceScale = 4;       // reference: this many samples per pixel side
+  int framesInFlight = 1;       // 2: each rate above 1 also with two frames in flight
 };
 
 // Writes shade-rate.json into `out` and prints a table.

@@ -183,6 +183,10 @@ CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& gr
   command.add_option("--rate-material", args.rateMaterial, "--shade-rates: every object's material, e.g. split-pbr");
   command.add_flag("--unkept-layers", args.unkeptLayers,
                    "--shade-rates: each rate also with view-independent layers computed whenever their chunk is");
+  command.add_option("--frames-in-flight", args.framesInFlight,
+                     "--shade-rates: 2 also runs each rate above 1 with two frames in flight (the shade frame as the "
+                     "raster frame's tail), and times consecutive frames of each, with and without (1 or 2)")
+      ->capture_default_str();
   auto* graph = command.add_subcommand("graph",
                                        "Instead: declare + compile time of synthetic render graphs by size (no device); "
                                        "writes graph.json and graph.csv into --out");
@@ -202,6 +206,7 @@ void checkBenchArgs(const BenchArgs& args) {
   for (const int rate : args.shadeRates) requireInRange("--shade-rates", rate, 1, kMaxShadeRate);
   for (const double ms : args.shadeBudgets) requireFiniteInRange("--shade-budgets", ms, 0.01, 10000.0);
   requireInRange("--path-frames", args.pathFrames, 2, 100000);
+  requireInRange("--frames-in-flight", args.framesInFlight, 1, 2);
   if (args.sizes.empty()) throw std::invalid_argument("--sizes: expected at least one WIDTHxHEIGHT");
   if (args.sceneRatios && args.scenes.size() < 2)
     throw std::invalid_argument("--scene-ratios: expected at least two scenes (the first is the baseline)");

@@ -89,6 +89,7 @@ struct BenchArgs {
   std::vector<double> shadeBudgets;  // the shade-rate sweep: budget mode configurations
   std::string rateMaterial;     // the shade-rate sweep: every object's material
   bool unkeptLayers = false;    // the shade-rate sweep: each rate also without keeping view-independent layers
+  int framesInFlight = 1;       // the shade-rate sweep: 2 adds each rate above 1 with two frames in flight
   bool sceneRatios = false;  // each scene against the first instead (bench_scenes.cpp)
 };
 // bench's options, and its subcommand "graph" (returned) with graphArgs'.

@@ -244,6 +244,49 @@ TEST(Cli, BenchWritesResultsForEveryConfiguration) {
   EXPECT_TRUE(std::filesystem::exists(dir / "results.csv"));
 }
 
+// The shade-rate sweep's output format on a tiny run: forward, each rate, its
+// twin in flight and the budget mode, each with time against forward, error
+// against the reference of each path frame, flicker, and where the frame goes
+// (figures are not asserted: benchmarks, not timed tests).
+TEST(Cli, BenchShadeRatesWritesEveryRateWithErrorAndFlicker) {
+  const auto dir = tempDir() / "bench-shade-rates";
+  std::filesystem::remove_all(dir);
+  auto r = run("bench --shade-rates 1,2 --shade-budgets 5 --frames-in-flight 2 --out " + dir.string() +
+               " --sizes 64x36 --path-frames 3 --reference-scale 2");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(dir / "shade-rate.json");
+  const auto json = nlohmann::json::parse(in);
+  ASSERT_EQ(json["runs"].size(), 1u);
+  const auto& run0 = json["runs"][0];
+  EXPECT_EQ(run0["reference_spp"], 4);
+  EXPECT_EQ(run0["frames_in_flight"], 2);
+  std::set<std::string> names;
+  for (const auto& c : run0["configs"]) {
+    const auto name = c["config"].get<std::string>();
+    names.insert(name);
+    for (const char* key : {"frame_ms_median", "frame_ms_mean", "ratio_to_forward", "ratio_mean_to_forward",
+                            "pass_groups_ms_median", "raster_passes_ms_median", "psnr_median", "flicker",
+                            "flicker_reference", "flicker_excess", "frame_with_tail_ms_mean"})
+      EXPECT_TRUE(c.contains(key)) << name << ": " << key;
+    EXPECT_GE(c["flip_mean"].get<double>(), 0.0) << name;
+    EXPECT_LE(c["flip_mean"].get<double>(), 1.0) << name;
+    EXPECT_EQ(c["flip_samples"].size(), 3u) << name << ": one ꟻLIP per path frame";
+    EXPECT_GT(c["flicker_reference"].get<double>(), 0.0) << name << ": the orbit moves the reference";
+    EXPECT_EQ(c["composite_misses_max"], 0) << name;
+    for (const char* group : {"raster", "shade_space", "shading", "gaps"})
+      EXPECT_TRUE(c["pass_groups_ms_median"].contains(group)) << name << ": " << group;
+    // Only the configurations in flight run a shade frame as a tail; consecutive
+    // frames are timed for forward and every rate above 1, with and without.
+    EXPECT_EQ(c["tail_ms_median"].is_null(), !c["in_flight"].get<bool>()) << name;
+    EXPECT_EQ(c["consecutive_wall_ms_per_frame"].is_null(),
+              !(name == "forward" || name.rfind("decoupled rate 2", 0) == 0)) << name;
+  }
+  for (const char* name : {"forward", "decoupled rate 1", "decoupled rate 2", "decoupled rate 2 in flight",
+                           "decoupled budget 5 ms"})
+    EXPECT_TRUE(names.count(name)) << name;
+  EXPECT_EQ(names.size(), 5u);
+}
+
 // The material sweep's output format on a tiny run: every (material, path)
 // configuration with the documented keys; times are not asserted.
 // bench graph needs no device: medians per size and mode, ratios, and the
@@ -521,6 +564,7 @@ const BadCommand kBadCommands[] = {
     {"ShadeBudgetWithShadeRate", "render --shade-budget 5 --shade-rate 2", "--shade-rate"},
     {"BenchShadeRatesZero", "bench --shade-rates 1,0", "--shade-rates 0"},
     {"BenchPathFramesOne", "bench --shade-rates 2 --path-frames 1", "--path-frames 1"},
+    {"BenchFramesInFlightThree", "bench --shade-rates 2 --frames-in-flight 3", "--frames-in-flight 3"},
     {"BenchFlickerFramesZero", "bench --flicker-frames 0", "--flicker-frames 0"},
     {"BenchFlickerFramesNegative", "bench --flicker-frames -3", "--flicker-frames -3"},
     {"BenchRepetitionsZero", "bench --repetitions 0", "--repetitions 0"},
