@@ -113,7 +113,9 @@ void GpuScene::uploadGeometry(gpu::Context& context, gpu::MemoryAllocator& memor
   for (uint32_t i = 0; i < draws_.size(); ++i) allDraws_.push_back(i);
   // Concurrent: the skinning pass writes it on the graphics queue, layer shading reads it on async compute.
   vertices_ = uploadBuffer(context, memory, vertices.data(), vertices.size() * sizeof(GpuVertex),
-                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "vertices",
+                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                               VK_BUFFER_USAGE_TRANSFER_SRC_BIT,  // read back by tests
+                           "vertices",
                            /*concurrent*/ !deformed.empty());
   indices_ = uploadBuffer(context, memory, indices.data(), indices.size() * 4,
                           VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "indices");
