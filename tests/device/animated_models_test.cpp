@@ -80,7 +80,8 @@ TEST_P(AnimatedModels, TwoTimesInBothPathsAgree) {
   for (const auto& mesh : loaded.meshes) deformable |= mesh.deformable();
   ASSERT_TRUE(deformable || !loaded.animations.empty()) << name << " is neither animated, skinned nor morphed";
   const scene::Camera camera = playbackCamera(loaded);
-  const float times[2] = {0.3f * duration(loaded), 0.7f * duration(loaded)};
+  // A quarter and half way: RiggedSimple's bend is symmetric about its middle (0.3 and 0.7 look alike).
+  const float times[2] = {0.25f * duration(loaded), 0.5f * duration(loaded)};
   gpu::HostImage forward[2], decoupled[2];
   {
     Session f(loaded, scene::ShadingMode::Forward);
@@ -146,6 +147,38 @@ INSTANTIATE_TEST_SUITE_P(Models, AnimatedModels,
                          ::testing::Values("BoxAnimated", "InterpolationTest", "RiggedSimple", "RiggedFigure", "CesiumMan",
                                            "AnimatedMorphCube", "SimpleMorph", "MorphPrimitivesTest"),
                          [](const auto& param) { return std::string(param.param); });
+
+// Frames in flight: the shade frame (layer shading on async compute, the
+// frame's tail) reads frame N's deformed vertices while frame N+1's skinning
+// pass rewrites them; the declared reads order the two (synchronization
+// validation is on: a hazard fails the test).
+TEST(AnimatedInFlight, ShadeFrameTailAndSkinningAreOrdered) {
+  if (!std::filesystem::exists(samplePath("CesiumMan")))
+    GTEST_SKIP() << "asset not found under " << assetsDir() << " (../shared/assets/gltf)";
+  const scene::Scene loaded = scene::loadGltf(samplePath("CesiumMan"));
+  const scene::Camera camera = playbackCamera(loaded);
+  Session d(loaded, scene::ShadingMode::Decoupled, {.storageChunks = 16384, .shadeRate = 2, .overlap = true});
+  scene::Scene posed = loaded;
+  poseAt(posed, d.renderer(), 0.0f);
+  const auto plan = d.renderer().plan({.width = kWidth, .height = kHeight, .cameraOverride = camera, .framesInFlight = 2});
+  bool tailShades = false, skinningInTail = false;
+  for (const auto& batch : plan.batches)
+    for (const auto p : plan.passesOf(batch)) {
+      tailShades |= batch.tail && plan.passes[p.index].name == "shade-frame layer-shade";
+      skinningInTail |= batch.tail && plan.passes[p.index].name == "skinning";
+    }
+  EXPECT_TRUE(tailShades) << "the shade frame is the frame's tail";
+  EXPECT_FALSE(skinningInTail);
+  uint64_t misses = 0;
+  for (int frame = 0; frame < 12; ++frame) {
+    poseAt(posed, d.renderer(), 0.1f * float(frame));
+    d.renderer().render({.width = kWidth, .height = kHeight, .cameraOverride = camera, .framesInFlight = 2,
+                         .readback = frame == 11});
+    misses += d.stats().counters.compositeMisses;
+  }
+  d.renderer().finishFrames();
+  EXPECT_EQ(misses, 0u);
+}
 
 // The skinning pass's vertices against scene::deformVertex, read back from the scene vertex buffer.
 TEST(GpuSkinning, MatchesTheCpuReference) {
