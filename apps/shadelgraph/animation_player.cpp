@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include <shadelgraph/scene/deformation.hpp>
 #include <shadelgraph/scene/pose.hpp>
 
 namespace sg::app {
@@ -33,11 +34,9 @@ scene::Bounds AnimationPlayer::playbackBounds() const {
   scene::Bounds bounds;
   constexpr int kSamples = 32;
   for (int s = 0; s <= kSamples; ++s) {
-    const std::vector<glm::mat4> world = scene::poseNodes(scene_, animations_, duration * float(s) / kSamples);
-    for (const scene::Instance& instance : scene_.instances) {
-      const glm::mat4& m = instance.node >= 0 ? world[size_t(instance.node)] : instance.world;
-      bounds.extend(scene::transformBounds(scene_.meshes[size_t(instance.mesh)].bounds, m));
-    }
+    const float t = duration * float(s) / kSamples;
+    bounds.extend(scene::posedWorldBounds(scene_, scene::poseNodes(scene_, animations_, t),
+                                          scene::poseWeights(scene_, animations_, t)));
   }
   return bounds;
 }
@@ -45,9 +44,18 @@ scene::Bounds AnimationPlayer::playbackBounds() const {
 void AnimationPlayer::poseAt(float seconds, render::Renderer& renderer) {
   std::vector<glm::mat4> before(scene_.instances.size());
   for (size_t i = 0; i < before.size(); ++i) before[i] = scene_.instances[i].world;
-  scene::applyPose(scene_, scene::poseNodes(scene_, animations_, seconds));
-  for (size_t i = 0; i < before.size(); ++i)
-    if (scene_.instances[i].world != before[i]) renderer.setObjectTransform(static_cast<uint32_t>(i), scene_.instances[i].world);
+  const std::vector<glm::mat4> world = scene::poseNodes(scene_, animations_, seconds);
+  scene::applyPose(scene_, world);
+  scene::applyWeights(scene_, scene::poseWeights(scene_, animations_, seconds));
+  for (size_t i = 0; i < before.size(); ++i) {
+    const scene::Instance& instance = scene_.instances[i];
+    const auto index = static_cast<uint32_t>(i);
+    if (instance.world != before[i]) renderer.setObjectTransform(index, instance.world);
+    if (!renderer.gpuScene().deformation().deformed(index)) continue;
+    const std::vector<glm::mat4> joints =
+        instance.skin >= 0 ? scene::jointWorldMatrices(scene_.skins[size_t(instance.skin)], world) : std::vector<glm::mat4>{};
+    renderer.setObjectDeformation(index, joints, instance.morphWeights);
+  }
 }
 
 }  // namespace sg::app

@@ -16,7 +16,8 @@ class AnimationPlayer {
   AnimationPlayer(scene::Scene& scene, const std::string& selection, const std::string& option = "--animation");
 
   bool playing() const { return !animations_.empty(); }
-  // Poses the scene at `seconds` and hands every moved object to `renderer`.
+  // Poses the scene at `seconds` and hands every moved object to `renderer`,
+  // and every skinned or morphed object its joint matrices and morph weights.
   void poseAt(float seconds, render::Renderer& renderer);
   // World bounds of the scene over the whole playback (sampled), to frame it once.
   scene::Bounds playbackBounds() const;

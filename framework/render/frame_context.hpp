@@ -36,6 +36,8 @@ struct FrameInputs {
   uint32_t width = 0, height = 0;
   // Occlusion culling's per-renderer state; null when the frame is not to be occlusion-culled.
   DrawCulling* culling = nullptr;
+  // This frame's joint matrices and morph weights; null when the scene has no skinned or morphed object.
+  const DeformationFrame* deformation = nullptr;
 };
 
 // Indices into GpuScene::draws() of the draws inside the view frustum. All

@@ -8,6 +8,7 @@
 #include <shadelgraph/gpu/context.hpp>
 #include <shadelgraph/gpu/error.hpp>
 #include <shadelgraph/plugin/material_stack.hpp>
+#include <shadelgraph/render/buffer_upload.hpp>
 #include <shadelgraph/render/texture_upload.hpp>
 
 namespace sg::render {
@@ -36,20 +37,6 @@ VkSamplerAddressMode toVk(scene::WrapMode m) {
 
 VkFilter toVk(scene::Filter f) { return f == scene::Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR; }
 
-
-gpu::Buffer uploadBuffer(gpu::Context& context, gpu::MemoryAllocator& memory, const void* data, size_t bytes,
-                         VkBufferUsageFlags usage, const char* name) {
-  gpu::Buffer buffer(context, memory, {bytes, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryLocation::Device, name, "scene geometry"});
-  gpu::Buffer staging(context, memory, {bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryLocation::Upload, name, "staging"});
-  staging.write(data, bytes);
-  context.submitAndWait([&](VkCommandBuffer cmd) {
-    VkBufferCopy copy{0, 0, bytes};
-    vkCmdCopyBuffer(cmd, staging.handle(), buffer.handle(), 1, &copy);
-gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
-                       {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT});
-  });
-  return buffer;
-}
 
 }  // namespace
 
@@ -80,6 +67,12 @@ GpuScene::~GpuScene() {
   for (VkSampler s : samplers_) vkDestroySampler(device_, s, nullptr);
 }
 
+GpuVertex toGpuVertex(const scene::Primitive& p, size_t i) {
+  return {p.positions[i], p.normals.empty() ? glm::vec3(0, 1, 0) : p.normals[i],
+          p.tangents.empty() ? glm::vec4(1, 0, 0, 1) : p.tangents[i], p.uv0.empty() ? glm::vec2(0) : p.uv0[i],
+          p.uv1.empty() ? glm::vec2(0) : p.uv1[i], p.colors.empty() ? glm::vec4(1) : p.colors[i]};
+}
+
 void GpuScene::uploadGeometry(gpu::Context& context, gpu::MemoryAllocator& memory, const scene::Scene& scene) {
   std::vector<GpuVertex> vertices;
   std::vector<uint32_t> indices;
@@ -93,17 +86,24 @@ void GpuScene::uploadGeometry(gpu::Context& context, gpu::MemoryAllocator& memor
     auto& ranges = meshRanges.emplace_back();
     for (const auto& p : mesh.primitives) {
       ranges.push_back({uint32_t(indices.size()), uint32_t(p.indices.size()), int32_t(vertices.size()), p.material});
-      for (size_t i = 0; i < p.positions.size(); ++i)
-        vertices.push_back({p.positions[i], p.normals.empty() ? glm::vec3(0, 1, 0) : p.normals[i],
-                            p.tangents.empty() ? glm::vec4(1, 0, 0, 1) : p.tangents[i],
-                            p.uv0.empty() ? glm::vec2(0) : p.uv0[i], p.uv1.empty() ? glm::vec2(0) : p.uv1[i],
-                            p.colors.empty() ? glm::vec4(1) : p.colors[i]});
+      for (size_t i = 0; i < p.positions.size(); ++i) vertices.push_back(toGpuVertex(p, i));
       indices.insert(indices.end(), p.indices.begin(), p.indices.end());
     }
   }
+  std::vector<DeformedPrimitive> deformed;
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
     const auto& inst = scene.instances[i];
-    for (const Range& r : meshRanges[size_t(inst.mesh)]) {
+    const scene::Mesh& mesh = scene.meshes[size_t(inst.mesh)];
+    // A deformed object gets vertices of its own: the skinning pass writes its pose there.
+    const bool deforms = mesh.deformable();
+    for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+      Range r = meshRanges[size_t(inst.mesh)][p];
+      if (deforms) {
+        r.vertexOffset = int32_t(vertices.size());
+        deformed.push_back({i, &mesh.primitives[p], uint32_t(r.vertexOffset)});
+        const scene::Primitive& primitive = mesh.primitives[p];
+        for (size_t v = 0; v < primitive.positions.size(); ++v) vertices.push_back(toGpuVertex(primitive, v));
+      }
       const auto& m = scene.materials[size_t(r.material)];
       draws_.push_back({r.firstIndex, r.indexCount, r.vertexOffset, uint32_t(r.material), i, inst.world, m.alphaMode,
                         m.doubleSided, inst.material.empty() ? plugin::kDefaultMaterial : inst.material});
@@ -111,10 +111,15 @@ void GpuScene::uploadGeometry(gpu::Context& context, gpu::MemoryAllocator& memor
   }
   if (vertices.empty()) throw gpu::GpuError("the scene has no triangles to draw");
   for (uint32_t i = 0; i < draws_.size(); ++i) allDraws_.push_back(i);
+  // Concurrent: the skinning pass writes it on the graphics queue, layer shading reads it on async compute.
   vertices_ = uploadBuffer(context, memory, vertices.data(), vertices.size() * sizeof(GpuVertex),
-                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "vertices");
+                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                               VK_BUFFER_USAGE_TRANSFER_SRC_BIT,  // read back by tests
+                           "vertices",
+                           /*concurrent*/ !deformed.empty());
   indices_ = uploadBuffer(context, memory, indices.data(), indices.size() * 4,
                           VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "indices");
+  if (!deformed.empty()) deformation_ = GpuDeformation(context, memory, scene, deformed);
 }
 
 void GpuScene::uploadTextures(gpu::Context& context, gpu::MemoryAllocator& memory, const scene::Scene& scene) {

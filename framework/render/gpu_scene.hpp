@@ -1,6 +1,6 @@
 #pragma once
 // A scene uploaded for drawing: one vertex and one index buffer for all
-// meshes, textures with mips, samplers, and one descriptor set per material
+// meshes (skinned and morphed objects get vertex ranges of their own), textures with mips, samplers, and one descriptor set per material
 // (set 1 of the material shaders, see framework/plugin/shaders/scene_material.glsl).
 #include <vector>
 
@@ -10,6 +10,7 @@
 #include <shadelgraph/gpu/buffer.hpp>
 #include <shadelgraph/gpu/image.hpp>
 #include <shadelgraph/gpu/pipeline.hpp>
+#include <shadelgraph/render/gpu_deformation.hpp>
 #include <shadelgraph/scene/scene.hpp>
 
 namespace sg::render {
@@ -22,6 +23,9 @@ struct GpuVertex {
   glm::vec2 uv1;
   glm::vec4 color;
 };
+
+// Vertex `i` of `primitive` as uploaded (absent attributes get their defaults).
+GpuVertex toGpuVertex(const scene::Primitive& primitive, size_t i);
 
 // The vertex input every scene pipeline uses (locations 0..5 of object.glsl).
 gpu::VertexInput sceneVertexInput();
@@ -56,6 +60,10 @@ class GpuScene {
   VkDescriptorSetLayout materialSetLayout() const { return materialLayout_; }
   VkDescriptorSet materialSet(uint32_t material) const { return materialSets_[material]; }
   VkBuffer vertexBuffer() const { return vertices_.handle(); }
+  // The vertex buffer itself: the skinning pass imports it into frames that deform objects.
+  const gpu::Buffer& vertexStorage() const { return vertices_; }
+  // Skinned and morphed objects: each has vertex ranges of its own, rewritten per frame.
+  const GpuDeformation& deformation() const { return deformation_; }
   VkBuffer indexBuffer() const { return indices_.handle(); }
   // Every draw's index, 0..n-1 (a SceneView's draw list for all objects).
   const std::vector<uint32_t>& allDraws() const { return allDraws_; }
@@ -72,6 +80,7 @@ class GpuScene {
 
   VkDevice device_;
   gpu::Buffer vertices_, indices_;
+  GpuDeformation deformation_;
   std::vector<DrawItem> draws_;
   std::vector<uint32_t> allDraws_;
   std::vector<gpu::Image> textures_;  // scene textures, then white, then flat normal

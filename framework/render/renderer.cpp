@@ -28,6 +28,7 @@ struct Renderer::Frame {
   graph::RenderGraph graph;
   std::optional<FrameContext> context;
   graph::ResourceHandle output;
+  std::optional<DeformationFrame> deformation;
 };
 
 Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, const plugin::Registry& registry,
@@ -39,6 +40,7 @@ Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, const plugin:
       layerTextures_(device, registry),
       gpuScene_(device.context(), device.memory(), scene),
       culling_(device.context(), device.memory(), gpuScene_.draws(), drawSpheres(scene, gpuScene_.draws())),
+      deformation_(device.context(), device.memory(), scene, gpuScene_.deformation()),
       executor_(device) {
   registry_.check();
   for (auto& uniforms : frameUniforms_)
@@ -51,6 +53,8 @@ Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, const plugin:
       throw plugin::PluginError("object '" + scene.instances[draw.instance].name + "' uses material '" +
                                 draw.materialStack + "', which no plugin registered");
   drawSpheres_ = drawSpheres(scene, gpuScene_.draws());
+  for (uint32_t i = 0; i < scene.instances.size(); ++i)
+    if (deformation_.deformed(i)) updateSpheres(i, scene.instances[i].world);
   // Plugins' GLSL (their layers' sources) by virtual path.
   for (const auto& directory : registry_.shaderDirectories()) device_.shaders().addDirectory(directory);
 }
@@ -67,10 +71,27 @@ void Renderer::setObjectMode(uint32_t instance, scene::ShadingMode mode) {
 void Renderer::setObjectTransform(uint32_t instance, const glm::mat4& world) {
   setObjectMode(instance, instance < modes_.size() ? modes_[instance] : scene::ShadingMode::Auto);  // checks the index
   gpuScene_.setInstanceWorld(instance, world);
+  deformation_.setWorld(instance, world);
+  updateSpheres(instance, world);
+}
+
+void Renderer::setObjectDeformation(uint32_t instance, std::span<const glm::mat4> worldJoints,
+                                    std::span<const float> weights) {
+  setObjectMode(instance, instance < modes_.size() ? modes_[instance] : scene::ShadingMode::Auto);  // checks the index
+  deformation_.set(instance, worldJoints, weights);
+  const auto& draws = gpuScene_.draws();
+  for (uint32_t d = 0; d < draws.size(); ++d)
+    if (draws[d].instance == instance) return updateSpheres(instance, draws[d].world);
+}
+
+void Renderer::updateSpheres(uint32_t instance, const glm::mat4& world) {
+  // A deformed object's vertices move: its sphere holds every joint's box moved by the joint (object_deformation.hpp).
+  const auto local = deformation_.deformed(instance) ? deformation_.meshBounds(instance)
+                                                     : scene_.meshes[size_t(scene_.instances[instance].mesh)].bounds;
+  const auto bounds = scene::transformBounds(local, world);
   const auto& draws = gpuScene_.draws();
   for (uint32_t d = 0; d < draws.size(); ++d) {
     if (draws[d].instance != instance) continue;
-    const auto bounds = scene::transformBounds(scene_.meshes[size_t(scene_.instances[instance].mesh)].bounds, world);
     drawSpheres_[d] = glm::vec4(bounds.center(), bounds.radius());
     culling_.setSphere(d, drawSpheres_[d]);
   }
@@ -99,7 +120,8 @@ scene::Camera Renderer::camera(const RenderSettings& settings) const {
 std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& settings) {
   const scene::Camera cam = camera(settings);
   const FrameUniforms uniforms = makeFrameUniforms(scene_, cam, settings.width, settings.height, drawSpheres_);
-  gpu::Buffer& uniformBuffer = frameUniforms_[frameNumber_ % 2];
+  const auto slot = uint32_t(frameNumber_ % 2);
+  gpu::Buffer& uniformBuffer = frameUniforms_[slot];
   uniformBuffer.write(&uniforms, sizeof uniforms);
 
   if (!output_ || output_->desc().width != settings.width || output_->desc().height != settings.height) {
@@ -122,6 +144,10 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
       "output", {.format = graph::Format::RGBA8Srgb, .size = graph::Size::absolute(settings.width, settings.height)},
       graph::ImportedState{graph::Layout::Undefined},
       graph::FinalState{graph::Layout::TransferSrc, graph::PipelineStage::Transfer, graph::AccessFlag::TransferRead});
+  if (!gpuScene_.deformation().empty()) {
+    frame->deformation.emplace(deformation_.write(slot));
+    frame->inputs.deformation = &*frame->deformation;
+  }
   FrameContext& context = frame->context.emplace(frame->graph, frame->inputs, frame->view, states_);
   for (uint32_t d = 0; d < drawSpheres_.size(); ++d)
     if (sphereInFrustum(uniforms.viewProjection, drawSpheres_[d])) context.draws().forward.push_back(d);

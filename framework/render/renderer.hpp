@@ -15,6 +15,7 @@
 #include <shadelgraph/render/frame_context.hpp>
 #include <shadelgraph/render/gpu_scene.hpp>
 #include <shadelgraph/render/layer_textures.hpp>
+#include <shadelgraph/render/object_deformation.hpp>
 #include <shadelgraph/scene/scene.hpp>
 
 namespace sg::render {
@@ -61,6 +62,10 @@ class Renderer {
   // layer stack), from the next frame on.
   void setObjectTransform(uint32_t instance, const glm::mat4& world);
   void setObjectMaterial(uint32_t instance, const std::string& materialStack);
+  // A skinned or morphed object's joint matrices (world space: joint node
+  // world * inverse bind, scene::jointWorldMatrices) and morph weights, from
+  // the next frame on; the skinning pass deforms its vertices on the GPU.
+  void setObjectDeformation(uint32_t instance, std::span<const glm::mat4> worldJoints, std::span<const float> weights);
 
   // Declares and compiles the frame `render` would run (with real memory requirements).
   graph::CompiledPlan plan(const RenderSettings& settings);
@@ -75,6 +80,8 @@ class Renderer {
  private:
   struct Frame;
   std::unique_ptr<Frame> declare(const RenderSettings& settings);
+  // The object's draws' bounding spheres from its world transform (and its deformed bounds).
+  void updateSpheres(uint32_t instance, const glm::mat4& world);
 
   gpu::Device& device_;
   const scene::Scene& scene_;
@@ -87,6 +94,7 @@ class Renderer {
   LayerTextures layerTextures_;
   GpuScene gpuScene_;
   DrawCulling culling_;
+  ObjectDeformation deformation_;
   gpu::Buffer frameUniforms_[2];  // one per frame in flight
   std::optional<gpu::Image> output_;
   gpu::GraphExecutor executor_;

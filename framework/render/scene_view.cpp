@@ -12,6 +12,11 @@ SceneView readDrawCommands(graph::Pass& pass, SceneView view) {
   return view;
 }
 
+void readSceneGeometry(graph::Pass& pass, const SceneView& view, graph::Access access, graph::ShaderStage stages) {
+  if (const auto it = view.frameImages.find(kSceneVerticesResource); it != view.frameImages.end())
+    pass.read(it->second, access, stages);
+}
+
 void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const DrawItem& draw, uint32_t objectId,
               VkBuffer indirect, uint32_t drawIndex) {
   const ObjectConstants constants{draw.world, objectId, draw.material};

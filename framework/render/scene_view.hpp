@@ -30,6 +30,16 @@ struct SceneView {
   VkBuffer indirect = VK_NULL_HANDLE;
 };
 
+// The frame resource of the scene vertex buffer: present only in frames whose
+// skinning pass deformed a visible object this frame (it writes it).
+inline constexpr const char* kSceneVerticesResource = "scene.vertices";
+
+// Declares the pass's read of the scene's vertices when this frame deformed
+// some (every pass that reads GpuScene's vertex buffer calls it): vertex
+// input by default, or e.g. StorageRead from a compute shader.
+void readSceneGeometry(graph::Pass& pass, const SceneView& view, graph::Access access = graph::Access::Vertex,
+                       graph::ShaderStage stages = graph::ShaderStage::None);
+
 // The view a pass that draws `view.draws` records with: when this frame's
 // draws were culled, the pass reads the commands (declared now, at the
 // version current now) and draws indirectly, skipping culled draws.

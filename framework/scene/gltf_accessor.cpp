@@ -28,6 +28,7 @@ int componentCount(int type) {
     case TINYGLTF_TYPE_VEC2: return 2;
     case TINYGLTF_TYPE_VEC3: return 3;
     case TINYGLTF_TYPE_VEC4: return 4;
+    case TINYGLTF_TYPE_MAT4: return 16;  // inverse bind matrices (MAT2/MAT3 have column padding rules; unused)
     default: return 0;
   }
 }
@@ -93,6 +94,7 @@ const char* typeName(int components) {
     case 2: return "VEC2";
     case 3: return "VEC3";
     case 4: return "VEC4";
+    case 16: return "MAT4";
     default: return "MAT";
   }
 }

@@ -13,14 +13,15 @@ namespace sg::scene::detail {
 // bounds-checked against its bufferView and buffer.
 struct PackedAccessor {
   int componentType = 0;  // TINYGLTF_COMPONENT_TYPE_*
-  int components = 0;     // 1 (SCALAR) to 4 (VEC4)
+  int components = 0;     // 1 (SCALAR) to 4 (VEC4), 16 (MAT4)
   bool normalized = false;
   size_t count = 0;
   std::vector<uint8_t> bytes;  // count * components * component size
 };
 
 // `what` names the use in messages ("mesh 0 'Box' primitive 0 POSITION").
-// Throws InvalidAsset. Matrix accessors are rejected (nothing here reads them).
+// Throws InvalidAsset. MAT2 and MAT3 accessors are rejected (nothing reads them);
+// MAT4 (inverse bind matrices) has 16 components.
 PackedAccessor readAccessor(const tinygltf::Model& model, int accessorIndex, const std::string& what);
 
 // Components as floats: normalized integers mapped to [0, 1] / [-1, 1] as the

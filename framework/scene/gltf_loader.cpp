@@ -9,6 +9,7 @@
 #include <shadelgraph/scene/gltf_context.hpp>
 #include <shadelgraph/scene/gltf_json_check.hpp>
 #include <shadelgraph/scene/gltf_loader.hpp>
+#include <shadelgraph/scene/gltf_skin.hpp>
 #include <shadelgraph/scene/gltf_material.hpp>
 #include <shadelgraph/scene/gltf_mesh.hpp>
 #include <shadelgraph/scene/gltf_nodes.hpp>
@@ -132,7 +133,9 @@ Scene load(const std::filesystem::path& file, const LoadOptions& options) {
   const detail::GltfContext context{model, options, scene.warnings};
   detail::convertMaterials(context, scene);
   detail::convertMeshes(context, scene);
-  detail::convertAnimations(context, detail::convertNodes(context, scene), scene);
+  const std::vector<int> sceneNodeOf = detail::convertNodes(context, scene);
+  detail::convertSkins(context, sceneNodeOf, scene);
+  detail::convertAnimations(context, sceneNodeOf, scene);
   detail::capWarnings(scene.warnings);
   return scene;
 }

@@ -9,8 +9,10 @@
 // metallic-roughness materials, samplers, KHR_texture_transform,
 // KHR_lights_punctual, cameras, and the node extras {"shading": "auto" |
 // "decoupled" | "forward"} (inherited by child nodes), and animations
-// (scene.animations over scene.nodes; pose.hpp poses them). Points and
-// lines, skins and morph targets are skipped with a warning.
+// (scene.animations over scene.nodes; pose.hpp poses them), skins
+// (JOINTS_0/WEIGHTS_0, JOINTS_1/WEIGHTS_1, inverse bind matrices) and morph
+// targets (POSITION, NORMAL, TANGENT deltas; deformation.hpp). Points and
+// lines are skipped with a warning.
 //
 // Repairs, each with a warning: flat normals when NORMAL is missing (the
 // primitive is de-indexed, as glTF requires), normals of non-unit length are

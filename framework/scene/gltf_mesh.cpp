@@ -68,7 +68,6 @@ class PrimitiveBuilder {
       context_.warnings.push_back(where + ": has no POSITION; skipped");
       return std::nullopt;
     }
-    if (!in.targets.empty()) context_.warnings.push_back(where + ": morph targets are ignored");
 
     Primitive out;
     out.positions = attribute<3>("POSITION", {{3}}, std::nullopt);
@@ -80,6 +79,8 @@ class PrimitiveBuilder {
     out.colors = colors(vertexCount);
     out.indices = triangleList(mode, vertexCount);
     out.material = material();
+    skinAttributes(out);
+    out.targets = morphTargets(vertexCount);
 
     if (out.normals.empty()) {
       out.tangents.clear();  // glTF: tangents without normals must be ignored
@@ -148,23 +149,94 @@ class PrimitiveBuilder {
   template <int N>
   std::vector<glm::vec<N, float>> attribute(const char* name, const AttributeFormat& format,
                                             std::optional<size_t> vertexCount) {
-    const auto it = in_->attributes.find(name);
-    if (it == in_->attributes.end()) return {};
-    const std::string what = where_ + " " + name;
+    return attributeIn<N>(in_->attributes, name, format, vertexCount);
+  }
+
+  // JOINTS_0/WEIGHTS_0 and, when the file has them, JOINTS_1/WEIGHTS_1; a
+  // vertex's weights are normalized to sum 1 (glTF asks writers for that).
+  void skinAttributes(Primitive& out) {
+    const size_t vertexCount = out.positions.size();
+    for (int set = 0; set < 3; ++set) {
+      const std::string joints = "JOINTS_" + std::to_string(set), weights = "WEIGHTS_" + std::to_string(set);
+      const bool hasJoints = in_->attributes.contains(joints), hasWeights = in_->attributes.contains(weights);
+      if (!hasJoints && !hasWeights) break;
+      if (hasJoints != hasWeights) fail(joints + " and " + weights + " must come together");
+      if (set == 2) {
+        context_.warnings.push_back(where_ + ": influences beyond JOINTS_1/WEIGHTS_1 (8 per vertex) are ignored");
+        break;
+      }
+      const int index = in_->attributes.at(joints);
+      const PackedAccessor accessor = read(index, where_ + " " + joints);
+      if (accessor.components != 4 || accessor.normalized ||
+          (accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+           accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT))
+        fail(joints + " (accessor " + std::to_string(index) + ") is " + typeName(accessor.components) + " of " +
+             componentTypeName(accessor.componentType) + "; expected VEC4 of UNSIGNED_BYTE or UNSIGNED_SHORT");
+      if (accessor.count != vertexCount)
+        fail(joints + " has " + std::to_string(accessor.count) + " elements, POSITION has " + std::to_string(vertexCount));
+      const std::vector<uint32_t> values = toUints(accessor);
+      std::vector<glm::uvec4>& outJoints = set == 0 ? out.joints0 : out.joints1;
+      outJoints.resize(vertexCount);
+      for (size_t v = 0; v < vertexCount; ++v)
+        outJoints[v] = glm::uvec4(values[4 * v], values[4 * v + 1], values[4 * v + 2], values[4 * v + 3]);
+      (set == 0 ? out.weights0 : out.weights1) = attribute<4>(weights.c_str(), {{4}, true}, vertexCount);
+    }
+    size_t repaired = 0;
+    for (size_t v = 0; v < out.weights0.size(); ++v) {
+      glm::vec4& w0 = out.weights0[v];
+      glm::vec4 zero(0.0f);
+      glm::vec4& w1 = out.weights1.empty() ? zero : out.weights1[v];
+      if (glm::any(glm::lessThan(w0, zero)) || glm::any(glm::lessThan(w1, zero)))
+        fail("WEIGHTS of vertex " + std::to_string(v) + " are negative");
+      const float total = w0.x + w0.y + w0.z + w0.w + w1.x + w1.y + w1.z + w1.w;
+      if (total > 0.0f) {
+        repaired += std::abs(total - 1.0f) > 2e-3f;
+        w0 /= total;
+        w1 /= total;
+      }
+    }
+    if (repaired)
+      context_.warnings.push_back(where_ + ": " + std::to_string(repaired) + " vertices' WEIGHTS did not sum to 1; normalized");
+  }
+
+  // POSITION, NORMAL and TANGENT deltas of each morph target (others are not applied).
+  std::vector<MorphTarget> morphTargets(size_t vertexCount) {
+    std::vector<MorphTarget> out;
+    for (size_t t = 0; t < in_->targets.size(); ++t) {
+      const std::map<std::string, int>& attributes = in_->targets[t];
+      MorphTarget& target = out.emplace_back();
+      const std::string prefix = "target " + std::to_string(t) + " ";
+      target.positions = attributeIn<3>(attributes, "POSITION", {{3}}, vertexCount, prefix);
+      target.normals = attributeIn<3>(attributes, "NORMAL", {{3}}, vertexCount, prefix);
+      target.tangents = attributeIn<3>(attributes, "TANGENT", {{3}}, vertexCount, prefix);
+      for (const auto& [name, accessor] : attributes)
+        if (name != "POSITION" && name != "NORMAL" && name != "TANGENT")
+          repairs_["morph target " + name + " deltas are not applied"].push_back(where_);
+    }
+    return out;
+  }
+
+  template <int N>
+  std::vector<glm::vec<N, float>> attributeIn(const std::map<std::string, int>& attributes, const char* name,
+                                              const AttributeFormat& format, std::optional<size_t> vertexCount,
+                                              const std::string& prefix = {}) {
+    const auto it = attributes.find(name);
+    if (it == attributes.end()) return {};
+    const std::string what = where_ + " " + prefix + name;
     const PackedAccessor accessor = read(it->second, what);
-    checkFormat(accessor, format, name, it->second);
+    checkFormat(accessor, format, (prefix + name).c_str(), it->second);
     if (vertexCount && accessor.count != *vertexCount)
-      fail(std::string(name) + " has " + std::to_string(accessor.count) + " elements, POSITION has " +
+      fail(prefix + name + " has " + std::to_string(accessor.count) + " elements, POSITION has " +
            std::to_string(*vertexCount));
     const std::vector<float> floats = toFloats(accessor);
     std::vector<glm::vec<N, float>> out(accessor.count);
-    const bool position = std::string_view(name) == "POSITION";
+    const bool position = std::string_view(name) == "POSITION";  // deltas too: their sums must stay finite
     for (size_t i = 0; i < accessor.count; ++i) {
       for (int c = 0; c < N; ++c) out[i][c] = floats[i * N + static_cast<size_t>(c)];
       for (int c = 0; c < N; ++c) {
-        if (!std::isfinite(out[i][c])) fail(std::string(name) + " " + std::to_string(i) + " is not finite: " + toText(out[i]));
+        if (!std::isfinite(out[i][c])) fail(prefix + name + " " + std::to_string(i) + " is not finite: " + toText(out[i]));
         if (position && static_cast<double>(std::abs(out[i][c])) > kMaxCoordinate)
-          fail("POSITION " + std::to_string(i) + " " + toText(out[i]) +
+          fail(prefix + "POSITION " + std::to_string(i) + " " + toText(out[i]) +
                " is beyond +-1e18, where squared lengths overflow 32-bit float");
       }
     }
@@ -311,6 +383,31 @@ class PrimitiveBuilder {
 
 }  // namespace
 
+namespace {
+
+// The mesh's default morph weights: the file's, else 0 per target. glTF asks
+// every primitive of a mesh for the same number of targets.
+std::vector<float> morphWeights(const tinygltf::Mesh& in, const Mesh& mesh, const std::string& name) {
+  size_t targets = 0;
+  for (const Primitive& primitive : mesh.primitives) {
+    if (targets && primitive.morphed() && primitive.targets.size() != targets)
+      throw InvalidAsset(name + ": its primitives have different numbers of morph targets");
+    targets = std::max(targets, primitive.targets.size());
+  }
+  if (in.weights.empty()) return std::vector<float>(targets, 0.0f);
+  if (in.weights.size() != targets)
+    throw InvalidAsset(name + ": " + std::to_string(in.weights.size()) + " weights for " + std::to_string(targets) +
+                       " morph targets");
+  std::vector<float> out;
+  for (double w : in.weights) {
+    if (!std::isfinite(w)) throw InvalidAsset(name + ": a morph weight is not finite");
+    out.push_back(static_cast<float>(w));
+  }
+  return out;
+}
+
+}  // namespace
+
 void convertMeshes(const GltfContext& context, Scene& scene) {
   int defaultMaterial = -1;
   PrimitiveBuilder builder(context, scene, defaultMaterial);
@@ -326,6 +423,7 @@ void convertMeshes(const GltfContext& context, Scene& scene) {
       out.bounds.extend(primitive->bounds);
       out.primitives.push_back(std::move(*primitive));
     }
+    out.weights = morphWeights(in, out, name);
     scene.meshes.push_back(std::move(out));
   }
   builder.reportRepairs();

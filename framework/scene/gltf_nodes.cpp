@@ -215,10 +215,27 @@ class NodeWalker {
       const glm::dquat q(in.rotation[3], in.rotation[0], in.rotation[1], in.rotation[2]);
       if (glm::length(q) > 0.0) out.rotation = glm::quat(glm::normalize(q));
     }
+    out.weights = morphWeights(in, out.name);
     const auto sceneIndex = static_cast<int>(scene_.nodes.size());
     scene_.nodes.push_back(out);
     sceneNodeOf_[static_cast<size_t>(index)] = sceneIndex;
     return sceneIndex;
+  }
+
+  // The node's morph weights (glTF: they override its mesh's), one per target of its mesh.
+  std::vector<float> morphWeights(const tinygltf::Node& in, const std::string& name) const {
+    if (in.mesh < 0 || static_cast<size_t>(in.mesh) >= scene_.meshes.size()) return {};
+    const std::vector<float>& defaults = scene_.meshes[static_cast<size_t>(in.mesh)].weights;
+    if (in.weights.empty()) return defaults;
+    if (in.weights.size() != defaults.size())
+      throw InvalidAsset(name + ": " + std::to_string(in.weights.size()) + " weights for its mesh's " +
+                         std::to_string(defaults.size()) + " morph targets");
+    std::vector<float> out;
+    for (double w : in.weights) {
+      if (!std::isfinite(w)) throw InvalidAsset(name + ": a morph weight is not finite");
+      out.push_back(static_cast<float>(w));
+    }
+    return out;
   }
 
   void place(const tinygltf::Node& node, int index, int sceneNode, const std::string& name, const glm::mat4& world,
@@ -227,16 +244,17 @@ class NodeWalker {
       if (static_cast<size_t>(node.mesh) >= model_.meshes.size())
         throw InvalidAsset(name + ": mesh " + std::to_string(node.mesh) + " does not exist (the file has " +
                            std::to_string(model_.meshes.size()) + ")");
-      if (node.skin >= 0 && !warnedSkin_) {
-        context_.warnings.push_back(name + ": skinning is not supported; drawn in its bind pose");
-        warnedSkin_ = true;
-      }
+      if (node.skin >= 0 && static_cast<size_t>(node.skin) >= model_.skins.size())
+        throw InvalidAsset(name + ": skin " + std::to_string(node.skin) + " does not exist (the file has " +
+                           std::to_string(model_.skins.size()) + ")");
       Instance instance;
       instance.mesh = node.mesh;
       instance.world = world;
       instance.name = node.name.empty() ? "node " + std::to_string(index) : node.name;
       instance.shading = shading;
       instance.node = sceneNode;
+      instance.skin = node.skin;  // Scene::skins holds the file's skins in order (convertSkins)
+      instance.morphWeights = scene_.nodes[static_cast<size_t>(sceneNode)].weights;
       scene_.instances.push_back(std::move(instance));
     }
     if (node.camera >= 0) {
@@ -269,7 +287,6 @@ class NodeWalker {
   const tinygltf::Model& model_;
   Scene& scene_;
   std::vector<int> sceneNodeOf_;
-  bool warnedSkin_ = false;
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -26,6 +27,8 @@ struct Instance {
   std::string material;   // its material (layer stack) by registered name; empty: the default, "gltf-pbr"
   int node = -1;          // the glTF node it hangs off (Scene::nodes), -1: none (animations do not move it)
   ObjectMotion motion;    // how it moves from `world` (its pose at time 0); none by default
+  int skin = -1;          // index into Scene::skins: the glTF node's skin; -1: not skinned
+  std::vector<float> morphWeights;  // current weights of its mesh's morph targets (node's, else mesh's defaults)
 };
 
 }  // namespace sg::scene

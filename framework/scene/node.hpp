@@ -2,6 +2,7 @@
 // The node hierarchy of the loaded glTF files, kept so that animations can
 // move it: instances and cameras name the node they hang off.
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -19,6 +20,7 @@ struct Node {
   bool hasMatrix = false;
   glm::mat4 matrix{1.0f};
   glm::mat4 placement{1.0f};  // roots only: where the scene file placed the glTF file
+  std::vector<float> weights;  // morph weights at rest (node's, else its mesh's); what Weights channels animate
 
   glm::mat4 local() const;
 };

@@ -21,6 +21,7 @@ void deindex(Primitive& primitive) {
   expand(primitive.uv0, primitive.indices);
   expand(primitive.uv1, primitive.indices);
   expand(primitive.colors, primitive.indices);
+  forEachDeformationAttribute(primitive, [&](auto& attribute) { expand(attribute, primitive.indices); });
   for (size_t i = 0; i < primitive.indices.size(); ++i) primitive.indices[i] = static_cast<uint32_t>(i);
 }
 

@@ -11,7 +11,7 @@ std::vector<glm::mat4> poseNodes(const Scene& scene, std::span<const int> animat
   for (const int a : animations) {
     const Animation& animation = scene.animations.at(static_cast<size_t>(a));
     for (const AnimationChannel& channel : animation.channels) {
-      if (channel.path == AnimatedPath::Weights) continue;  // morph targets are not applied (yet)
+      if (channel.path == AnimatedPath::Weights) continue;  // poseWeights samples these
       const AnimationSampler& sampler = animation.samplers[static_cast<size_t>(channel.sampler)];
       Node& node = nodes[static_cast<size_t>(channel.node)];
       const bool rotation = channel.path == AnimatedPath::Rotation;
@@ -27,6 +27,31 @@ std::vector<glm::mat4> poseNodes(const Scene& scene, std::span<const int> animat
     world[n] = (node.parent < 0 ? node.placement : world[static_cast<size_t>(node.parent)]) * node.local();
   }
   return world;
+}
+
+std::vector<std::vector<float>> poseWeights(const Scene& scene, std::span<const int> animations, float t) {
+  std::vector<std::vector<float>> weights(scene.nodes.size());
+  for (size_t n = 0; n < weights.size(); ++n) weights[n] = scene.nodes[n].weights;
+  std::vector<float> value;
+  for (const int a : animations) {
+    const Animation& animation = scene.animations.at(static_cast<size_t>(a));
+    for (const AnimationChannel& channel : animation.channels) {
+      if (channel.path != AnimatedPath::Weights) continue;
+      const AnimationSampler& sampler = animation.samplers[static_cast<size_t>(channel.sampler)];
+      std::vector<float>& node = weights[static_cast<size_t>(channel.node)];
+      if (sampler.width != node.size()) continue;  // not one weight per morph target of the node's mesh
+      value.resize(sampler.width);
+      sampleAt(sampler, t + animation.timeOffset, false, value);
+      node = value;
+    }
+  }
+  return weights;
+}
+
+void applyWeights(Scene& scene, std::span<const std::vector<float>> nodeWeights) {
+  for (Instance& instance : scene.instances)
+    if (instance.node >= 0 && !instance.morphWeights.empty())
+      instance.morphWeights = nodeWeights[static_cast<size_t>(instance.node)];
 }
 
 namespace {

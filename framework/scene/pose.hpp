@@ -19,6 +19,14 @@ std::vector<glm::mat4> poseNodes(const Scene& scene, std::span<const int> animat
 // (poseNodes' result). Lights stay where they were loaded.
 void applyPose(Scene& scene, std::span<const glm::mat4> nodeWorld);
 
+// Morph weights of every node (Node::weights, with the Weights channels of
+// `animations` sampled at `t`; a channel whose width is not the node's target
+// count is ignored).
+std::vector<std::vector<float>> poseWeights(const Scene& scene, std::span<const int> animations, float t);
+
+// Sets the morph weights of the instances that hang off nodes to `nodeWeights` (poseWeights' result).
+void applyWeights(Scene& scene, std::span<const std::vector<float>> nodeWeights);
+
 // Every animation of the scene, in order: what plays by default.
 std::vector<int> allAnimations(const Scene& scene);
 

@@ -56,8 +56,14 @@ void appendScene(Scene& into, Scene other, const glm::mat4& transform, const std
     for (AnimationChannel& channel : animation.channels) channel.node = rebase(channel.node, nodeBase);
     into.animations.push_back(std::move(animation));
   }
+  const size_t skinBase = into.skins.size();
+  for (Skin& skin : other.skins) {
+    for (int& joint : skin.joints) joint = rebase(joint, nodeBase);
+    into.skins.push_back(std::move(skin));
+  }
   for (Instance& instance : other.instances) {
     instance.mesh = rebase(instance.mesh, meshBase);
+    instance.skin = rebase(instance.skin, skinBase);
     instance.node = rebase(instance.node, nodeBase);
     instance.world = transform * instance.world;
     into.instances.push_back(std::move(instance));

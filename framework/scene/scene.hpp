@@ -13,12 +13,13 @@
 #include <shadelgraph/scene/material.hpp>
 #include <shadelgraph/scene/mesh.hpp>
 #include <shadelgraph/scene/node.hpp>
+#include <shadelgraph/scene/skin.hpp>
 #include <shadelgraph/scene/texture.hpp>
 
 namespace sg::scene {
 
 // Every index stored in one of these vectors (Instance::mesh, Instance::node,
-// Camera::node, Node::parent, AnimationChannel::node, Primitive::material,
+// Camera::node, Node::parent, Instance::skin, Skin::joints, AnimationChannel::node, Primitive::material,
 // TextureRef::texture, Texture::sampler) is valid.
 struct Scene {
   std::vector<Mesh> meshes;
@@ -30,6 +31,7 @@ struct Scene {
   std::vector<Camera> cameras;
   std::vector<Node> nodes;            // of glTF files, parents first
   std::vector<Animation> animations;  // of glTF files
+  std::vector<Skin> skins;            // of glTF files
   std::vector<std::string> warnings;  // things skipped or repaired, one line each
 };
 

@@ -260,6 +260,7 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
     std::vector<Camera> cameras;
     std::vector<Node> nodes;  // each object gets its own copy, so each animates on its own
     std::vector<Animation> animations;
+    std::vector<Skin> skins;  // their joints are nodes: one copy per object too
     int meshBase = 0;
   };
   std::map<std::filesystem::path, Placements> loaded;
@@ -293,12 +294,14 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
       }
       // One load; its nodes and animations are placed once per object below.
       Placements placements{std::move(scene.instances), std::move(scene.lights),     std::move(scene.cameras),
-                            std::move(scene.nodes),     std::move(scene.animations), static_cast<int>(result.scene.meshes.size())};
+                            std::move(scene.nodes),     std::move(scene.animations), std::move(scene.skins),
+                            static_cast<int>(result.scene.meshes.size())};
       scene.instances.clear();
       scene.lights.clear();
       scene.cameras.clear();
       scene.nodes.clear();
       scene.animations.clear();
+      scene.skins.clear();
       appendScene(result.scene, std::move(scene), glm::mat4(1.0f), gltfPath.filename().string() + ": ");
       it = loaded.emplace(gltfPath, std::move(placements)).first;
     }
@@ -314,9 +317,15 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
       animation.name = name + "/" + animation.name;
       result.scene.animations.push_back(std::move(animation));
     }
+    const int skinBase = static_cast<int>(result.scene.skins.size());
+    for (Skin skin : placements.skins) {
+      for (int& joint : skin.joints) joint += nodeBase;
+      result.scene.skins.push_back(std::move(skin));
+    }
     for (Instance instance : placements.instances) {
       instance.mesh += placements.meshBase;
       if (instance.node >= 0) instance.node += nodeBase;
+      if (instance.skin >= 0) instance.skin += skinBase;
       instance.world = transform * instance.world;
       instance.name = name + "/" + instance.name;
       if (shading) instance.shading = *shading;

@@ -204,6 +204,12 @@ size_t addTangents(Primitive& p, int uvSet) {
     if (!p.uv0.empty()) p.uv0.push_back(p.uv0[v]);
     if (!p.uv1.empty()) p.uv1.push_back(p.uv1[v]);
     if (!p.colors.empty()) p.colors.push_back(p.colors[v]);
+    forEachDeformationAttribute(p, [v](auto& attribute) {
+      if (!attribute.empty()) {
+        const auto value = attribute[v];  // a copy: push_back may reallocate
+        attribute.push_back(value);
+      }
+    });
     p.tangents.push_back(glm::vec4(0.0f));
     return static_cast<uint32_t>(p.positions.size() - 1);
   };

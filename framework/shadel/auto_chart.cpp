@@ -54,6 +54,7 @@ AutoChartResult autoChartMesh(const scene::Mesh& mesh, const AutoChartOptions& o
   // Split vertices per (vertex, chart) and write the chart into uv1.
   result.mesh.name = mesh.name;
   result.mesh.bounds = mesh.bounds;
+  result.mesh.weights = mesh.weights;
   uint32_t meshTriangle = 0;
   for (const scene::Primitive& source : mesh.primitives) {
     scene::Primitive& out = result.mesh.primitives.emplace_back(source);
@@ -76,6 +77,10 @@ AutoChartResult autoChartMesh(const scene::Mesh& mesh, const AutoChartOptions& o
     copySplit(source.tangents, out.tangents, sourceVertex);
     copySplit(source.uv0, out.uv0, sourceVertex);
     copySplit(source.colors, out.colors, sourceVertex);
+    scene::forEachDeformationAttribute(out, [&](auto& attribute) {
+      const auto from = attribute;
+      copySplit(from, attribute, sourceVertex);
+    });
     out.uv1 = std::move(uvs);
     result.stats.verticesIn += source.vertexCount();
     result.stats.verticesOut += out.vertexCount();

@@ -13,6 +13,7 @@ graph::ResourceHandle addAlphaBlend(graph::RenderGraph& graph, const render::Sce
   pass.read(targets.depth, graph::Access::DepthRead);
   targets.color = pass.write(targets.color, graph::Access::ColorAttachment);
   readFrameInputs(pass, view, view.draws);
+  render::readSceneGeometry(pass, view);
   pass.execute([view = render::readDrawCommands(pass, view), targets, cameraPosition](PassContext& ctx) {
     // Back to front by the distance of each object's origin: the usual
     // compromise for per-object sorting (intersecting objects stay wrong).

@@ -10,6 +10,7 @@ ForwardTargets addAlphaMask(graph::RenderGraph& graph, const render::SceneView& 
   targets.color = pass.write(targets.color, graph::Access::ColorAttachment);
   targets.depth = pass.write(targets.depth, graph::Access::DepthAttachment);
   readFrameInputs(pass, view, view.draws);
+  render::readSceneGeometry(pass, view);
   pass.execute([view = render::readDrawCommands(pass, view), targets](PassContext& ctx) {
     ctx.beginRendering({ColorTarget{targets.color}}, DepthTarget{targets.depth}, true);
     drawForward(ctx, view, drawsWithAlphaMode(view, scene::AlphaMode::Mask), false);

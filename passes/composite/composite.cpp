@@ -41,6 +41,7 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
   pass.read(depth, graph::Access::DepthRead);
   pass.read(frame.remap, graph::Access::StorageRead);
   pass.read(frame.shadedColor, graph::Access::Sampled);
+  render::readSceneGeometry(pass, frame.view);
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);  // misses
   color = pass.write(color, graph::Access::ColorAttachment);
   // Culled draws (instance count 0 in the frame's draw commands) are skipped.

@@ -9,6 +9,7 @@ ForwardTargets addForwardOpaque(graph::RenderGraph& graph, const render::SceneVi
   targets.color = pass.write(targets.color, graph::Access::ColorAttachment);
   pass.read(targets.depth, graph::Access::DepthRead);
   readFrameInputs(pass, view, view.draws);
+  render::readSceneGeometry(pass, view);
   pass.execute([view = render::readDrawCommands(pass, view), targets](PassContext& ctx) {
     ctx.beginRendering({ColorTarget{targets.color, VkClearColorValue{{0.42f, 0.55f, 0.75f, 1.0f}}}},
                        DepthTarget{targets.depth, {}, true}, true);

@@ -56,6 +56,7 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
   pass.read(frame.args, graph::Access::IndirectArgs);
   pass.read(frame.remap, graph::Access::StorageRead);
   render::readShadowMaps(pass, frame.view, graph::ShaderStage::Compute);
+  render::readSceneGeometry(pass, frame.view, graph::Access::StorageRead, graph::ShaderStage::Compute);
   bool persistent = false;
   std::map<graph::ResourceHandle, graph::ResourceHandle> written;  // each output once, however many steps write it
   for (auto& step : steps) {

@@ -26,6 +26,7 @@ gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline) {
 void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle depth) {
   auto& pass = graph.addPass("shadel-mark", graph::QueueClass::Graphics);
   pass.read(depth, graph::Access::DepthRead);
+  render::readSceneGeometry(pass, frame.view);
   frame.remap = pass.write(frame.remap, graph::Access::StorageReadWrite, graph::ShaderStage::Fragment);
   frame.markedFilter = frame.filter;
   // Culled draws (instance count 0 in the frame's draw commands) are skipped.

@@ -29,6 +29,7 @@ graph::ResourceHandle addShadowMaps(graph::RenderGraph& graph, const render::Sce
                                  {.format = graph::Format::D32F, .size = graph::Size::absolute(slots * kSide, kSide)});
   auto& pass = graph.addPass("shadows", graph::QueueClass::Graphics);
   atlas = pass.write(atlas, graph::Access::DepthAttachment);
+  render::readSceneGeometry(pass, view);
   pass.execute([view, maps = std::move(maps), atlas](PassContext& ctx) {
     ctx.beginRendering({}, DepthTarget{atlas, 1.0f}, true);
     const auto& pipeline = ctx.device().pipeline("shadow-map", shadowMapPipeline);

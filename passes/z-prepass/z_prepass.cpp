@@ -30,6 +30,7 @@ gpu::GraphicsPipelineDesc zPrepassPipeline() {
 graph::ResourceHandle addZPrepass(graph::RenderGraph& graph, const render::SceneView& view, graph::ResourceHandle depth) {
   auto& pass = graph.addPass("z-prepass", graph::QueueClass::Graphics);
   depth = pass.write(depth, graph::Access::DepthAttachment);
+  render::readSceneGeometry(pass, view);
   pass.execute([view = render::readDrawCommands(pass, view), depth](PassContext& ctx) {
     ctx.beginRendering({}, DepthTarget{depth, 1.0f}, true);
     drawOpaque(ctx, view, view.indirect);
@@ -42,6 +43,7 @@ graph::ResourceHandle addZPrepassLate(graph::RenderGraph& graph, const render::S
                                       graph::ResourceHandle depth, graph::ResourceHandle late) {
   auto& pass = graph.addPass("z-prepass (late)", graph::QueueClass::Graphics);
   pass.read(late, graph::Access::IndirectArgs);
+  render::readSceneGeometry(pass, view);
   depth = pass.write(depth, graph::Access::DepthAttachment);
   pass.execute([view, depth, late](PassContext& ctx) {
     ctx.beginRendering({}, DepthTarget{depth, {}}, true);

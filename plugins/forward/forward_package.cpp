@@ -13,6 +13,7 @@
 #include "forward/forward.hpp"
 #include "forward/forward_material.hpp"
 #include "shadows/shadows.hpp"
+#include "skinning/skinning.hpp"
 #include "occlusion-cull/occlusion_cull.hpp"
 #include "tonemap/tonemap.hpp"
 #include "z-prepass/z_prepass.hpp"
@@ -78,9 +79,28 @@ void declareShadows(FrameContext& ctx) {
                                                                std::move(maps), uint32_t(views.size())));
 }
 
+// Deforms the skinned and morphed objects when one of them is visible (all
+// of them then: a deformed object off screen may still cast a shadow into view).
+void declareSkinning(FrameContext& ctx) {
+  const render::DeformationFrame* deformation = ctx.inputs().deformation;
+  if (!deformation) return;
+  const auto visible = ctx.visibleDraws();
+  const auto& draws = ctx.gpuScene().draws();
+  if (std::none_of(visible.begin(), visible.end(),
+                   [&](uint32_t d) { return deformation->deformation.deformed(draws[d].instance); }))
+    return;
+  ctx.write(render::kSceneVerticesResource,
+            passes::addSkinning(ctx.graph(), ctx.inputs().executor, ctx.gpuScene(), *deformation));
+}
+
 }  // namespace
 
 void registerForwardPackage(plugin::Registry& registry) {
+  registry.addPass({.name = "skinning",
+                    .description = "skinned and morphed objects' vertices for this frame (compute; only when one is visible)",
+                    .reads = {plugin::kForwardDrawsResource},
+                    .writes = {render::kSceneVerticesResource},
+                    .declare = declareSkinning});
   registry.addPass({.name = "z-prepass",
                     .description = "depth of every visible opaque object, forward or decoupled",
                     .reads = {plugin::kForwardDrawsResource},
@@ -154,7 +174,7 @@ void registerForwardPackage(plugin::Registry& registry) {
                                                    ctx.read(plugin::kOutputResource), ctx.debugColors));
                     }});
   registry.addFrame({.name = "forward",
-                     .passes = {{.pass = "z-prepass"}, {.pass = "shadows"}, {.pass = "forward-opaque"}, {.pass = "alpha-mask"},
+                     .passes = {{.pass = "skinning"}, {.pass = "z-prepass"}, {.pass = "shadows"}, {.pass = "forward-opaque"}, {.pass = "alpha-mask"},
                                 {.pass = "alpha-blend"}, {.pass = "exposure"}, {.pass = "tonemap"}}});
 }
 

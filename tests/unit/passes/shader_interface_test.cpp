@@ -35,6 +35,7 @@
 #include <tonemap/tonemap.hpp>
 #include <work-aggregate/work_aggregate.hpp>
 #include <occlusion-cull/occlusion_cull.hpp>
+#include <skinning/skinning.hpp>
 #include <z-prepass/z_prepass.hpp>
 
 namespace sg::test {
@@ -225,6 +226,7 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   errors += mismatches("z-prepass", passes::zPrepassPipeline());
   errors += mismatches("exposure", passes::exposurePipeline());
   errors += mismatches("shadows", passes::shadowMapPipeline());
+  errors += mismatches("skinning", passes::skinningPipeline());
   errors += mismatches("hi-z", passes::hiZPipeline());
   errors += mismatches("occlusion-cull", passes::occlusionCullPipeline());
   for (bool passthrough : {false, true})

@@ -145,6 +145,24 @@ TEST(SceneFileAnimation, EachObjectAnimatesOnItsOwnClock) {
   EXPECT_EQ(glm::vec3(scene.instances[2].world[3]), glm::vec3(10, 0, 9)) << "c: no animation, the rest pose";
 }
 
+TEST(SceneFileAnimation, EachObjectSkinsWithItsOwnJoints) {
+  SG_REQUIRE_ASSETS();
+  test::TempDir dir;
+  const std::string model = test::samplePath("RiggedSimple").string();
+  const auto scenePath = dir.write("scene.json", R"({"objects": [{"gltf": ")" + model + R"(", "name": "a"},
+    {"gltf": ")" + model + R"(", "name": "b", "translation": [3, 0, 0], "timeOffset": 0.5}]})");
+  const Scene scene = loadSceneFile(scenePath, LoadOptions{.decodeImages = false}).scene;
+  ASSERT_EQ(scene.skins.size(), 2u);
+  ASSERT_EQ(scene.instances.size(), 2u);
+  const size_t nodesPerObject = scene.nodes.size() / 2;
+  EXPECT_EQ(scene.instances[0].skin, 0);
+  EXPECT_EQ(scene.instances[1].skin, 1);
+  ASSERT_EQ(scene.skins[0].joints.size(), scene.skins[1].joints.size());
+  for (size_t j = 0; j < scene.skins[0].joints.size(); ++j)
+    EXPECT_EQ(size_t(scene.skins[1].joints[j]), size_t(scene.skins[0].joints[j]) + nodesPerObject)
+        << "b's skin moves with b's own copy of the joints";
+}
+
 TEST(SceneFileAnimation, AnUnknownChoiceNamesTheAnimationsThereAre) {
   AnimatedFile file;
   file.write();
