@@ -17,8 +17,9 @@ void main() {
   if (i >= params.ownedEntryCount) return;
   SgOwnedEntry owned = ownedEntries[i];
   SgRemapEntry entry = remap[owned.entryIndex];
-  if (entry.storageBase == SG_NO_STORAGE) return;
-  uvec2 halves = unpackUint2x32(entry.occupancy);
-  atomicAdd(work[sgObjectChunksSlot(owned.instanceId)], uint(bitCount(halves.x) + bitCount(halves.y)));
+  uint stored = 0u;
+  for (uint c = 0u; c < SG_CHUNKS_PER_ENTRY; ++c)
+    if (sgIsChunkMarked(entry.occupancy, c) && chunkSlots[i * SG_CHUNKS_PER_ENTRY + c] != kNoSlot) ++stored;
+  if (stored > 0u) atomicAdd(work[sgObjectChunksSlot(owned.instanceId)], stored);
 #endif
 }
