@@ -17,9 +17,8 @@ void main() {
   if (i >= params.ownedEntryCount) return;
   SgOwnedEntry owned = ownedEntries[i];
   SgRemapEntry entry = remap[owned.entryIndex];
-  uint stored = 0u;
-  for (uint c = 0u; c < SG_CHUNKS_PER_ENTRY; ++c)
-    if (sgIsChunkMarked(entry.occupancy, c) && chunkSlots[i * SG_CHUNKS_PER_ENTRY + c] != kNoSlot) ++stored;
+  uvec2 halves = unpackUint2x32(entry.occupancy & sgStoredMask(i));
+  uint stored = uint(bitCount(halves.x) + bitCount(halves.y));
   if (stored > 0u) atomicAdd(work[sgObjectChunksSlot(owned.instanceId)], stored);
 #endif
 }

@@ -4,9 +4,10 @@
 // 0 (only when the slots are reset: new tables, another storage size) every
 //   slot empty and every physical chunk on the free list;
 // 1 per owned entry, the slots of chunks no longer marked go back on the
-//   free list; those still marked lose their kSlotFresh flag (kept);
+//   free list; those still marked are kept (no longer fresh);
 // 2 per owned entry, its newly marked chunks take slots from the free list
-//   (one compare-and-swap on its count for the whole entry), flagged fresh.
+//   (one compare-and-swap on its count for the whole entry), marked fresh.
+//   The entry's masks (chunk_slots.glsl) let both skip untouched entries.
 //   With too few free, the entry's new chunks stay without storage and the
 //   overflow is counted: never a write out of bounds (the adjuster raises
 //   the bias). Pushes and pops never meet in one step, so the stack needs no
@@ -31,6 +32,7 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
 #if SG_PHASE == 0
   if (i < params.ownedEntryCount * SG_CHUNKS_PER_ENTRY) chunkSlots[i] = kNoSlot;
+  if (i < params.ownedEntryCount) sgSetSlotMasks(i, uint64_t(0), uint64_t(0));
   if (i < params.workCapacity) chunkSlots[sgFreeStackSlot(i)] = params.workCapacity - 1u - i;  // chunk 0 on top
   if (i == 0u) chunkSlots[sgFreeCountSlot()] = params.workCapacity;
 #else
@@ -38,32 +40,27 @@ void main() {
   SgOwnedEntry owned = ownedEntries[i];
   uint64_t occupancy = remap[owned.entryIndex].occupancy;
   uint base = i * SG_CHUNKS_PER_ENTRY;
+  uint64_t stored = sgStoredMask(i);
 #if SG_PHASE == 1
-  uint freed[SG_CHUNKS_PER_ENTRY];
-  uint count = 0u;
-  for (uint c = 0u; c < SG_CHUNKS_PER_ENTRY; ++c) {
-    uint slot = chunkSlots[base + c];
-    if (slot == kNoSlot) continue;
-    if (sgIsChunkMarked(occupancy, c)) {
-      if ((slot & kSlotFresh) != 0u) chunkSlots[base + c] = slot & ~kSlotFresh;
-    } else {
-      freed[count++] = slot & ~kSlotFresh;
-      chunkSlots[base + c] = kNoSlot;
-    }
-  }
+  if (stored == uint64_t(0) && sgFreshMask(i) == uint64_t(0)) return;
+  uint64_t freed = stored & ~occupancy;
+  sgSetSlotMasks(i, stored & occupancy, uint64_t(0));  // what stays is kept, no longer fresh
+  uint count = bitsSet(freed);
   if (count == 0u) return;
   uint top = atomicAdd(chunkSlots[sgFreeCountSlot()], count);
-  for (uint k = 0u; k < count; ++k) chunkSlots[sgFreeStackSlot(top + k)] = freed[k];
+  for (uint k = 0u; k < count; ++k) {
+    uint c = sgLowestChunk(freed);
+    freed &= freed - uint64_t(1);
+    chunkSlots[sgFreeStackSlot(top + k)] = chunkSlots[base + c];
+    chunkSlots[base + c] = kNoSlot;
+  }
 #else
   uint marked = bitsSet(occupancy);
   if (marked == 0u) return;
   atomicAdd(counters.chunksMarked, marked);
   atomicAdd(counters.levelChunks[min(owned.level, kMaxLevels - 1u)], marked);
-  uint64_t missing = uint64_t(0);
-  for (uint c = 0u; c < SG_CHUNKS_PER_ENTRY; ++c)
-    if (sgIsChunkMarked(occupancy, c) && chunkSlots[base + c] == kNoSlot) missing |= uint64_t(1) << c;
+  uint64_t missing = occupancy & ~stored;
   uint need = bitsSet(missing);
-  uint stored = marked;
   if (need > 0u) {
     uint free = chunkSlots[sgFreeCountSlot()];
     bool taken = false;
@@ -76,24 +73,25 @@ void main() {
       free = seen;
     }
     if (taken) {
-      uint k = free;  // pops stack[free - need, free)
-      for (uint c = 0u; c < SG_CHUNKS_PER_ENTRY; ++c)
-        if (sgIsChunkMarked(missing, c)) chunkSlots[base + c] = chunkSlots[sgFreeStackSlot(--k)] | kSlotFresh;
+      for (uint k = free; missing != uint64_t(0); missing &= missing - uint64_t(1))  // pops stack[free - need, free)
+        chunkSlots[base + sgLowestChunk(missing)] = chunkSlots[sgFreeStackSlot(--k)];
+      sgSetSlotMasks(i, occupancy, occupancy & ~stored);
+      stored = occupancy;
     } else {
-      atomicAdd(counters.overflowChunks, need);
-      stored -= need;  // its new chunks stay without storage
+      atomicAdd(counters.overflowChunks, need);  // its new chunks stay without storage
     }
   }
-  if (stored == 0u) return;
-  atomicAdd(counters.chunksAllocated, stored);
+  uint storedCount = bitsSet(stored);
+  if (storedCount == 0u) return;
+  atomicAdd(counters.chunksAllocated, storedCount);
   uint reused = bitsSet(sgReusedChunks(i, owned, occupancy));
   if (reused > 0u) {
     atomicAdd(work[sgReuseCountSlot()], reused);
     atomicAdd(counters.chunksReused, reused);
   }
-  if (stored > reused) {
-    atomicAdd(work[sgObjectChunksSlot(owned.instanceId)], stored - reused);
-    atomicAdd(counters.chunksShaded, stored - reused);
+  if (storedCount > reused) {
+    atomicAdd(work[sgObjectChunksSlot(owned.instanceId)], storedCount - reused);
+    atomicAdd(counters.chunksShaded, storedCount - reused);
   }
 #endif
 #endif

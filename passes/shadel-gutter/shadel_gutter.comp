@@ -34,10 +34,7 @@ void main() {
   // Each lane lists its entry's stored chunks.
   if (lane < kEntriesPerGroup && first + lane < params.ownedEntryCount) {
     SgRemapEntry entry = remap[ownedEntries[first + lane].entryIndex];
-    uint base = (first + lane) * SG_CHUNKS_PER_ENTRY;
-    uint64_t stored = uint64_t(0);
-    for (uint c = 0u; c < SG_CHUNKS_PER_ENTRY; ++c)
-      if (sgIsChunkMarked(entry.occupancy, c) && chunkSlots[base + c] != kNoSlot) stored |= uint64_t(1) << c;
+    uint64_t stored = entry.occupancy & sgStoredMask(first + lane);
     uvec2 halves = unpackUint2x32(stored);
     uint count = uint(bitCount(halves.x) + bitCount(halves.y));
     if (count != 0u) {
@@ -51,7 +48,7 @@ void main() {
     uint item = chunks[t / kGutterTexels], k = t % kGutterTexels;
     uint ownedIndex = first + (item >> 16u);
     SgOwnedEntry owned = ownedEntries[ownedIndex];
-    uint physical = chunkSlots[ownedIndex * SG_CHUNKS_PER_ENTRY + (item & 0xFFu)] & ~kSlotFresh;
+    uint physical = chunkSlots[ownedIndex * SG_CHUNKS_PER_ENTRY + (item & 0xFFu)];
     SgLevelRect rect = sgLevelRect(owned.instanceId, owned.level);
     uvec2 origin = sgVirtualShadel(SgShadelAddress(owned.entryIndex, item & 0xFFu, 0u), params.entriesPerSideLog2);
     uvec2 inTile = k < SG_CHUNK_SIZE ? uvec2(SG_CHUNK_SIZE, k)

@@ -19,9 +19,7 @@ void main() {
   uint base = i * SG_CHUNKS_PER_ENTRY;
   uint64_t candidates = sgReuseCandidates(i, owned, entry.occupancy);
   uint64_t reused = sgReusedChunks(i, owned, entry.occupancy);
-  uint64_t stored = uint64_t(0);
-  for (uint c = 0u; c < SG_CHUNKS_PER_ENTRY; ++c)
-    if (sgIsChunkMarked(entry.occupancy, c) && chunkSlots[base + c] != kNoSlot) stored |= uint64_t(1) << c;
+  uint64_t stored = entry.occupancy & sgStoredMask(i);
   if (stored == uint64_t(0)) return;
   uvec2 halves = unpackUint2x32(stored & ~reused);
   uint count = uint(bitCount(halves.x) + bitCount(halves.y));
@@ -35,7 +33,7 @@ void main() {
   uint shaded = 0u, copied = 0u, oldest = 0u, refreshed = 0u;
   for (uint chunk = 0u; chunk < SG_CHUNKS_PER_ENTRY; ++chunk) {
     if (!sgIsChunkMarked(stored, chunk)) continue;
-    uint physical = chunkSlots[base + chunk] & ~kSlotFresh;
+    uint physical = chunkSlots[base + chunk];
     if (budget && sgIsChunkMarked(candidates, chunk)) {
       uint age = params.frameNumber - stamps[physical];
       atomicAdd(counters.staleAgeChunks[min(age, kStaleAgeBins - 1u)], 1u);

@@ -1,5 +1,6 @@
 #include "chunk_slots.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 #include <shadelgraph/shadel/remap_entry.hpp>
@@ -9,7 +10,11 @@ namespace sg::plugins {
 namespace {
 constexpr uint32_t kPerEntry = shadel::kChunksPerEntry;
 
-uint64_t bufferWords(size_t ownedEntries, uint32_t capacity) { return uint64_t(ownedEntries) * kPerEntry + 1 + capacity; }
+constexpr uint32_t kMaskWords = 4;  // per owned entry: the stored and fresh masks (chunk_slots.glsl)
+// The slots, the masks, the free count and stack.
+uint64_t bufferWords(size_t ownedEntries, uint32_t capacity) {
+  return uint64_t(ownedEntries) * (kPerEntry + kMaskWords) + 1 + capacity;
+}
 }  // namespace
 
 void ChunkSlots::setOwnedEntries(std::vector<shadel::OwnedEntry> owned) {
@@ -24,21 +29,25 @@ std::vector<uint32_t> ChunkSlots::carriedOver(const std::vector<uint32_t>& old) 
   std::map<std::pair<uint32_t, uint32_t>, uint32_t> oldIndex;  // (entry, instance) -> old owned index
   for (uint32_t j = 0; j < before.size(); ++j) oldIndex[{before[j].entryIndex, before[j].instanceId}] = j;
   std::vector<bool> carried(before.size(), false);
+  for (size_t i = 0; i < owned_.size(); ++i)  // nothing stored, nothing fresh
+    std::fill_n(&slots[owned_.size() * kPerEntry + i * kMaskWords], kMaskWords, 0u);
   for (uint32_t i = 0; i < owned_.size(); ++i) {
     const auto it = oldIndex.find({owned_[i].entryIndex, owned_[i].instanceId});
     if (it == oldIndex.end()) continue;
     carried[it->second] = true;
     std::memcpy(&slots[size_t(i) * kPerEntry], &old[size_t(it->second) * kPerEntry], kPerEntry * sizeof(uint32_t));
+    std::memcpy(&slots[owned_.size() * kPerEntry + size_t(i) * kMaskWords],
+                &old[before.size() * kPerEntry + size_t(it->second) * kMaskWords], kMaskWords * sizeof(uint32_t));
   }
   // The free list as it was, plus the storage of entries no one owns any more.
-  const size_t oldCount = size_t(before.size()) * kPerEntry, newCount = size_t(owned_.size()) * kPerEntry;
+  const size_t oldCount = before.size() * (kPerEntry + kMaskWords), newCount = owned_.size() * (kPerEntry + kMaskWords);
   uint32_t free = old[oldCount];
   std::memcpy(&slots[newCount + 1], &old[oldCount + 1], size_t(free) * sizeof(uint32_t));
   for (uint32_t j = 0; j < before.size(); ++j)
     if (!carried[j])
       for (uint32_t c = 0; c < kPerEntry; ++c)
         if (const uint32_t slot = old[size_t(j) * kPerEntry + c]; slot != shader::kNoSlot)
-          slots[newCount + 1 + free++] = slot & ~shader::kSlotFresh;
+          slots[newCount + 1 + free++] = slot;
   slots[newCount] = free;
   return slots;
 }
@@ -95,7 +104,7 @@ std::map<uint64_t, uint32_t> ChunkSlots::addresses(gpu::Device& device) const {
   for (uint32_t i = 0; i < owned_.size(); ++i)
     for (uint32_t c = 0; c < kPerEntry; ++c)
       if (const uint32_t slot = slots[size_t(i) * kPerEntry + c]; slot != shader::kNoSlot)
-        out[uint64_t(owned_[i].entryIndex) * kPerEntry + c] = slot & ~shader::kSlotFresh;
+        out[uint64_t(owned_[i].entryIndex) * kPerEntry + c] = slot;
   return out;
 }
 

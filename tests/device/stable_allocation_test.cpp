@@ -108,6 +108,35 @@ TEST(StableAllocationPan, FreesAndAllocatesOnlyTheChunksThatChanged) {
   EXPECT_GT(keptTotal, 10 * allocatedTotal) << "a small pan keeps most chunks";
 }
 
+// The gold sphere turns decoupled at frame 3 (rate 8): it gets shadel space,
+// so the owned remap entries change; every other object's chunks keep their
+// addresses (carried over to the new layout) and their shading (reused).
+TEST(StableAllocationPan, ObjectTurningDecoupledKeepsTheOthersAddresses) {
+  const auto scene = scene::makeDefaultScene(64);
+  Session s(scene, scene::ShadingMode::Decoupled, settingsAt(8));
+  const uint32_t sphere = instanceNamed(s.scene(), "gold sphere");
+  s.renderer().setObjectMode(sphere, scene::ShadingMode::Forward);
+  Addresses before;
+  for (int frame = 0; frame < 5; ++frame) {
+    if (frame == 3) s.renderer().setObjectMode(sphere, scene::ShadingMode::Decoupled);
+    s.render(kSize, panCamera(0));
+    const auto st = s.stats();
+    const Addresses addresses = s.chunkAddresses();
+    const std::string what = "frame " + std::to_string(frame);
+    EXPECT_EQ(st.counters.compositeMisses, 0u) << what;
+    expectDistinctAndInside(addresses, st.capacityChunks, what);
+    if (frame == 3) {
+      size_t moved = 0;
+      for (const auto& [chunk, address] : before) moved += addresses.count(chunk) && addresses.at(chunk) == address ? 0 : 1;
+      EXPECT_EQ(moved, 0u) << "chunks of the other objects that lost or changed their address";
+      EXPECT_GT(addresses.size(), before.size()) << "the sphere's chunks were added";
+      EXPECT_EQ(st.counters.chunksReused, before.size()) << "the others' shading is kept";
+      EXPECT_EQ(st.counters.chunksShaded, addresses.size() - before.size()) << "the sphere is filled";
+    }
+    before = addresses;
+  }
+}
+
 // Storage for a fraction of what is marked, the adjuster deciding the bias
 // (rate 4 and rate 1 side by side): the first frames overflow, the bias
 // rises, and from then on nothing overflows or is missed, no two chunks

@@ -38,10 +38,8 @@ SG_CONST uint kBindSupportMasks = 30u;             // support-expand's per-owned
 SG_CONST uint kBindShadeStamps = 31u;
 // Stable allocation: each owned entry's 64 chunk slots, then the free list (chunk_slots.glsl).
 SG_CONST uint kBindChunkSlots = 33u;
-// A chunk slot: the physical chunk, with kSlotFresh when it was allocated this
-// frame (its storage holds nothing from before); kNoSlot: no storage.
+// A chunk slot: the physical chunk; kNoSlot: no storage.
 SG_CONST uint kNoSlot = 0xFFFFFFFFu;
-SG_CONST uint kSlotFresh = 0x80000000u;
 SG_CONST uint kStaleAgeBins = 16u;  // SgShadeCounters.staleAgeChunks: ages 0..14, then 15 or more
 
 SG_CONST uint kStorageCounters = 16u;      // storage partitions, each with its allocation counter

@@ -20,13 +20,13 @@ uint64_t sgReuseCandidates(uint ownedIndex, SgOwnedEntry owned, uint64_t occupan
   return uint64_t(0);  // the shade frame's own list (frames in flight): every chunk is shaded
 #else
   if (objects[owned.instanceId].reuse == 0u) return uint64_t(0);
-  return sgKeptChunks(ownedIndex * SG_CHUNKS_PER_ENTRY, occupancy);
+  return sgKeptChunks(ownedIndex, occupancy);
 #endif
 }
 
 // Raster frames since the shading of a kept chunk (`base`: its entry's first slot) was computed.
 uint sgChunkAge(uint base, uint chunk) {
-  return params.frameNumber - stamps[chunkSlots[base + chunk] & ~kSlotFresh];
+  return params.frameNumber - stamps[chunkSlots[base + chunk]];
 }
 
 bool sgRefreshForAge(uint age, uint entryIndex, uint chunk) {
