@@ -66,7 +66,15 @@ bool ChunkSlots::prepare(gpu::Device& device, gpu::GraphExecutor& executor, uint
                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                                VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                            gpu::MemoryLocation::Device, "chunk slots", "remap", /*concurrent*/ true});
-  if (carried.empty()) return true;
+  if (carried.empty()) {
+    // Start over on the host (a frame may be planned and never run, so the reset cannot wait for one):
+    // every slot empty, no masks, every chunk on the free list, chunk 0 on top.
+    const size_t count = owned_.size() * (kPerEntry + kMaskWords);
+    carried.assign(bufferWords(owned_.size(), capacity_), shader::kNoSlot);
+    std::fill_n(&carried[owned_.size() * kPerEntry], owned_.size() * kMaskWords, 0u);
+    carried[count] = capacity_;
+    for (uint32_t i = 0; i < capacity_; ++i) carried[count + 1 + i] = capacity_ - 1 - i;
+  }
   write(device, carried);
   valid_ = true;
   return false;

@@ -5,7 +5,7 @@
 // remap entries; when they change (an object gets or gives back shadel
 // space), the slots of entries that stay are carried over, on the host, to
 // their new places and the others freed, so the rest of the scene keeps its
-// storage. Only another storage capacity starts over (shadel-allocate's reset step).
+// storage. Only another storage capacity starts over (written on the host).
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -23,7 +23,7 @@ class ChunkSlots {
   // New owned entries (uploadTables): the slots move with them at the next prepare.
   void setOwnedEntries(std::vector<shadel::OwnedEntry> owned);
   // Before a frame that allocates: the buffer for `capacityChunks` of storage.
-  // Returns whether the frame must reset it (nothing stored survives).
+  // Returns whether the frame must reset it on the GPU (no longer: resets are written here; always false).
   bool prepare(gpu::Device& device, gpu::GraphExecutor& executor, uint32_t capacityChunks);
   // The frame's shadel-allocate was declared (so a pending reset is done).
   void allocated() { valid_ = true; }
