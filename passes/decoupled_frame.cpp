@@ -40,13 +40,10 @@ void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const Decoup
       case kBindShadelInstances: buffer(f.shadelInstances.handle()); break;
       case kBindLevelRects: buffer(f.levelRects.handle()); break;
       case kBindRemap: buffer(ctx.buffer(f.remap).handle()); break;
-      case kBindPreviousRemap: buffer(ctx.buffer(f.previousRemap.valid() ? f.previousRemap : f.remap).handle()); break;
       case kBindOwnedEntries: buffer(f.ownedEntries.handle()); break;
       // Without stamps something must be bound; the shaders do not touch it (params.stampsBound 0).
       case kBindShadeStamps: buffer(ctx.buffer(f.stamps.valid() ? f.stamps : f.work).handle()); break;
-      case kBindPreviousStamps:
-        buffer(ctx.buffer(f.previousStamps.valid() ? f.previousStamps : f.work).handle());
-        break;
+      case kBindChunkSlots: buffer(ctx.buffer(f.slots).handle()); break;
       case kBindCounters: buffer(ctx.buffer(f.counters).handle()); break;
       case kBindWork: buffer(ctx.buffer(f.work).handle()); break;
       case kBindArgs: buffer(ctx.buffer(f.args).handle()); break;

@@ -35,6 +35,10 @@ struct DecoupledFrame {
   const gpu::Buffer& idMaps;
   uint32_t ownedEntryCount = 0;
   uint32_t objectCount = 0;
+  uint32_t capacityChunks = 0;  // physical chunks of shade storage
+  // Stable allocation: this frame empties every chunk slot and refills the free
+  // list first (new tables or another storage size: nothing stored survives).
+  bool resetSlots = false;
   // The composite filter (0 point, 1 bilinear, 2 trilinear), which is also
   // what shadel-mark marks: both pipelines get it only as filterDefine(filter).
   // Settled in the prepare step (the renderer's setting or composite's
@@ -45,15 +49,13 @@ struct DecoupledFrame {
   bool levelView = false;  // composite shows the detail level instead of the shading
   graph::ResourceHandle remap, counters, work, args;
   graph::ResourceHandle shadedColor;  // what composite filters: the last layer of every material writes it
-  // Last frame's remap table and shade storage, when this frame keeps them
-  // (persistent layers; a shade rate above 1): what reuse copies from.
-  // Invalid handles otherwise (kBindPreviousRemap then binds `remap`: no
-  // object may reuse, so it is not read).
-  graph::ResourceHandle previousRemap, previousShaded;
+  // Stable allocation: each owned entry's chunk slots and the free list
+  // (chunk_slots.glsl), persistent across frames.
+  graph::ResourceHandle slots;
   // With shading kept between frames: when each stored chunk's shading was
-  // computed (u32 raster frame per physical chunk), this frame's and last
-  // frame's; invalid otherwise (params.stampsBound 0: not read).
-  graph::ResourceHandle stamps, previousStamps;
+  // computed (u32 raster frame per physical chunk); invalid otherwise
+  // (params.stampsBound 0: not read).
+  graph::ResourceHandle stamps;
 };
 
 // The define shadel-mark and composite are both compiled with: the filter

@@ -11,7 +11,7 @@
 namespace sg::passes {
 namespace {
 constexpr std::array kBindings{kBindFrame, kBindParams, kBindObjects,  kBindShadelInstances,
-                               kBindLevelRects, kBindRemap, kBindCounters, kBindLayerImage};
+                               kBindLevelRects, kBindRemap, kBindChunkSlots, kBindCounters, kBindLayerImage};
 }  // namespace
 
 gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView) {
@@ -40,6 +40,7 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
   pass.read(color, graph::Access::ColorAttachmentRead);
   pass.read(depth, graph::Access::DepthRead);
   pass.read(frame.remap, graph::Access::StorageRead);
+  pass.read(frame.slots, graph::Access::StorageRead);
   pass.read(frame.shadedColor, graph::Access::Sampled);
   render::readSceneGeometry(pass, frame.view);
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);  // misses

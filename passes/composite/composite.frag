@@ -28,7 +28,7 @@ vec4 filterLevel(uint level) {
   SgBilinearTaps taps = sgBilinearTaps(inShadingUv, rect.size);
   uvec2 shadel = sgFootprintTileShadel(rect, taps);
   SgShadelAddress a = sgShadelAddress(shadel, params.entriesPerSideLog2);
-  uint physical = sgPhysicalChunk(remap[a.entryIndex], a.chunkIndex);
+  uint physical = sgStoredChunk(remap[a.entryIndex], a.chunkIndex);
   if (physical == SG_INVALID_CHUNK) {
     atomicAdd(counters.compositeMisses, 1u);
     return vec4(1.0, 0.0, 1.0, 1.0);  // magenta: visible if it ever happens

@@ -7,7 +7,7 @@
 namespace sg::passes {
 namespace {
 
-constexpr std::array kOccupancyBindings{kBindParams, kBindShadelInstances, kBindLevelRects, kBindRemap};
+constexpr std::array kOccupancyBindings{kBindParams, kBindShadelInstances, kBindLevelRects, kBindRemap, kBindChunkSlots};
 constexpr std::array kSheetBindings{kBindLayerImage};
 
 gpu::GraphicsPipelineDesc fullscreenView(const char* fragment, std::span<const uint32_t> bindings,
@@ -58,6 +58,7 @@ graph::ResourceHandle addOccupancyView(graph::RenderGraph& graph, const Decouple
   auto view = addFullscreenView(graph, frame, "debug-occupancy", occupancyViewPipeline, kOccupancyBindings,
                                 std::as_bytes(std::span(&push, 1)), pass);
   pass->read(frame.remap, graph::Access::StorageRead);
+  pass->read(frame.slots, graph::Access::StorageRead);
   return view;
 }
 

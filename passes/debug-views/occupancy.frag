@@ -21,7 +21,7 @@ void main() {
     SgLevelRect rect = levelRects[instance.firstLevelRect + level];
     if (any(lessThan(shadel, rect.origin)) || any(greaterThanEqual(shadel, rect.origin + rect.allocatedSize))) continue;
     if (!sgIsChunkMarked(entry.occupancy, a.chunkIndex)) outColor = vec4(0.12, 0.12, 0.12, 1.0);
-    else if (entry.storageBase == SG_NO_STORAGE) outColor = vec4(1.0);
+    else if (sgStoredChunk(entry, a.chunkIndex) == SG_INVALID_CHUNK) outColor = vec4(1.0);
     else outColor = vec4(sgLevelColor(float(level)), 1.0);
     return;
   }

@@ -13,7 +13,7 @@ namespace {
 
 constexpr uint32_t kBaseBindings[] = {kBindFrame,    kBindParams,   kBindObjects,  kBindShadelInstances,
                                       kBindLevelRects, kBindRemap,  kBindCounters, kBindWork,
-                                      kBindIdMaps,   kBindVertices, kBindIndices};
+                                      kBindIdMaps,   kBindVertices, kBindIndices, kBindChunkSlots};
 
 // Compiled the first time a frame dispatches the layer; a GLSL error names the
 // layer, its plugin and the author's file:line.
@@ -44,7 +44,6 @@ gpu::ComputePipelineDesc layerShadePipeline(const plugin::MaterialLayer& layer) 
     layout.bindings.push_back({render::kBindLayerFrameInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
   if (layer.keepsValues()) {
     layout.bindings.push_back({kBindLayerHistory, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
-    layout.bindings.push_back({kBindPreviousRemap, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   }
   return {.shader = decoupledLayerVariant(layer), .layout = layout};
 }
@@ -55,6 +54,7 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
   pass.read(frame.work, graph::Access::StorageRead);
   pass.read(frame.args, graph::Access::IndirectArgs);
   pass.read(frame.remap, graph::Access::StorageRead);
+  pass.read(frame.slots, graph::Access::StorageRead);
   render::readShadowMaps(pass, frame.view, graph::ShaderStage::Compute);
   render::readSceneGeometry(pass, frame.view, graph::Access::StorageRead, graph::ShaderStage::Compute);
   bool persistent = false;
@@ -70,7 +70,6 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
     if (added) it->second = pass.write(step.output, graph::Access::StorageWrite);
   }
   if (persistent) {
-    pass.read(history.previousRemap, graph::Access::StorageRead);
     frame.counters = pass.write(frame.counters, graph::Access::StorageWrite);  // layer_reuse
   }
   for (auto& step : steps) step.output = written.at(step.output);
@@ -93,7 +92,6 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
         writes.push_back(sampled(render::kBindLayerFrameInputs + i, step.frameInputs[i]));
       if (step.layer->keepsValues()) {
         writes.push_back(sampled(kBindLayerHistory, step.history));
-        writes.push_back({kBindPreviousRemap, gpu::BufferBinding{ctx.buffer(history.previousRemap).handle()}});
       }
       bindDecoupled(ctx, pipeline, frame, kBaseBindings, writes);
       if (const render::TextureSet* textures = frame.view.layerTextures.forLayer(*step.layer)) {

@@ -19,10 +19,10 @@ struct LayerShadeStep {
   uint32_t persistentSlot = 0;                 // persistent: its layer_reuse counters
 };
 
-// Last frame, for persistent layers: its remap table, and whether it (and the
-// layers' history images) describe the current storage layout.
+// Last frame, for persistent layers: whether the layers' history images
+// describe the current storage layout (a chunk stored then and now is at the
+// same place: stable allocation).
 struct LayerHistory {
-  graph::ResourceHandle previousRemap;  // invalid: no persistent layer this frame
   bool valid = false;
 };
 

@@ -36,16 +36,16 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
   }
   if (layer.keepsValues()) {
     out << "layout(set = 0, binding = " << kBindLayerHistory << ") uniform sampler2D sgLayerHistory;\n"
-        << "layout(set = 0, binding = " << kBindPreviousRemap
-        << ", std430) readonly buffer PreviousRemap { SgRemapEntry previousRemap[]; };\n"
         << "bool sgReusedPrevious = false;\n"
         << "// The paper's GetIndexPrevSampleVirtualCoords: this shadel's value last frame, if it was shaded.\n"
+        << "// Stable allocation: a chunk stored last frame too is at the same place in last frame's image.\n"
         << "bool sgPrevious(out vec4 value) {\n"
         << "  value = vec4(0.0);\n"
         << "  if (sgPush.historyValid == 0u) return false;\n"
         << "  SgShadelAddress a = sgShadelAddress(sgShadel.shadel, params.entriesPerSideLog2);\n"
-        << "  uint physical = sgPhysicalChunk(previousRemap[a.entryIndex], a.chunkIndex);\n"
-        << "  if (physical == SG_INVALID_CHUNK) return false;\n"
+        << "  SgRemapEntry entry = remap[a.entryIndex];\n"
+        << "  if (!sgChunkKept(entry, a.chunkIndex)) return false;\n"
+        << "  uint physical = sgStoredChunk(entry, a.chunkIndex);\n"
         << "  value = texelFetch(sgLayerHistory, ivec2(sgStorageTexel(physical, a.texelIndex, "
            "params.storageWidthChunks)), 0);\n"
         << "  sgReusedPrevious = true;\n"

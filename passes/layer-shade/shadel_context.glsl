@@ -138,7 +138,7 @@ vec4 sgFetchLayer(sampler2D image, ivec2 offset) {
   ivec2 local = clamp(ivec2(sgShadel.local) + offset, ivec2(0), ivec2(sgShadel.rect.size) - 1);
   if (offset != ivec2(0) && sgTriangleAt(uvec2(local)) == SG_NO_TRIANGLE) local = ivec2(sgShadel.local);
   SgShadelAddress a = sgShadelAddress(sgShadel.rect.origin + uvec2(local), params.entriesPerSideLog2);
-  uint physical = sgPhysicalChunk(remap[a.entryIndex], a.chunkIndex);
+  uint physical = sgStoredChunk(remap[a.entryIndex], a.chunkIndex);
   if (physical == SG_INVALID_CHUNK) return texelFetch(image, sgShadel.target, 0);
   return texelFetch(image, ivec2(sgStorageTexel(physical, a.texelIndex, params.storageWidthChunks)), 0);
 }

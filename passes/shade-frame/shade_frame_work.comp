@@ -17,8 +17,8 @@ void main() {
   if (i >= params.ownedEntryCount) return;
   SgOwnedEntry owned = ownedEntries[i];
   SgRemapEntry entry = remap[owned.entryIndex];
-  if (entry.storageBase == SG_NO_STORAGE) return;
-  uvec2 halves = unpackUint2x32(entry.occupancy);
-  atomicAdd(work[sgObjectChunksSlot(owned.instanceId)], uint(bitCount(halves.x) + bitCount(halves.y)));
+  uvec2 halves = unpackUint2x32(entry.occupancy & sgStoredMask(i));
+  uint stored = uint(bitCount(halves.x) + bitCount(halves.y));
+  if (stored > 0u) atomicAdd(work[sgObjectChunksSlot(owned.instanceId)], stored);
 #endif
 }

@@ -10,7 +10,7 @@
 
 namespace sg::passes {
 namespace {
-constexpr std::array kBindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindWork};
+constexpr std::array kBindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindWork, kBindChunkSlots};
 constexpr std::array kOffsetBindings{kBindParams, kBindWork, kBindArgs};
 
 // Each step reads (and adds to) what the one before wrote.
@@ -35,11 +35,11 @@ gpu::ComputePipelineDesc shadeFrameFillPipeline() {
 void addShadeFrameWork(graph::RenderGraph& graph, DecoupledFrame& shadeFrame) {
   auto& pass = graph.addPass("shade-frame-work", graph::QueueClass::AsyncCompute);
   pass.read(shadeFrame.remap, graph::Access::StorageRead);
+  pass.read(shadeFrame.slots, graph::Access::StorageRead);
   shadeFrame.work = pass.write(shadeFrame.work, graph::Access::StorageReadWrite);
   shadeFrame.args = pass.write(shadeFrame.args, graph::Access::StorageWrite);
   // The fill step stamps every chunk with this frame (it is all shaded now) and may count ages.
   if (shadeFrame.stamps.valid()) shadeFrame.stamps = pass.write(shadeFrame.stamps, graph::Access::StorageReadWrite);
-  if (shadeFrame.previousStamps.valid()) pass.read(shadeFrame.previousStamps, graph::Access::StorageRead);
   shadeFrame.counters = pass.write(shadeFrame.counters, graph::Access::StorageReadWrite);
   pass.execute([frame = shadeFrame](PassContext& ctx) {
     const auto& clear = ctx.device().pipeline("shade-frame-clear", [] { return shadeFramePhasePipeline(0); });

@@ -1,8 +1,9 @@
 #version 460
 // Copies each chunk on the reuse list (work-aggregate) from last frame's image
-// to its place in this frame's: the shade storage, and the image of every
-// view-independent layer kept across frames. One 8x8 workgroup per chunk,
-// dispatched in rows like the shade lists. SG_REUSE_FORMAT: the image's format.
+// of a view-independent layer kept across frames (an image pair) to this
+// frame's, at the same place (stable allocation). The shade storage itself is
+// one image and needs no copy. One 8x8 workgroup per chunk, dispatched in rows
+// like the shade lists. SG_REUSE_FORMAT: the image's format.
 #include <framework/shadel/shaders/decoupled.glsl>
 #include <framework/shadel/shaders/work.glsl>
 

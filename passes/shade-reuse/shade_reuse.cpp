@@ -23,9 +23,7 @@ void addShadeReuse(graph::RenderGraph& graph, DecoupledFrame& frame, std::vector
   auto& pass = graph.addPass("shade-reuse", graph::QueueClass::AsyncCompute);
   pass.read(frame.work, graph::Access::StorageRead);
   pass.read(frame.args, graph::Access::IndirectArgs);
-  pass.read(frame.previousShaded, graph::Access::Sampled);
-  frame.shadedColor = pass.write(frame.shadedColor, graph::Access::StorageWrite);
-  std::vector<KeptLayerImage> copies{{frame.previousShaded, frame.shadedColor, graph::Format::RGBA16F}};
+  std::vector<KeptLayerImage> copies;
   for (auto& layer : layers) {
     pass.read(layer.history, graph::Access::Sampled);
     layer.current = pass.write(layer.current, graph::Access::StorageWrite);

@@ -14,10 +14,10 @@ struct KeptLayerImage {
   graph::Format format = graph::Format::RGBA16F;
 };
 
-// Copies the chunks that keep last frame's shading (work-aggregate's reuse
-// list) from frame.previousShaded into frame.shadedColor at their new
-// addresses, and likewise in each of `layers` (async compute; before the
-// layers shade the rest).
+// Copies the chunks that keep their stored shading (work-aggregate's reuse
+// list) from each of `layers`' last-frame image into its current one, at the
+// same place (async compute; before the layers shade the rest). Only for kept
+// layers: with stable allocation the shade storage keeps its chunks in place.
 void addShadeReuse(graph::RenderGraph& graph, DecoupledFrame& frame, std::vector<KeptLayerImage>& layers);
 // The copy for images of `format`.
 gpu::ComputePipelineDesc shadeReusePipeline(graph::Format format = graph::Format::RGBA16F);

@@ -1,57 +1,98 @@
 #version 460
-// Storage for the marked chunks of each owned remap entry: popcount of its
-// occupancy, taken from one of kStorageCounters partitions picked by a hash
-// of the entry (so allocation does not serialize on one counter). A full
-// partition passes the request on to the next ones, so storage runs out only
-// when no partition has room; then the overflow is counted and the entry left
-// without storage: never a write out of bounds. Chunks that keep last frame's
-// shading (reuse.glsl) get storage like the others but go on the reuse list,
-// not on their object's list of chunks to shade.
+// Stable allocation (chunk_slots.glsl): a chunk keeps its storage for as long
+// as it stays marked. Three steps, a barrier apart (SG_PHASE):
+// 0 (only when the slots are reset: new tables, another storage size) every
+//   slot empty and every physical chunk on the free list;
+// 1 per owned entry, the slots of chunks no longer marked go back on the
+//   free list; those still marked are kept (no longer fresh);
+// 2 per owned entry, its newly marked chunks take slots from the free list
+//   (one compare-and-swap on its count for the whole entry), marked fresh.
+//   The entry's masks (chunk_slots.glsl) let both skip untouched entries.
+//   With too few free, the entry's new chunks stay without storage and the
+//   overflow is counted: never a write out of bounds (the adjuster raises
+//   the bias). Pushes and pops never meet in one step, so the stack needs no
+//   more than its count. Step 2 also counts the chunks that keep their
+//   shading (reuse.glsl) apart from those to shade.
 #include <framework/shadel/shaders/decoupled.glsl>
 #include <framework/shadel/shaders/reuse.glsl>
 #include <framework/shadel/shaders/work.glsl>
 
 layout(local_size_x = 64) in;
 
-// `count` chunks from the first partition, starting at `first`, that has room
-// (compare-and-swap: a failed attempt takes nothing); SG_NO_STORAGE if none.
-uint takeChunks(uint first, uint count) {
-  for (uint i = 0u; i < params.storageCounters; ++i) {
-    uint p = (first + i) % params.storageCounters;
-    uint current = counters.allocated[p];
-    while (current + count <= params.chunksPerCounter) {
-      uint seen = atomicCompSwap(counters.allocated[p], current, current + count);
-      if (seen == current) return p * params.chunksPerCounter + current;
-      current = seen;
-    }
-  }
-  return SG_NO_STORAGE;
+#ifndef SG_PHASE
+#define SG_PHASE 2
+#endif
+
+uint bitsSet(uint64_t bits) {
+  uvec2 halves = unpackUint2x32(bits);
+  return uint(bitCount(halves.x) + bitCount(halves.y));
 }
 
 void main() {
   uint i = gl_GlobalInvocationID.x;
+#if SG_PHASE == 0
+  if (i < params.ownedEntryCount * SG_CHUNKS_PER_ENTRY) chunkSlots[i] = kNoSlot;
+  if (i < params.ownedEntryCount) sgSetSlotMasks(i, uint64_t(0), uint64_t(0));
+  if (i < params.workCapacity) chunkSlots[sgFreeStackSlot(i)] = params.workCapacity - 1u - i;  // chunk 0 on top
+  if (i == 0u) chunkSlots[sgFreeCountSlot()] = params.workCapacity;
+#else
   if (i >= params.ownedEntryCount) return;
   SgOwnedEntry owned = ownedEntries[i];
-  uvec2 halves = unpackUint2x32(remap[owned.entryIndex].occupancy);
-  uint count = uint(bitCount(halves.x) + bitCount(halves.y));
+  uint64_t occupancy = remap[owned.entryIndex].occupancy;
+  uint base = i * SG_CHUNKS_PER_ENTRY;
+  uint64_t stored = sgStoredMask(i);
+#if SG_PHASE == 1
+  if (stored == uint64_t(0) && sgFreshMask(i) == uint64_t(0)) return;
+  uint64_t freed = stored & ~occupancy;
+  sgSetSlotMasks(i, stored & occupancy, uint64_t(0));  // what stays is kept, no longer fresh
+  uint count = bitsSet(freed);
   if (count == 0u) return;
-  atomicAdd(counters.chunksMarked, count);
-  atomicAdd(counters.levelChunks[min(owned.level, kMaxLevels - 1u)], count);
-  uint base = takeChunks(sgStorageCounter(owned.entryIndex, params.storageCounters), count);
-  if (base == SG_NO_STORAGE) {
-    atomicAdd(counters.overflowChunks, count);
-    return;  // storageBase stays SG_NO_STORAGE (shadel-clear)
+  uint top = atomicAdd(chunkSlots[sgFreeCountSlot()], count);
+  for (uint k = 0u; k < count; ++k) {
+    uint c = sgLowestChunk(freed);
+    freed &= freed - uint64_t(1);
+    chunkSlots[sgFreeStackSlot(top + k)] = chunkSlots[base + c];
+    chunkSlots[base + c] = kNoSlot;
   }
-  remap[owned.entryIndex].storageBase = base;
-  atomicAdd(counters.chunksAllocated, count);
-  uvec2 reusedHalves = unpackUint2x32(sgReusedChunks(owned, remap[owned.entryIndex].occupancy));
-  uint reused = uint(bitCount(reusedHalves.x) + bitCount(reusedHalves.y));
+#else
+  uint marked = bitsSet(occupancy);
+  if (marked == 0u) return;
+  atomicAdd(counters.chunksMarked, marked);
+  atomicAdd(counters.levelChunks[min(owned.level, kMaxLevels - 1u)], marked);
+  uint64_t missing = occupancy & ~stored;
+  uint need = bitsSet(missing);
+  if (need > 0u) {
+    uint free = chunkSlots[sgFreeCountSlot()];
+    bool taken = false;
+    while (free >= need) {
+      uint seen = atomicCompSwap(chunkSlots[sgFreeCountSlot()], free, free - need);
+      if (seen == free) {
+        taken = true;
+        break;
+      }
+      free = seen;
+    }
+    if (taken) {
+      for (uint k = free; missing != uint64_t(0); missing &= missing - uint64_t(1))  // pops stack[free - need, free)
+        chunkSlots[base + sgLowestChunk(missing)] = chunkSlots[sgFreeStackSlot(--k)];
+      sgSetSlotMasks(i, occupancy, occupancy & ~stored);
+      stored = occupancy;
+    } else {
+      atomicAdd(counters.overflowChunks, need);  // its new chunks stay without storage
+    }
+  }
+  uint storedCount = bitsSet(stored);
+  if (storedCount == 0u) return;
+  atomicAdd(counters.chunksAllocated, storedCount);
+  uint reused = bitsSet(sgReusedChunks(i, owned, occupancy));
   if (reused > 0u) {
     atomicAdd(work[sgReuseCountSlot()], reused);
     atomicAdd(counters.chunksReused, reused);
   }
-  if (count > reused) {
-    atomicAdd(work[sgObjectChunksSlot(owned.instanceId)], count - reused);
-    atomicAdd(counters.chunksShaded, count - reused);
+  if (storedCount > reused) {
+    atomicAdd(work[sgObjectChunksSlot(owned.instanceId)], storedCount - reused);
+    atomicAdd(counters.chunksShaded, storedCount - reused);
   }
+#endif
+#endif
 }

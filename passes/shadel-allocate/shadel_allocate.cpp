@@ -1,30 +1,63 @@
 #include "shadel_allocate.hpp"
 
+#include <algorithm>
 #include <array>
+#include <string>
 
+#include <shadelgraph/gpu/barriers.hpp>
 #include <shadelgraph/gpu/pass_context.hpp>
 
 namespace sg::passes {
 namespace {
-constexpr std::array kBindings{kBindParams, kBindObjects, kBindRemap, kBindOwnedEntries, kBindCounters, kBindWork,
-                               kBindPreviousRemap, kBindPreviousStamps};
+constexpr std::array kResetBindings{kBindParams, kBindChunkSlots};
+constexpr std::array kFreeBindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindChunkSlots};
+constexpr std::array kTakeBindings{kBindParams, kBindObjects, kBindRemap,       kBindOwnedEntries,
+                                   kBindCounters, kBindWork,   kBindChunkSlots, kBindShadeStamps};
+
+std::span<const uint32_t> phaseBindings(int phase) {
+  if (phase == 0) return kResetBindings;
+  if (phase == 1) return kFreeBindings;
+  return kTakeBindings;
+}
+
+// Each step reads what the one before wrote.
+void computeToCompute(VkCommandBuffer cmd) {
+  gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
+                     {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
+}
 }  // namespace
 
-gpu::ComputePipelineDesc shadelAllocatePipeline() {
-  return {.shader = {.path = "passes/shadel-allocate/shadel_allocate.comp"}, .layout = decoupledLayout(kBindings)};
+gpu::ComputePipelineDesc shadelAllocatePipeline(int phase) {
+  return {.shader = {.path = "passes/shadel-allocate/shadel_allocate.comp",
+                     .defines = {{"SG_PHASE", std::to_string(phase)}}},
+          .layout = decoupledLayout(phaseBindings(phase))};
 }
 
 void addShadelAllocate(graph::RenderGraph& graph, DecoupledFrame& frame) {
   auto& pass = graph.addPass("shadel-allocate", graph::QueueClass::AsyncCompute);
   frame.remap = pass.write(frame.remap, graph::Access::StorageReadWrite);
-  if (frame.previousRemap.valid()) pass.read(frame.previousRemap, graph::Access::StorageRead);
-  if (frame.previousStamps.valid()) pass.read(frame.previousStamps, graph::Access::StorageRead);
+  frame.slots = pass.write(frame.slots, graph::Access::StorageReadWrite);
+  if (frame.stamps.valid()) pass.read(frame.stamps, graph::Access::StorageRead);
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);
   frame.work = pass.write(frame.work, graph::Access::StorageReadWrite);
   pass.execute([frame](PassContext& ctx) {
-    const auto& pipeline = ctx.device().pipeline("shadel-allocate", shadelAllocatePipeline);
-    bindDecoupled(ctx, pipeline, frame, kBindings);
-    if (frame.ownedEntryCount) vkCmdDispatch(ctx.cmd(), (frame.ownedEntryCount + 63) / 64, 1, 1);
+    if (frame.resetSlots) {
+      const auto& reset = ctx.device().pipeline("shadel-allocate-reset", [] { return shadelAllocatePipeline(0); });
+      bindDecoupled(ctx, reset, frame, kResetBindings);
+      const uint32_t n = std::max(frame.ownedEntryCount * 64, frame.capacityChunks);
+      vkCmdDispatch(ctx.cmd(), (n + 63) / 64, 1, 1);
+      computeToCompute(ctx.cmd());
+    }
+    if (!frame.ownedEntryCount) return;
+    const uint32_t groups = (frame.ownedEntryCount + 63) / 64;
+    const auto& release = ctx.device().pipeline("shadel-allocate-free", [] { return shadelAllocatePipeline(1); });
+    bindDecoupled(ctx, release, frame, kFreeBindings);
+    vkCmdDispatch(ctx.cmd(), groups, 1, 1);
+    computeToCompute(ctx.cmd());
+    const auto& take = ctx.device().pipeline("shadel-allocate", [] { return shadelAllocatePipeline(2); });
+    bindDecoupled(ctx, take, frame, kTakeBindings);
+    vkCmdDispatch(ctx.cmd(), groups, 1, 1);
   });
 }
 

@@ -4,9 +4,11 @@
 
 namespace sg::passes {
 
-// Storage for every marked chunk, from hashed partitions; overflow counted;
-// the chunks that keep last frame's shading counted apart (async compute).
+// Stable allocation (async compute): chunks still marked keep their storage,
+// those no longer marked free theirs, newly marked ones take free chunks;
+// overflow counted; the chunks that keep their shading counted apart.
 void addShadelAllocate(graph::RenderGraph& graph, DecoupledFrame& frame);
-gpu::ComputePipelineDesc shadelAllocatePipeline();
+// Its steps: 0 resets the slots and the free list, 1 frees, 2 allocates.
+gpu::ComputePipelineDesc shadelAllocatePipeline(int phase = 2);
 
 }  // namespace sg::passes

@@ -1,7 +1,9 @@
 #version 460
 // Resets the remap entries of allocated instances only (cost follows the
 // allocated entries, not the virtual sheet), the shade counters, the
-// per-object work counts and the reuse list's.
+// per-object work counts and the reuse list's. An owned entry's storageBase
+// is its first chunk slot (chunk_slots.glsl): where its chunks' storage is
+// kept from frame to frame.
 #include <framework/shadel/shaders/decoupled.glsl>
 #include <framework/shadel/shaders/work.glsl>
 
@@ -11,7 +13,7 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i < params.ownedEntryCount) {
     SgOwnedEntry owned = ownedEntries[i];
-    remap[owned.entryIndex].storageBase = SG_NO_STORAGE;
+    remap[owned.entryIndex].storageBase = i * SG_CHUNKS_PER_ENTRY;
     remap[owned.entryIndex].objectInstanceId = owned.instanceId;
     remap[owned.entryIndex].occupancy = uint64_t(0);
   }

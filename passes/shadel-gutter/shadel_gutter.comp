@@ -17,13 +17,13 @@ layout(set = 0, binding = kBindLayerImage, rgba16f) uniform image2D shaded;
 const uint kGutterTexels = 2u * SG_CHUNK_SIZE + 1u;  // column 8, row 8, the corner
 const uint kEntriesPerGroup = 32u;                     // 8 KiB of listed chunks: within every device's 16 KiB
 shared uint chunkCount;
-shared uint chunks[kEntriesPerGroup * SG_CHUNKS_PER_ENTRY];  // entry of this group << 16 | chunk << 8 | its place in the entry's storage
+shared uint chunks[kEntriesPerGroup * SG_CHUNKS_PER_ENTRY];  // entry of this group << 16 | chunk
 
 // The physical chunk of the chunk holding `shadel`, SG_INVALID_CHUNK past the level's edge or without storage.
 uint storedChunk(uvec2 shadel, SgLevelRect rect) {
   if (any(greaterThanEqual(shadel - rect.origin, uvec2(rect.size)))) return SG_INVALID_CHUNK;
   SgShadelAddress a = sgShadelAddress(shadel, params.entriesPerSideLog2);
-  return sgPhysicalChunk(remap[a.entryIndex], a.chunkIndex);
+  return sgStoredChunk(remap[a.entryIndex], a.chunkIndex);
 }
 
 void main() {
@@ -34,21 +34,23 @@ void main() {
   // Each lane lists its entry's stored chunks.
   if (lane < kEntriesPerGroup && first + lane < params.ownedEntryCount) {
     SgRemapEntry entry = remap[ownedEntries[first + lane].entryIndex];
-    uvec2 halves = unpackUint2x32(entry.occupancy);
-    uint count = entry.storageBase == SG_NO_STORAGE ? 0u : uint(bitCount(halves.x) + bitCount(halves.y));
+    uint64_t stored = entry.occupancy & sgStoredMask(first + lane);
+    uvec2 halves = unpackUint2x32(stored);
+    uint count = uint(bitCount(halves.x) + bitCount(halves.y));
     if (count != 0u) {
       uint at = atomicAdd(chunkCount, count), place = 0u;
       for (uint c = 0u; c < SG_CHUNKS_PER_ENTRY; ++c)
-        if (sgIsChunkMarked(entry.occupancy, c)) chunks[at + place] = (lane << 16u) | (c << 8u) | place++;
+        if (sgIsChunkMarked(stored, c)) chunks[at + place++] = (lane << 16u) | c;
     }
   }
   barrier();
   for (uint t = lane; t < chunkCount * kGutterTexels; t += gl_WorkGroupSize.x) {
     uint item = chunks[t / kGutterTexels], k = t % kGutterTexels;
-    SgOwnedEntry owned = ownedEntries[first + (item >> 16u)];
-    uint physical = remap[owned.entryIndex].storageBase + (item & 0xFFu);
+    uint ownedIndex = first + (item >> 16u);
+    SgOwnedEntry owned = ownedEntries[ownedIndex];
+    uint physical = chunkSlots[ownedIndex * SG_CHUNKS_PER_ENTRY + (item & 0xFFu)];
     SgLevelRect rect = sgLevelRect(owned.instanceId, owned.level);
-    uvec2 origin = sgVirtualShadel(SgShadelAddress(owned.entryIndex, (item >> 8u) & 0xFFu, 0u), params.entriesPerSideLog2);
+    uvec2 origin = sgVirtualShadel(SgShadelAddress(owned.entryIndex, item & 0xFFu, 0u), params.entriesPerSideLog2);
     uvec2 inTile = k < SG_CHUNK_SIZE ? uvec2(SG_CHUNK_SIZE, k)
                    : k < 2u * SG_CHUNK_SIZE ? uvec2(k - SG_CHUNK_SIZE, SG_CHUNK_SIZE) : uvec2(SG_CHUNK_SIZE);
     uvec2 shadel = origin + inTile;

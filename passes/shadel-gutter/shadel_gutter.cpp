@@ -8,7 +8,7 @@
 namespace sg::passes {
 namespace {
 constexpr std::array kBindings{kBindParams, kBindShadelInstances, kBindLevelRects, kBindRemap, kBindOwnedEntries,
-                               kBindLayerImage};
+                               kBindChunkSlots, kBindLayerImage};
 constexpr uint32_t kMaxGroupsPerRow = 65535;  // maxComputeWorkGroupCount[0]'s guaranteed minimum
 }  // namespace
 
@@ -20,6 +20,7 @@ gpu::ComputePipelineDesc shadelGutterPipeline() {
 void addShadelGutter(graph::RenderGraph& graph, DecoupledFrame& frame) {
   auto& pass = graph.addPass("shadel-gutter", graph::QueueClass::AsyncCompute);
   pass.read(frame.remap, graph::Access::StorageRead);
+  pass.read(frame.slots, graph::Access::StorageRead);
   frame.shadedColor = pass.write(frame.shadedColor, graph::Access::StorageReadWrite);
   pass.execute([frame](PassContext& ctx) {
     const auto& pipeline = ctx.device().pipeline("shadel-gutter", shadelGutterPipeline);

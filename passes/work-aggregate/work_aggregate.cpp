@@ -8,9 +8,8 @@
 namespace sg::passes {
 namespace {
 constexpr std::array kOffsetBindings{kBindParams, kBindWork, kBindArgs};
-constexpr std::array kFillBindings{kBindParams,        kBindObjects,        kBindRemap,
-                                   kBindOwnedEntries,  kBindWork,           kBindPreviousRemap,
-                                   kBindCounters,      kBindShadeStamps,    kBindPreviousStamps};
+constexpr std::array kFillBindings{kBindParams, kBindObjects,  kBindRemap,       kBindOwnedEntries,
+                                   kBindWork,   kBindCounters, kBindShadeStamps, kBindChunkSlots};
 }  // namespace
 
 gpu::ComputePipelineDesc workOffsetsPipeline() {
@@ -26,9 +25,8 @@ gpu::ComputePipelineDesc workFillPipeline() {
 void addWorkAggregate(graph::RenderGraph& graph, DecoupledFrame& frame) {
   auto& pass = graph.addPass("work-aggregate", graph::QueueClass::AsyncCompute);
   pass.read(frame.remap, graph::Access::StorageRead);
-  if (frame.previousRemap.valid()) pass.read(frame.previousRemap, graph::Access::StorageRead);
-  if (frame.previousStamps.valid()) pass.read(frame.previousStamps, graph::Access::StorageRead);
-  if (frame.stamps.valid()) frame.stamps = pass.write(frame.stamps, graph::Access::StorageWrite);
+  pass.read(frame.slots, graph::Access::StorageRead);
+  if (frame.stamps.valid()) frame.stamps = pass.write(frame.stamps, graph::Access::StorageReadWrite);
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);  // stale ages
   frame.work = pass.write(frame.work, graph::Access::StorageReadWrite);
   frame.args = pass.write(frame.args, graph::Access::StorageWrite);

@@ -7,8 +7,9 @@
 namespace sg::passes {
 
 // Per-object work lists in one shared buffer and one VkDispatchIndirectCommand
-// per object per material layer, and the list of chunks shade-reuse copies
-// from last frame's storage with its dispatch after the objects' (async compute).
+// per object per material layer, and the list of chunks that keep their
+// stored shading (shade-reuse copies them in kept layers' image pairs) with
+// its dispatch after the objects' (async compute).
 void addWorkAggregate(graph::RenderGraph& graph, DecoupledFrame& frame);
 // Its two steps: the per-object offsets and arguments, then the work items.
 gpu::ComputePipelineDesc workOffsetsPipeline();

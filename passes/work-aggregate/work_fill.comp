@@ -1,26 +1,27 @@
 #version 460
 // Appends one work item per stored chunk of each owned entry to its object's
-// list, or, for a chunk that keeps last frame's shading, to the reuse list.
-// With shading kept between frames it also stamps every stored chunk with the
-// frame its shading was computed in (this frame, or the reused chunk's own),
-// and counts the oldest reused shading, the chunks shaded for their age and
-// (budget mode) the reusable chunks by age.
+// list, or, for a chunk that keeps its stored shading, to the reuse list
+// (what shade-reuse copies in kept layers' image pairs). With shading kept
+// between frames it also stamps every chunk it lists for shading with this
+// frame, and counts the oldest kept shading, the chunks shaded for their age
+// and (budget mode) the reusable chunks by age.
 #include <framework/shadel/shaders/decoupled.glsl>
 #include <framework/shadel/shaders/reuse.glsl>
 #include <framework/shadel/shaders/work.glsl>
 
 layout(local_size_x = 64) in;
-layout(set = 0, binding = kBindShadeStamps, std430) buffer ShadeStamps { uint stamps[]; };
 
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= params.ownedEntryCount) return;
   SgOwnedEntry owned = ownedEntries[i];
   SgRemapEntry entry = remap[owned.entryIndex];
-  if (entry.storageBase == SG_NO_STORAGE) return;
-  uint64_t candidates = sgReuseCandidates(owned, entry.occupancy);
-  uint64_t reused = sgReusedChunks(owned, entry.occupancy);
-  uvec2 halves = unpackUint2x32(entry.occupancy & ~reused);
+  uint base = i * SG_CHUNKS_PER_ENTRY;
+  uint64_t candidates = sgReuseCandidates(i, owned, entry.occupancy);
+  uint64_t reused = sgReusedChunks(i, owned, entry.occupancy);
+  uint64_t stored = entry.occupancy & sgStoredMask(i);
+  if (stored == uint64_t(0)) return;
+  uvec2 halves = unpackUint2x32(stored & ~reused);
   uint count = uint(bitCount(halves.x) + bitCount(halves.y));
   uvec2 reusedHalves = unpackUint2x32(reused);
   uint reuseCount = uint(bitCount(reusedHalves.x) + bitCount(reusedHalves.y));
@@ -29,25 +30,21 @@ void main() {
   uint firstReused = reuseCount > 0u ? work[sgReuseOffsetSlot()] + atomicAdd(work[sgReuseFillSlot()], reuseCount) : 0u;
   bool stamped = params.stampsBound != 0u;
   bool budget = stamped && params.staleAgeLimit != 0u;
-  uint n = 0u, shaded = 0u, copied = 0u, oldest = 0u, refreshed = 0u;
+  uint shaded = 0u, copied = 0u, oldest = 0u, refreshed = 0u;
   for (uint chunk = 0u; chunk < SG_CHUNKS_PER_ENTRY; ++chunk) {
-    if (!sgIsChunkMarked(entry.occupancy, chunk)) continue;
-    uint physical = entry.storageBase + n;  // == sgPhysicalChunk(entry, chunk)
-    ++n;
+    if (!sgIsChunkMarked(stored, chunk)) continue;
+    uint physical = chunkSlots[base + chunk];
     if (budget && sgIsChunkMarked(candidates, chunk)) {
-      uint age = sgChunkAge(owned.entryIndex, chunk);
+      uint age = params.frameNumber - stamps[physical];
       atomicAdd(counters.staleAgeChunks[min(age, kStaleAgeBins - 1u)], 1u);
       if (!sgIsChunkMarked(reused, chunk)) ++refreshed;
     }
     if (sgIsChunkMarked(reused, chunk)) {
+      // Its storage already holds its shading; kept layers' image pairs copy it across in place.
       uint slot = sgWorkItemSlot(firstReused + copied++);
-      uint from = sgPhysicalChunk(previousRemap[owned.entryIndex], chunk);
-      work[slot] = from;
+      work[slot] = physical;
       work[slot + 1u] = physical;
-      if (stamped) {
-        stamps[physical] = previousStamps[from];
-        oldest = max(oldest, params.frameNumber - previousStamps[from]);
-      }
+      if (stamped) oldest = max(oldest, params.frameNumber - stamps[physical]);
       continue;
     }
     uint slot = sgWorkItemSlot(first + shaded++);

@@ -21,6 +21,10 @@
 namespace sg::plugins {
 namespace {
 
+// Where the chunk slots rest between frames: any shader use.
+const graph::ResourceState kResting{graph::Layout::General, graph::PipelineStage::AllCommands,
+                                    graph::AccessFlag::ShaderStorageRead | graph::AccessFlag::ShaderStorageWrite};
+
 template <class T>
 gpu::Buffer upload(gpu::Device& device, const std::vector<T>& data, const char* name) {
   const size_t bytes = std::max<size_t>(data.size() * sizeof(T), 16);
@@ -166,6 +170,7 @@ void DecoupledShading::uploadTables(gpu::Device& device) {
   shadelInstances_ = upload(device, tables.instances, "shadel instances");
   levelRects_ = upload(device, tables.levelRects, "level rects");
   ownedEntries_ = upload(device, tables.ownedEntries, "owned remap entries");
+  chunkSlots_.setOwnedEntries(tables.ownedEntries);  // the chunk slots follow the owned entries
   idMapBuffer_ = upload(device, idTexels_, "triangle-ID maps");
 }
 
@@ -258,9 +263,8 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
   const plugin::Registry& materials = ctx.registry();
   layerPlan_ = planLayers(materials, frameObjects_, frameMaterials_);
 
-  // An entry takes up to 64 chunks from one partition at once: keep partitions
-  // at least 4 entries large, so a small storage does not fail every big entry.
-  // The chunk ring support-expand adds around visible regions comes on top
+  // The storage's partitions only round its capacity now (shadel-allocate
+  // takes chunks from one free list). The chunk ring support-expand adds around visible regions comes on top
   // (measured: +70% on the courtyard at 192², less at larger outputs).
   const double supportScale = layerPlan_.needsSupport ? kSupportStorageScale : 1.0;
   const uint32_t chunks = settings_.storageChunks
@@ -268,6 +272,9 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
                               : shadel::chunksForOutput(in.width, in.height, settings_.storageFactor * supportScale);
   storage_ = shadel::storageLayoutFor(chunks, std::clamp<uint32_t>(chunks / 256, 1, kStorageCounters));
   const bool keepShading = rate > 1 || budget_.has_value();
+  // Stable allocation: the chunk slots and free list, kept while the owned
+  // entries and the storage capacity stay the same.
+  const bool resetSlots = hasObjects() && chunkSlots_.prepare(in.device, in.executor, storage_.capacityChunks());
   const DecoupledParams params{bias_, settings_.sheetSizeLog2 - 6, storage_.widthChunks, storage_.chunksPerCounter,
                                ownedEntryCount_, objectCount, storage_.capacityChunks(),
                                storage_.counterCount, uint32_t(frames_), budget_ ? staleAge_.limit : 0u,
@@ -282,6 +289,8 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
                                         .params = params_[ring()], .objects = objects_[ring()], .shadelInstances = shadelInstances_,
                                         .levelRects = levelRects_, .ownedEntries = ownedEntries_, .idMaps = idMapBuffer_,
                                         .ownedEntryCount = ownedEntryCount_, .objectCount = objectCount,
+                                        .capacityChunks = storage_.capacityChunks(),
+                                        .resetSlots = resetSlots,
                                         .filter = settings_.filter,
                                         .baseline = settings_.baseline,
                                         .levelView = settings_.view == DebugView::Level});
@@ -292,16 +301,17 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
   chooseReuse(declaredHistory_.valid, materials);
   countersPending_ = true;  // counters-readback runs whenever objects are allocated
   frame.remap = declaredHistory_.remap;
-  frame.previousRemap = declaredHistory_.previousRemap;
+  frame.slots = graph.importPersistentBuffer("chunk slots", {.size = chunkSlots_.bytes()}, kResting);
+  in.executor.bindBuffer(frame.slots, chunkSlots_.buffer());
+  // shadel-allocate runs (and resets them) only while some object is shaded.
+  if (shading()) chunkSlots_.allocated();
   frame.counters = graph.createBuffer("shade counters", {.size = sizeof(ShadeCounters)});
   frame.work = graph.createBuffer("work", {.size = workBufferBytes(objectCount, storage_.capacityChunks())});
   // One VkDispatchIndirectCommand per object, then shade-reuse's.
   frame.args = graph.createBuffer("dispatch args", {.size = 12ull * (objectCount + 1)});
   if (keepShading) {
-    frame.shadedColor = declaredHistory_.shaded.current;
-    frame.previousShaded = declaredHistory_.shaded.history;
-    frame.stamps = declaredHistory_.stamps.current;
-    frame.previousStamps = declaredHistory_.stamps.history;
+    frame.shadedColor = declaredHistory_.shaded;
+    frame.stamps = declaredHistory_.stamps;
   } else {
     frame.shadedColor = graph.createImage(
         "shade storage", {.format = graph::Format::RGBA16F,
@@ -366,14 +376,12 @@ void DecoupledShading::addShadeFrameTail(graph::RenderGraph& graph, const plugin
   const bool reuse = reuseAny_;
   frame.work = graph.createBuffer("shade-frame work", {.size = workBufferBytes(frame.objectCount, storage_.capacityChunks())});
   frame.args = graph.createBuffer("shade-frame dispatch args", {.size = 12ull * (frame.objectCount + 1)});
-  frame.previousRemap = {};
   passes::addShadeFrameWork(graph, frame);
   reuseAny_ = false;
   addLayerPasses(graph, materials, "shade-frame ");
   reuseAny_ = reuse;
   frame.work = raster.work;
   frame.args = raster.args;
-  frame.previousRemap = raster.previousRemap;
 }
 
 void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, const plugin::Registry& materials,
@@ -390,8 +398,9 @@ void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, const plugin::R
                                            {.format = layer.format, .size = graph::Size::absolute(
                                                                         storage_.widthTexels(), storage_.heightTexels())});
   }
-  // First what keeps last frame's shading (and view-independent layers'
-  // values, which must be under every stored chunk), then the layers shade the rest.
+  // First the view-independent layers' values of the chunks that keep their
+  // shading (they must be under every stored chunk; their images are pairs),
+  // then the layers shade the rest. The shade storage keeps its chunks in place.
   if (reuseAny_) {
     std::vector<std::string> names;
     std::vector<passes::KeptLayerImage> kept;
@@ -400,7 +409,7 @@ void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, const plugin::R
         names.push_back(name);
         kept.push_back({history.layers.at(name).history, images.at(name), materials.layer(name).format});
       }
-    passes::addShadeReuse(graph, frame, kept);
+    if (!kept.empty()) passes::addShadeReuse(graph, frame, kept);
     for (size_t i = 0; i < kept.size(); ++i) images[names[i]] = kept[i].current;
   }
   for (size_t depth = 0; depth < layerPlan_.depths.size(); ++depth) {
@@ -419,10 +428,14 @@ void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, const plugin::R
       steps.push_back(std::move(step));
     }
     const std::string name = prefix + (depth == 0 ? "layer-shade" : "layer-shade #" + std::to_string(depth + 1));
-    passes::addLayerShade(graph, frame, name, steps, {history.previousRemap, history.valid});
+    passes::addLayerShade(graph, frame, name, steps, {history.valid});
     for (size_t i = 0; i < steps.size(); ++i)
       (layerPlan_.depths[depth][i].final ? frame.shadedColor : images[steps[i].layer->name]) = steps[i].output;
   }
+}
+
+std::map<uint64_t, uint32_t> DecoupledShading::chunkAddresses(gpu::Device& device) const {
+  return chunkSlots_.addresses(device);
 }
 
 DecoupledStats DecoupledShading::stats() const {

@@ -18,6 +18,7 @@
 #include <shadelgraph/shadel/shadel_space.hpp>
 #include <shadelgraph/shadel/shadel_storage.hpp>
 
+#include "chunk_slots.hpp"
 #include "decoupled_tables.hpp"
 #include "layer_history.hpp"
 #include "layer_plan.hpp"
@@ -133,6 +134,9 @@ class DecoupledShading {
 
   // Reads the counters of the last executed frame (call after it completed).
   DecoupledStats stats() const;
+  // Where each chunk stored after the last frame is (stable allocation), by
+  // entry index * 64 + chunk; reads the GPU's chunk slots (call after the frame completed).
+  std::map<uint64_t, uint32_t> chunkAddresses(gpu::Device& device) const;
   const std::vector<ShadingChoice>& choices() const { return choices_; }
 
  private:
@@ -190,6 +194,7 @@ class DecoupledShading {
   graph::ResourceHandle readbackHandle_;
   std::unique_ptr<shadel::ShadelSpace> space_;
   uint32_t ownedEntryCount_ = 0;
+  ChunkSlots chunkSlots_;  // stable allocation: where each stored chunk is, kept across frames
   shadel::StorageLayout storage_;
   uint64_t idMapBytes_ = 0;
   glm::uvec2 sheetRegionOrigin_{0}, sheetRegionSize_{1};  // allocated part of the sheet, in chunks

@@ -15,13 +15,30 @@ const graph::ResourceState kResting{graph::Layout::General, graph::PipelineStage
 
 }  // namespace
 
-gpu::Buffer& LayerHistory::remap(gpu::Device& device, uint32_t index, uint64_t bytes) {
-  if (!remaps_[index])
-    remaps_[index] = gpu::Buffer(device.context(), device.memory(),
-                                 {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryLocation::Device,
-                                  index ? "remap (last frame)" : "remap", index ? "history" : "remap",
-                                  /*concurrent: graphics and async compute both use it*/ true});
-  return remaps_[index];
+gpu::Buffer& LayerHistory::remap(gpu::Device& device, uint64_t bytes) {
+  if (!remap_)
+    remap_ = gpu::Buffer(device.context(), device.memory(),
+                         {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryLocation::Device, "remap", "remap",
+                          /*concurrent: graphics and async compute both use it*/ true});
+  return remap_;
+}
+
+// Images the graph expects resting in General.
+void toGeneral(gpu::Device& device, std::initializer_list<gpu::Image*> images) {
+  device.context().submitAndWait([&](VkCommandBuffer cmd) {
+    for (auto* image : images)
+      gpu::imageBarrier(cmd, image->handle(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, {},
+                        {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT});
+  });
+}
+
+gpu::Image makeStorageImage(gpu::Device& device, const std::string& name, graph::Format format, uint32_t width,
+                            uint32_t height, const char* category) {
+  return gpu::Image(device.context(), device.memory(),
+                    {.width = width, .height = height, .format = gpu::toVk(format),
+                     .usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                     .concurrent = true,  // graphics (composite) and async compute (layers) both use it
+                     .name = name, .category = category});
 }
 
 PersistentLayerHandles LayerHistory::declareImagePair(graph::RenderGraph& graph, gpu::Device& device,
@@ -33,17 +50,8 @@ PersistentLayerHandles LayerHistory::declareImagePair(graph::RenderGraph& graph,
   if (!pair[0] || pair[0].desc().width != width || pair[0].desc().height != height) {
     executor.finish();  // a frame in flight may still use the old pair
     for (uint32_t i = 0; i < 2; ++i)
-      pair[i] = gpu::Image(device.context(), device.memory(),
-                           {.width = width, .height = height, .format = gpu::toVk(format),
-                            .usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                            .concurrent = true,  // graphics (composite) and async compute (layers) both use it
-                            .name = name + (i ? " (B)" : " (A)"), .category = "history"});
-    // The graph expects them resting in General.
-    device.context().submitAndWait([&](VkCommandBuffer cmd) {
-      for (auto& image : pair)
-        gpu::imageBarrier(cmd, image.handle(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, {},
-                          {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT});
-    });
+      pair[i] = makeStorageImage(device, name + (i ? " (B)" : " (A)"), format, width, height, "history");
+    toGeneral(device, {&pair[0], &pair[1]});
   }
   const graph::ImageDesc desc{.format = format, .size = graph::Size::absolute(width, height)};
   PersistentLayerHandles handles;
@@ -54,20 +62,31 @@ PersistentLayerHandles LayerHistory::declareImagePair(graph::RenderGraph& graph,
   return handles;
 }
 
-PersistentLayerHandles LayerHistory::declareStamps(graph::RenderGraph& graph, gpu::Device& device,
-                                                   gpu::GraphExecutor& executor, uint64_t chunks, uint32_t current) {
+graph::ResourceHandle LayerHistory::declareStorage(graph::RenderGraph& graph, gpu::Device& device,
+                                                   gpu::GraphExecutor& executor, uint32_t width, uint32_t height) {
+  if (!storage_ || storage_.desc().width != width || storage_.desc().height != height) {
+    executor.finish();  // a frame in flight may still use the old image
+    storage_ = makeStorageImage(device, "shade storage (kept)", graph::Format::RGBA16F, width, height, "shade storage");
+    toGeneral(device, {&storage_});
+  }
+  const graph::ImageDesc desc{.format = graph::Format::RGBA16F, .size = graph::Size::absolute(width, height)};
+  const graph::ResourceHandle handle = graph.importPersistentImage("shade storage", desc, kResting);
+  executor.bindImage(handle, storage_);
+  return handle;
+}
+
+graph::ResourceHandle LayerHistory::declareStamps(graph::RenderGraph& graph, gpu::Device& device,
+                                                  gpu::GraphExecutor& executor, uint64_t chunks) {
   const uint64_t bytes = std::max<uint64_t>(chunks, 1) * sizeof(uint32_t);
-  for (uint32_t i = 0; i < 2; ++i)
-    if (!stamps_[i] || stamps_[i].size() != bytes)
-      stamps_[i] = gpu::Buffer(device.context(), device.memory(),
-                               {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryLocation::Device,
-                                i ? "shade stamps (B)" : "shade stamps (A)", "history", /*concurrent*/ true});
-  PersistentLayerHandles handles;
-  handles.current = graph.importPersistentBuffer("shade stamps", {.size = bytes}, kResting);
-  handles.history = graph.history(handles.current);
-  executor.bindBuffer(handles.current, stamps_[current]);
-  executor.bindBuffer(handles.history, stamps_[1 - current]);
-  return handles;
+  if (!stamps_ || stamps_.size() != bytes) {
+    executor.finish();
+    stamps_ = gpu::Buffer(device.context(), device.memory(),
+                          {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryLocation::Device, "shade stamps",
+                           "history", /*concurrent*/ true});
+  }
+  const graph::ResourceHandle handle = graph.importPersistentBuffer("shade stamps", {.size = bytes}, kResting);
+  executor.bindBuffer(handle, stamps_);
+  return handle;
 }
 
 LayerHistory::Declared LayerHistory::declare(graph::RenderGraph& graph, gpu::Device& device,
@@ -76,20 +95,18 @@ LayerHistory::Declared LayerHistory::declare(graph::RenderGraph& graph, gpu::Dev
                                              uint32_t width, uint32_t height, uint64_t remapBytes, uint64_t frame,
                                              const std::string& outputKey) {
   Declared out;
-  // Without persistent layers or reuse one remap serves every frame; with
-  // them the two swap, so last frame's stays readable.
+  // One remap table serves every frame: where a chunk was stored last frame
+  // is where it is stored now (stable allocation).
   const bool keep = keepShading || !layers.empty();
-  const uint32_t current = keep ? uint32_t(frame % 2) : 0u;
+  const uint32_t current = uint32_t(frame % 2);
   out.remap = graph.importPersistentBuffer("remap", {.size = remapBytes}, kResting);
-  executor.bindBuffer(out.remap, remap(device, current, remapBytes));
+  executor.bindBuffer(out.remap, remap(device, remapBytes));
   const bool consecutive = frame == lastFrame_ + 1;
   lastFrame_ = frame;
   if (!keep) {
     lastKey_.clear();
     return out;
   }
-  out.previousRemap = graph.history(out.remap);
-  executor.bindBuffer(out.previousRemap, remap(device, 1 - current, remapBytes));
 
   std::string key = outputKey + " " + std::to_string(width) + "x" + std::to_string(height) + (keepShading ? " reuse" : "");
   for (const auto& name : layers) {
@@ -98,9 +115,9 @@ LayerHistory::Declared LayerHistory::declare(graph::RenderGraph& graph, gpu::Dev
     out.layers[name] = declareImagePair(graph, device, executor, "layer " + name, layer.format, width, height, current);
   }
   if (keepShading) {
-    out.shaded = declareImagePair(graph, device, executor, "shade storage", graph::Format::RGBA16F, width, height, current);
-    // The storage is width x height texels of 8x8-texel chunks; the key holds its size.
-    out.stamps = declareStamps(graph, device, executor, uint64_t(width / 8) * (height / 8), current);
+    out.shaded = declareStorage(graph, device, executor, width, height);
+    // At least one stamp per physical chunk (9x9-texel tiles); the key holds the size.
+    out.stamps = declareStamps(graph, device, executor, uint64_t(width / 8) * (height / 8));
   }
   // Last frame must have stored these layers at this size, with this remap pair.
   out.valid = consecutive && key == lastKey_;
@@ -109,8 +126,7 @@ LayerHistory::Declared LayerHistory::declare(graph::RenderGraph& graph, gpu::Dev
 }
 
 uint64_t LayerHistory::bytes() const {
-  uint64_t total = remaps_[1] ? remaps_[1].size() : 0;
-  for (const auto& stamps : stamps_) total += stamps ? stamps.size() : 0;
+  uint64_t total = stamps_ ? stamps_.size() : 0;
   for (const auto& [name, pair] : images_)
     for (const auto& image : pair)
       if (image) total += uint64_t(image.desc().width) * image.desc().height * formatBytes_.at(name);

@@ -4,6 +4,7 @@
 // decoupled and material-layer device tests share.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -60,6 +61,8 @@ class Session {
     return renderer_->plan({.width = size, .height = size, .cameraOverride = camera});
   }
   plugins::DecoupledStats stats() const { return shading_->stats(); }
+  // Where each stored chunk is after the last frame (entry index * 64 + chunk -> physical chunk).
+  std::map<uint64_t, uint32_t> chunkAddresses() const { return shading_->chunkAddresses(*device_); }
   const std::vector<plugins::ShadingChoice>& choices() const { return shading_->choices(); }
   const gpu::Device& device() const { return *device_; }
   const scene::Scene& scene() const { return scene_; }

@@ -21,4 +21,6 @@ layout(set = 0, binding = kBindCounters, scalar) buffer Counters { SgShadeCounte
 
 SgLevelRect sgLevelRect(uint object, uint level) { return levelRects[shadelInstances[object].firstLevelRect + level]; }
 
+#include "chunk_slots.glsl"
+
 #endif

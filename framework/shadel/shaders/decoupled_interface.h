@@ -31,13 +31,15 @@ SG_CONST uint kBindLayerOutput = kBindLayerImage;  // the image the layer writes
 SG_CONST uint kBindLayerInputs = 14u;              // + i: the i-th layer it reads
 SG_CONST uint kMaxLayerReads = 8u;
 SG_CONST uint kBindLayerHistory = 22u;             // persistent layers: last frame's image of the layer
-SG_CONST uint kBindPreviousRemap = 23u;            // and last frame's remap table
 // 24..27: the frame resources a layer samples (render::kBindLayerFrameInputs).
 SG_CONST uint kBindSupportMasks = 30u;             // support-expand's per-owned-entry masks
 // With shading kept between frames: per physical chunk of the shade storage,
-// the raster frame its shading was computed in (this frame's and last frame's).
+// the raster frame its shading was computed in.
 SG_CONST uint kBindShadeStamps = 31u;
-SG_CONST uint kBindPreviousStamps = 32u;
+// Stable allocation: each owned entry's 64 chunk slots, then the free list (chunk_slots.glsl).
+SG_CONST uint kBindChunkSlots = 33u;
+// A chunk slot: the physical chunk; kNoSlot: no storage.
+SG_CONST uint kNoSlot = 0xFFFFFFFFu;
 SG_CONST uint kStaleAgeBins = 16u;  // SgShadeCounters.staleAgeChunks: ages 0..14, then 15 or more
 
 SG_CONST uint kStorageCounters = 16u;      // storage partitions, each with its allocation counter
@@ -49,8 +51,8 @@ SG_CONST uint kMaxPersistentLayers = 8u;
 SG_CONST uint kWorkSlotsPerObject = 3u;
 SG_CONST uint kWorkSlotsPerItem = 4u;
 // After the per-object slots: the reuse list's length, its first item and its
-// fill counter (its items {previous physical chunk, physical chunk, -, -}
-// follow the shade items), and one spare slot.
+// fill counter (its items {physical chunk, physical chunk, -, -} follow the
+// shade items: what shade-reuse copies in kept layers' image pairs), and one spare slot.
 SG_CONST uint kWorkGlobalSlots = 4u;
 
 // One decoupled object (all its primitives share one material).
@@ -64,14 +66,14 @@ struct SgDecoupledObject {
   uint shadingUvSet;   // 0 or 1
   vec2 tileOffset;     // shading UV = uv - tileOffset
   uint supportChunks;  // support-expand grows its marked chunks by this many (0: no neighbourhood layer)
-  uint reuse;          // 1: chunks it marked last frame too are copied from last frame's storage, not shaded
+  uint reuse;          // 1: chunks it marked last frame too keep their stored shading (not shaded)
   uint keepLayers;     // bit p: its view-independent layer in persistent slot p keeps last frame's values (layer_rate.hpp)
   uint pad2;  // 112 bytes, as std430 laid it out: every record's mat4 stays 16-byte aligned
 };
 
 // What the passes count, read back after the frame.
 struct SgShadeCounters {
-  uint allocated[kStorageCounters];  // chunks taken from each storage partition
+  uint allocated[kStorageCounters];  // unused since stable allocation (one free list); kept for the record's layout
   uint chunksMarked;
   uint chunksAllocated;
   uint overflowChunks;
@@ -82,7 +84,7 @@ struct SgShadeCounters {
   uint layerReused[kMaxPersistentLayers];    // per persistent layer: shadels served from last frame
   uint layerComputed[kMaxPersistentLayers];  // and shadels computed
   uint chunksShaded;                 // chunks the layers shaded this frame (all of them on a shade frame)
-  uint chunksReused;                 // chunks copied from last frame's storage instead (shade-reuse)
+  uint chunksReused;                 // chunks that kept their stored shading instead
   uint staleMaxAge;                  // raster frames since the oldest reused chunk was shaded (0: none reused)
   uint chunksRefreshed;              // chunks that could have been reused but were shaded for their age (budget mode)
   uint staleAgeChunks[kStaleAgeBins];  // reusable chunks by the age they would have if reused (budget mode)
@@ -93,11 +95,11 @@ struct SgDecoupledParams {
   float bias;                 // global fractional level bias (the adjuster's)
   uint entriesPerSideLog2;    // virtual sheet
   uint storageWidthChunks;    // layer image width in chunks
-  uint chunksPerCounter;      // storage partition size
+  uint chunksPerCounter;      // storage partition size (unused since stable allocation)
   uint ownedEntryCount;
   uint objectCount;
   uint workCapacity;          // work items the work buffer holds
-  uint storageCounters;       // partitions in use (<= kStorageCounters)
+  uint storageCounters;       // partitions (unused since stable allocation)
   uint frameNumber;           // this raster frame's number (shade stamps)
   // Budget mode (0: off): a reusable chunk older than this many raster frames
   // is shaded instead; one exactly this old is when a hash of its place falls
