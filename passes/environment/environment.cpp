@@ -64,15 +64,19 @@ struct Handles {
   graph::ResourceHandle source, specular, irradiance, brdf;
 };
 
-void dispatch(PassContext& ctx, const Handles& h, shader::SgEnvironmentPush push, uint32_t width, uint32_t height) {
+
+// `irradiance` and `brdf` are what the step's pass binds at those slots: a pass
+// binds only images it declares, so a slot its steps leave alone gets one of them.
+void dispatch(PassContext& ctx, graph::ResourceHandle source, graph::ResourceHandle specular,
+              graph::ResourceHandle irradiance, graph::ResourceHandle brdf, shader::SgEnvironmentPush push,
+              uint32_t width, uint32_t height) {
   const auto& pipeline = ctx.device().pipeline("environment-prefilter", environmentPrefilterPipeline);
   const auto storage = [&](uint32_t binding, graph::ResourceHandle image) {
     return gpu::DescriptorWrite{binding, gpu::ImageBinding{ctx.image(image).view(), VK_IMAGE_LAYOUT_GENERAL, VK_NULL_HANDLE}};
   };
-  ctx.bind(pipeline, {{shader::kBindEnvSource, gpu::BufferBinding{ctx.buffer(h.source).handle()}},
-                      storage(shader::kBindEnvSpecularOut, h.specular),
-                      storage(shader::kBindEnvIrradianceOut, h.irradiance),
-                      storage(shader::kBindEnvBrdfOut, h.brdf)});
+  ctx.bind(pipeline, {{shader::kBindEnvSource, gpu::BufferBinding{ctx.buffer(source).handle()}},
+                      storage(shader::kBindEnvSpecularOut, specular), storage(shader::kBindEnvIrradianceOut, irradiance),
+                      storage(shader::kBindEnvBrdfOut, brdf)});
   vkCmdPushConstants(ctx.cmd(), pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof push, &push);
   vkCmdDispatch(ctx.cmd(), (width + 7) / 8, (height + 7) / 8, 1);
 }
@@ -106,27 +110,27 @@ void addEnvironment(render::FrameContext& frame) {
     // Level 0 and the BRDF lookup from the image; then what level 0 convolves to.
     auto& down = frame.graph().addPass("environment-downsample", graph::QueueClass::Graphics, graph::PassKind::Compute);
     down.read(h.source, graph::Access::StorageRead);
-    down.read(h.irradiance, graph::Access::StorageRead);  // bound (one layout for both steps), not touched
     h.specular = down.write(h.specular, graph::Access::StorageWrite);
     h.brdf = down.write(h.brdf, graph::Access::StorageWrite);
     down.execute([h, w, hgt, level](PassContext& ctx) {
-      dispatch(ctx, h, {shader::kEnvStepDownsample, 0, w, hgt}, level, level / 2);
-      dispatch(ctx, h, {shader::kEnvStepBrdf, 0, w, hgt}, shader::kEnvBrdfSize, shader::kEnvBrdfSize);
+      // The irradiance slot, untouched by these steps, holds level 0's image.
+      dispatch(ctx, h.source, h.specular, h.specular, h.brdf, {shader::kEnvStepDownsample, 0, w, hgt}, level, level / 2);
+      dispatch(ctx, h.source, h.specular, h.specular, h.brdf, {shader::kEnvStepBrdf, 0, w, hgt}, shader::kEnvBrdfSize,
+               shader::kEnvBrdfSize);
     });
     auto& conv = frame.graph().addPass("environment-prefilter", graph::QueueClass::Graphics, graph::PassKind::Compute);
-    Handles c = h;
-    conv.read(c.source, graph::Access::StorageRead);
-    conv.read(c.brdf, graph::Access::StorageRead);  // bound, not touched
-    c.specular = conv.write(c.specular, graph::Access::StorageReadWrite);
-    c.irradiance = conv.write(c.irradiance, graph::Access::StorageWrite);
-    conv.execute([c, w, hgt, level, done = &maps.prefiltered](PassContext& ctx) {
-      dispatch(ctx, c, {shader::kEnvStepIrradiance, 0, w, hgt}, shader::kEnvIrradianceWidth,
-               shader::kEnvIrradianceWidth / 2);
+    conv.read(h.source, graph::Access::StorageRead);
+    h.specular = conv.write(h.specular, graph::Access::StorageReadWrite);
+    h.irradiance = conv.write(h.irradiance, graph::Access::StorageWrite);
+    conv.execute([h, w, hgt, level, done = &maps.prefiltered](PassContext& ctx) {
+      // The BRDF slot, untouched by these steps, holds the irradiance image.
+      dispatch(ctx, h.source, h.specular, h.irradiance, h.irradiance, {shader::kEnvStepIrradiance, 0, w, hgt},
+               shader::kEnvIrradianceWidth, shader::kEnvIrradianceWidth / 2);
       for (uint32_t l = 1; l < shader::kEnvSpecularLevels; ++l)
-        dispatch(ctx, c, {shader::kEnvStepSpecular, l, w, hgt}, level, level / 2);
+        dispatch(ctx, h.source, h.specular, h.irradiance, h.irradiance, {shader::kEnvStepSpecular, l, w, hgt}, level,
+                 level / 2);
       *done = true;  // recorded: later frames read the maps without prefiltering again
     });
-    h = c;
   }
   frame.write(render::kEnvironmentSpecularResource, h.specular);
   frame.write(render::kEnvironmentIrradianceResource, h.irradiance);
