@@ -116,7 +116,7 @@ TEST(FrameCli, ABrokenFrameFailsWithOneLineNamingPassAndResource) {
   const Case cases[] = {
       {R"({"name": "f", "passes": ["z-prepass", "tonemap"]})",
        "pass 'tonemap' reads 'scene.hdr', which no pass of the frame writes"},
-      {R"({"name": "f", "base": "forward", "passes": ["bloom"]})", "unknown pass 'bloom'"},
+      {R"({"name": "f", "base": "forward", "passes": ["lens-flare"]})", "unknown pass 'lens-flare'"},
       {R"({"name": "f", "passes": ["z-prepass", "forward-opaque", "tonemap", "exposure"]})",
        "pass 'tonemap' reads 'scene.exposure', which only 'exposure' writes, after it"},
       {R"({"name": "f", "base": "forward", "passes": [{"pass": "test-post", "after": "tonemap", "before": "exposure"}]})",
