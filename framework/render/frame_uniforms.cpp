@@ -7,6 +7,20 @@
 
 namespace sg::render {
 
+namespace {
+const glm::vec3 kDimSky(0.35f, 0.45f, 0.6f);  // luminance 0.44 cd/m^2
+const glm::vec3 kLuma(0.2126f, 0.7152f, 0.0722f);
+}  // namespace
+
+float skyScale(std::span<const scene::Light> lights) {
+  float sun = 0.0f;  // the brightest directional light's illuminance, lux
+  for (const auto& l : lights)
+    if (l.type == scene::LightType::Directional) sun = std::max(sun, l.intensity * glm::dot(l.color, kLuma));
+  return std::max(1.0f, kSkyLuminancePerLux * sun / glm::dot(kDimSky, kLuma));
+}
+
+glm::vec3 skyLuminance(std::span<const scene::Light> lights) { return kDimSky * skyScale(lights); }
+
 FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& camera, uint32_t width,
                                 uint32_t height, std::span<const glm::vec4> drawSpheres) {
   FrameUniforms f{};
@@ -14,8 +28,9 @@ FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& 
   f.projection = camera.projectionMatrix(float(width) / float(height));
   f.viewProjection = f.projection * f.view;
   f.cameraPosition = glm::vec4(camera.position(), 1.0f);
-  f.ambient = glm::vec4(0.35f, 0.45f, 0.6f, 0.0f);  // sky radiance
   std::vector<scene::Light> lights = scene.lights;
+  f.ambient = glm::vec4(skyLuminance(lights), 0.0f);
+  if (scene.environment.present()) f.environment = glm::vec4(1.0f, scene.environment.intensity, 0.0f, 0.0f);
   if (lights.empty())
     lights.push_back({.name = "default sun", .type = scene::LightType::Directional, .color = glm::vec3(1.0f),
                       .intensity = 3.0f, .direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.5f))});

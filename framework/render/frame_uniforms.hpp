@@ -13,6 +13,16 @@ using shader::kMaxLights;
 using GpuLight = shader::Light;
 using FrameUniforms = shader::SgFrameUniforms;
 
+// The analytic sky's zenith luminance (cd/m^2; horizon 1.6x, ground 0.3x, gltf_pbr.glsl): a clear
+// sky's zenith is about 4% of the sun's illuminance per steradian (a 100,000-lux sun: ~4,000 cd/m^2),
+// from the brightest directional light; never dimmer than the 0.44 cd/m^2 blue sky this renderer
+// always had, so scenes under a few-lux sun or only lamps keep their look.
+inline constexpr float kSkyLuminancePerLux = 0.04f;
+glm::vec3 skyLuminance(std::span<const scene::Light> lights);
+// What the analytic sky is brightened by over that dim sky (1 or more): the
+// background behind every object (forward-opaque's clear colour) follows it too.
+float skyScale(std::span<const scene::Light> lights);
+
 // A scene without lights gets a default sun so it is never black. Lights past
 // kMaxLights are dropped. Shadowed lights get their shadow map's slot and
 // matrix (render::shadowViews, fitted to `drawSpheres`, every draw's world bounding sphere).

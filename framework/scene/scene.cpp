@@ -80,6 +80,7 @@ void appendScene(Scene& into, Scene other, const glm::mat4& transform, const std
     into.cameras.push_back(std::move(camera));
   }
   for (std::string& warning : other.warnings) into.warnings.push_back(warningPrefix + warning);
+  if (!into.environment.present()) into.environment = std::move(other.environment);
 }
 
 }  // namespace sg::scene

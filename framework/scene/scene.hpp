@@ -8,6 +8,7 @@
 #include <shadelgraph/scene/animation.hpp>
 #include <shadelgraph/scene/bounds.hpp>
 #include <shadelgraph/scene/camera.hpp>
+#include <shadelgraph/scene/environment.hpp>
 #include <shadelgraph/scene/instance.hpp>
 #include <shadelgraph/scene/light.hpp>
 #include <shadelgraph/scene/material.hpp>
@@ -33,6 +34,7 @@ struct Scene {
   std::vector<Animation> animations;  // of glTF files
   std::vector<Skin> skins;            // of glTF files
   std::vector<std::string> warnings;  // things skipped or repaired, one line each
+  Environment environment;            // the environment light; none: the analytic sky
 };
 
 // World-space box around every instance.

@@ -247,7 +247,7 @@ std::vector<Animation> chosenAnimations(const Json& object, const std::string& p
 }
 
 SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadOptions& options) {
-  allowOnly(root, "", {"objects", "lights", "cameraPaths"});
+  allowOnly(root, "", {"objects", "lights", "cameraPaths", "environment"});
   const auto objects = root.find("objects");
   if (objects == root.end() || !objects->is_array()) throw FormatError("/objects", "expected an array");
 
@@ -345,6 +345,18 @@ SceneFile parse(const Json& root, const std::filesystem::path& file, const LoadO
     if (!lights->is_array()) throw FormatError("/lights", "expected an array");
     for (size_t i = 0; i < lights->size(); ++i)
       result.scene.lights.push_back(parseLight((*lights)[i], "/lights/" + std::to_string(i)));
+  }
+  if (const auto env = root.find("environment"); env != root.end()) {
+    allowOnly(*env, "/environment", {"image", "intensity"});
+    const std::string image = text(*env, "image", "/environment", "");
+    if (image.empty()) throw FormatError("/environment/image", "required property is missing");
+    const float intensity = number(*env, "intensity", "/environment", 1.0f);
+    if (!(intensity >= 0.0f)) throw FormatError("/environment/intensity", "must be >= 0");
+    try {
+      result.scene.environment = loadEnvironment((file.parent_path() / image).lexically_normal(), intensity);
+    } catch (const SceneError& error) {
+      throw FormatError("/environment/image", error.what());
+    }
   }
   if (const auto paths = root.find("cameraPaths"); paths != root.end()) {
     if (!paths->is_array()) throw FormatError("/cameraPaths", "expected an array");

@@ -1,5 +1,6 @@
 // glTF metallic-roughness shading of one surface point with the frame's
-// punctual lights (the SDK's sgLightAt) and a hemispherical ambient term.
+// punctual lights (the SDK's sgLightAt) and the environment: the scene's
+// prefiltered HDR image when it names one, else a hemispherical sky.
 // Textures are sampled with the surface's UV derivatives (materialSample),
 // whichever variant runs it.
 #ifndef SG_GLTF_PBR_GLSL
@@ -25,10 +26,36 @@ vec3 shadingNormal(Surface s) {
   return normalize(mat3(t, b, s.normal) * m);
 }
 
-// Radiance of the environment seen in a direction with vertical component `y`.
+// Radiance (cd/m^2) of the analytic sky seen in a direction with vertical component `y`:
+// frame.ambient is the zenith (render::skyLuminance), the horizon 1.6x, the ground 0.3x.
 vec3 environmentRadiance(float y) {
   vec3 sky = frame.ambient.rgb, horizon = frame.ambient.rgb * 1.6, ground = frame.ambient.rgb * 0.3;
   return y > 0.0 ? mix(horizon, sky, sqrt(y)) : mix(horizon, ground, sqrt(-y));
+}
+
+// The environment's radiance around N, cosine-weighted (irradiance / pi): the
+// scene's environment image when it has one, else the analytic sky gradient.
+// One source for every variant (forward, decoupled, the split-pbr layers).
+vec3 ambientDiffuse(vec3 N) {
+  if (frame.environment.x > 0.0) return sgEnvironmentDiffuse(N);
+  return environmentRadiance(N.y);
+}
+
+// The environment's specular reflection along R (reflect(-V, N)) for f0 at
+// N.V, before occlusion: the prefiltered image times the split-sum BRDF
+// lookup, or the analytic sky blurred towards its average with roughness,
+// scaled by Karis' analytic split-sum fit (UE4 mobile).
+vec3 ambientSpecular(vec3 R, float NdotV, float roughness, vec3 f0) {
+  if (frame.environment.x > 0.0) {
+    vec2 ab = sgEnvironmentBrdf(NdotV, roughness);
+    return sgEnvironmentSpecular(R, roughness) * (f0 * ab.x + ab.y);
+  }
+  vec3 specularEnv = mix(environmentRadiance(R.y), environmentRadiance(0.3), roughness * roughness);
+  vec4 c0 = vec4(-1.0, -0.0275, -0.572, 0.022), c1 = vec4(1.0, 0.0425, 1.04, -0.04);
+  vec4 r = roughness * c0 + c1;
+  float a004 = min(r.x * r.x, exp2(-9.28 * NdotV)) * r.x + r.y;
+  vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
+  return specularEnv * (f0 * ab.x + ab.y);
 }
 
 // The glTF metallic-roughness model at a surface point for given inputs:
@@ -42,19 +69,9 @@ vec3 shadeMetallicRoughness(Surface s, vec3 baseColor, float metallic, float rou
     LightSample light = sgLightAt(frame.lights[i], s.position);
     color += brdfGltf(baseColor, metallic, roughness, N, V, light.direction, light.radiance);
   }
-  // Environment: a sky-over-ground gradient (frame.ambient is the sky), diffuse
-  // from the normal, specular from the reflection blurred towards the average
-  // with roughness, scaled by Karis' analytic split-sum fit (UE4 mobile).
-  vec3 diffuseEnv = environmentRadiance(N.y);
-  vec3 R = reflect(-V, N);
-  vec3 specularEnv = mix(environmentRadiance(R.y), environmentRadiance(0.3), roughness * roughness);
   float NdotV = clamp(dot(N, V), 1e-4, 1.0);
-  vec4 c0 = vec4(-1.0, -0.0275, -0.572, 0.022), c1 = vec4(1.0, 0.0425, 1.04, -0.04);
-  vec4 r = roughness * c0 + c1;
-  float a004 = min(r.x * r.x, exp2(-9.28 * NdotV)) * r.x + r.y;
-  vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
   vec3 f0 = mix(vec3(0.04), baseColor, metallic);
-  color += occlusion * (diffuseEnv * baseColor * (1.0 - metallic) + specularEnv * (f0 * ab.x + ab.y));
+  color += occlusion * (ambientDiffuse(N) * baseColor * (1.0 - metallic) + ambientSpecular(reflect(-V, N), NdotV, roughness, f0));
   return color + emissive;
 }
 

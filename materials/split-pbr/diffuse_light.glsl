@@ -44,7 +44,7 @@ vec4 diffuseLight(Surface s) {
     LightSample light = sgLightAt(frame.lights[i], s.position);
     color += albedo / kPi * light.radiance * clamp(dot(m.N, light.direction), 0.0, 1.0);
   }
-  color += m.occlusion * environmentRadiance(m.N.y) * albedo;
+  color += m.occlusion * ambientDiffuse(m.N) * albedo;
   return vec4(color + m.emissive, m.baseColor.a);
 }
 

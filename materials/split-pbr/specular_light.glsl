@@ -21,12 +21,6 @@ vec4 specularLight(Surface s) {
              light.radiance * NdotL;
   }
   // The environment's specular term, as shadeMetallicRoughness computes it.
-  vec3 R = reflect(-V, m.N);
-  vec3 specularEnv = mix(environmentRadiance(R.y), environmentRadiance(0.3), m.roughness * m.roughness);
-  vec4 c0 = vec4(-1.0, -0.0275, -0.572, 0.022), c1 = vec4(1.0, 0.0425, 1.04, -0.04);
-  vec4 r = m.roughness * c0 + c1;
-  float a004 = min(r.x * r.x, exp2(-9.28 * NdotV)) * r.x + r.y;
-  vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
-  color += m.occlusion * specularEnv * (f0 * ab.x + ab.y);
+  color += m.occlusion * ambientSpecular(reflect(-V, m.N), NdotV, m.roughness, f0);
   return vec4(color, diffuse.a);
 }

@@ -152,11 +152,13 @@ void registerDecoupledPackage(plugin::Registry& registry) {
                       if (view == DebugView::Sheet) ctx.write("scene.hdr", passes::addSheetView(ctx.graph(), d.frame(ctx)));
                     }});
   registry.addFrame({.name = "decoupled",
-                     .passes = {{.pass = "skinning"}, {.pass = "z-prepass"}, {.pass = "shadows"}, {.pass = "shadel-clear"}, {.pass = "shadel-mark"},
+                     .passes = {{.pass = "skinning"}, {.pass = "z-prepass"}, {.pass = "shadows"}, {.pass = "environment"},
+                                {.pass = "shadel-clear"}, {.pass = "shadel-mark"},
                                 {.pass = "support-expand"}, {.pass = "shadel-allocate"}, {.pass = "work-aggregate"},
                                 {.pass = "layer-shade"}, {.pass = "forward-opaque"}, {.pass = "alpha-mask"},
                                 {.pass = "composite"}, {.pass = "counters-readback"}, {.pass = "alpha-blend"},
-                                {.pass = "decoupled-debug-view"}, {.pass = "exposure"}, {.pass = "tonemap"}}});
+                                {.pass = "decoupled-debug-view"}, {.pass = "exposure"}, {.pass = "bloom"},
+                                {.pass = "tonemap"}}});
 }
 
 DecoupledRenderer makeDecoupledRenderer(gpu::Device& device, scene::Scene& scene, const plugin::Registry& registry,

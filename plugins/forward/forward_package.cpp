@@ -1,7 +1,10 @@
 #include "forward_package.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 
+#include <shadelgraph/render/environment_binding.hpp>
 #include <shadelgraph/render/frame_context.hpp>
 #include <shadelgraph/render/frame_uniforms.hpp>
 #include <shadelgraph/render/shadow_binding.hpp>
@@ -9,6 +12,8 @@
 
 #include "alpha-blend/alpha_blend.hpp"
 #include "alpha-mask/alpha_mask.hpp"
+#include "bloom/bloom.hpp"
+#include "environment/environment.hpp"
 #include "exposure/exposure.hpp"
 #include "forward/forward.hpp"
 #include "forward/forward_material.hpp"
@@ -119,6 +124,12 @@ void registerForwardPackage(plugin::Registry& registry) {
                     .reads = {plugin::kForwardDrawsResource},
                     .writes = {render::kShadowMapsResource},
                     .declare = declareShadows});
+  registry.addPass({.name = "environment",
+                    .description = "the scene's environment image prefiltered once for image-based lighting "
+                                   "(only when the scene names one; the prefilter passes only until they ran)",
+                    .writes = {render::kEnvironmentIrradianceResource, render::kEnvironmentSpecularResource,
+                               render::kEnvironmentBrdfResource},
+                    .declare = passes::addEnvironment});
   registry.addPass({.name = "forward-opaque",
                     .description = "opaque objects shaded forward (their material's fragment variant); clears the HDR colour",
                     .reads = {plugin::kForwardDrawsResource, "scene.depth"},
@@ -126,7 +137,9 @@ void registerForwardPackage(plugin::Registry& registry) {
                     .declare = [](FrameContext& ctx) {
                       const passes::ForwardTargets t{ctx.graph().createImage("hdr", {.format = graph::Format::RGBA16F}),
                                                      ctx.read("scene.depth")};
-                      publish(ctx, passes::addForwardOpaque(ctx.graph(), ctx.view(ctx.draws().forward), t));
+                      // The background follows the analytic sky's luminance (a sunlit sky is thousands of cd/m^2).
+                      const glm::vec3 background = glm::vec3(0.42f, 0.55f, 0.75f) * render::skyScale(ctx.inputs().scene.lights);
+                      publish(ctx, passes::addForwardOpaque(ctx.graph(), ctx.view(ctx.draws().forward), t, background));
                     }});
   registry.addPass({.name = "alpha-mask",
                     .description = "alpha-tested objects (only when a visible object has such a material)",
@@ -164,6 +177,28 @@ void registerForwardPackage(plugin::Registry& registry) {
                       ctx.write("scene.exposure",
                                 passes::addExposure(ctx, ctx.read("scene.hdr"), passes::exposureParams(ctx)));
                     }});
+  registry.addPass({.name = "bloom",
+                    .description = "light above white spread by a down/upsample pyramid (only when a visible object "
+                                   "emits at least 'threshold')",
+                    .reads = {plugin::kForwardDrawsResource, "scene.hdr", "scene.exposure"},
+                    .writes = {"scene.hdr"},
+                    .parameters = {{"threshold", double(passes::kBloomThreshold),
+                                    "emission (cd/m^2) of a visible object that calls for bloom"},
+                                   {"strength", 0.5, "how much of the light above white the halo carries"},
+                                   {"levels", double(passes::kBloomLevels), "halvings of the pyramid, 1 to 8"}},
+                    .declare = [](FrameContext& ctx) {
+                      const float threshold = ctx.parameter<float>("threshold");
+                      const float strength = ctx.parameter<float>("strength");
+                      const float levels = ctx.parameter<float>("levels");
+                      if (!(threshold >= 0.0f) || !(strength >= 0.0f && strength <= 100.0f) ||
+                          !(levels >= 1.0f && levels <= 8.0f) || levels != std::floor(levels))
+                        throw std::runtime_error("pass 'bloom': parameters 'threshold' >= 0, 'strength' 0 to 100, "
+                                                 "'levels' a whole number 1 to 8");
+                      if (!passes::bloomCalledFor(ctx.inputs().scene, ctx.gpuScene(), ctx.visibleDraws(), threshold))
+                        return;
+                      ctx.write("scene.hdr", passes::addBloom(ctx.graph(), ctx.read("scene.hdr"),
+                                                              ctx.read("scene.exposure"), strength, uint32_t(levels)));
+                    }});
   registry.addPass({.name = "tonemap",
                     .description = "HDR colour, exposed, to the 8-bit sRGB output",
                     .reads = {"scene.hdr", "scene.exposure", plugin::kOutputResource},
@@ -174,8 +209,9 @@ void registerForwardPackage(plugin::Registry& registry) {
                                                    ctx.read(plugin::kOutputResource), ctx.debugColors));
                     }});
   registry.addFrame({.name = "forward",
-                     .passes = {{.pass = "skinning"}, {.pass = "z-prepass"}, {.pass = "shadows"}, {.pass = "forward-opaque"}, {.pass = "alpha-mask"},
-                                {.pass = "alpha-blend"}, {.pass = "exposure"}, {.pass = "tonemap"}}});
+                     .passes = {{.pass = "skinning"}, {.pass = "z-prepass"}, {.pass = "shadows"}, {.pass = "environment"},
+                                {.pass = "forward-opaque"}, {.pass = "alpha-mask"}, {.pass = "alpha-blend"},
+                                {.pass = "exposure"}, {.pass = "bloom"}, {.pass = "tonemap"}}});
 }
 
 }  // namespace sg::plugins

@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_run.hpp"
+#include "procedural_hdr.hpp"
+#include "test_support.hpp"
 
 namespace {
 
@@ -54,12 +56,35 @@ TEST(FrameCli, PassesListsEveryRegisteredPassWithItsResourcesAndTheFrames) {
   EXPECT_EQ(passes["test-post"]["plugin"], "test-good");
   EXPECT_EQ(passes["tonemap"]["plugin"], "built-in");
   EXPECT_EQ(json["frames"]["forward"],
-            nlohmann::json({"skinning", "z-prepass", "shadows", "forward-opaque", "alpha-mask", "alpha-blend", "exposure",
-                            "tonemap"}));
+            nlohmann::json({"skinning", "z-prepass", "shadows", "environment", "forward-opaque", "alpha-mask", "alpha-blend", "exposure",
+                            "bloom", "tonemap"}));
   EXPECT_EQ(passes["skinning"]["writes"], nlohmann::json({"scene.vertices"}));
   const auto& plugged = json["frames"]["test-frame"];
   ASSERT_TRUE(plugged.is_array());
-  EXPECT_EQ(plugged[plugged.size() - 3], "test-post") << "before exposure: " << plugged.dump();
+  EXPECT_EQ(plugged[plugged.size() - 4], "test-post") << "before exposure: " << plugged.dump();
+}
+
+// A scene file naming an environment image: the compiled frame holds the
+// prefilter (graph --json shows the first frame), render writes the picture;
+// the same scene without it holds no environment pass.
+TEST(FrameCli, AnEnvironmentImageAddsThePrefilterOnlyWhenNamed) {
+  SG_REQUIRE_ASSETS();
+  sg::test::TempDir dir;
+  sg::test::writeProceduralSky(dir.path() / "sky.hdr", 64, 32);
+  const std::string model = sg::test::samplePath("EnvironmentTest").string();
+  const auto lit = dir.write("lit.json", R"({"objects": [{"gltf": ")" + model +
+                                             R"("}], "environment": {"image": "sky.hdr", "intensity": 2}})");
+  const auto plain = dir.write("plain.json", R"({"objects": [{"gltf": ")" + model + R"("}]})");
+  for (const char* mode : {"forward", "decoupled"}) {
+    const auto withEnv = keptPasses(lit.string() + " --mode " + mode);
+    EXPECT_TRUE(withEnv.count("environment-downsample") && withEnv.count("environment-prefilter")) << mode;
+    for (const auto& name : keptPasses(plain.string() + " --mode " + mode))
+      EXPECT_EQ(name.rfind("environment", 0), std::string::npos) << mode << ": " << name;
+  }
+  const auto out = dir.path() / "lit.png";
+  const auto r = run("render " + lit.string() + " --size 160x90 --frames 2 -o " + out.string());
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(out));
 }
 
 TEST(FrameCli, TheForwardFrameHoldsNoDecoupledPass) {
@@ -92,7 +117,7 @@ TEST(FrameCli, ABrokenFrameFailsWithOneLineNamingPassAndResource) {
   const Case cases[] = {
       {R"({"name": "f", "passes": ["z-prepass", "tonemap"]})",
        "pass 'tonemap' reads 'scene.hdr', which no pass of the frame writes"},
-      {R"({"name": "f", "base": "forward", "passes": ["bloom"]})", "unknown pass 'bloom'"},
+      {R"({"name": "f", "base": "forward", "passes": ["lens-flare"]})", "unknown pass 'lens-flare'"},
       {R"({"name": "f", "passes": ["z-prepass", "forward-opaque", "tonemap", "exposure"]})",
        "pass 'tonemap' reads 'scene.exposure', which only 'exposure' writes, after it"},
       {R"({"name": "f", "base": "forward", "passes": [{"pass": "test-post", "after": "tonemap", "before": "exposure"}]})",

@@ -107,6 +107,15 @@ std::filesystem::path writeHostile(const TempDir& dir, const std::string& name) 
     dir.write("triangle.gltf", document.dump());
     return dir.write(name, R"({"objects": [{"gltf": "triangle.gltf"}], "cameraPaths": [{"type": "orbit", "radius": 1e39}]})");
   }
+  // Environment images (a scene file's "environment"): missing, not Radiance, a bad format line, a huge claimed size.
+  if (name.rfind("hdr-", 0) == 0) {
+    dir.write("triangle.gltf", document.dump());
+    if (name == "hdr-not-radiance.json") dir.write("sky.hdr", std::string("P3\n1 1\n255\n0 0 0\n"));
+    if (name == "hdr-bad-format.json") dir.write("sky.hdr", std::string("#?RADIANCE\nFORMAT=32-bit_rle_xyze\n\n-Y 2 +X 4\n"));
+    if (name == "hdr-huge.json")
+      dir.write("sky.hdr", std::string("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 100000 +X 200000\n") + std::string(64, '\x01'));
+    return dir.write(name, R"({"objects": [{"gltf": "triangle.gltf"}], "environment": {"image": "sky.hdr"}})");
+  }
   if (name == "deep.json") return dir.write(name, "{\"objects\": " + std::string(16000, '[') + std::string(16000, ']') + "}");
   return dir.write(name, document.dump());
 }
@@ -124,6 +133,10 @@ const HostileFile kFiles[] = {
     {"translation-1e39.json", "/objects/0/translation/1: 1e+39 is outside the range of a 32-bit float"},
     {"orbit-1e39.json", "/cameraPaths/0/radius: 1e+39 is outside the range of a 32-bit float"},
     {"deep.json", "JSON nested deeper than 256 levels"},
+    {"hdr-missing.json", "sky.hdr: cannot open the environment image"},
+    {"hdr-not-radiance.json", "sky.hdr: not a Radiance .hdr image"},
+    {"hdr-bad-format.json", "sky.hdr: cannot read the Radiance header"},
+    {"hdr-huge.json", "sky.hdr: environment image is 200000x100000, expected 2 to 8192 pixels on a side"},
 };
 
 struct Case {

@@ -15,8 +15,10 @@
 #include <shadelgraph/graph/plan_dump.hpp>
 #include <shadelgraph/scene/procedural_meshes.hpp>
 
+#include "procedural_hdr.hpp"
 #include "stability_checks.hpp"
 #include "stability_scenes.hpp"
+#include "test_support.hpp"
 
 namespace sg::test {
 namespace {
@@ -24,9 +26,14 @@ namespace {
 using Names = std::set<std::string>;
 
 // Passes present only when the scene calls for them.
-const Names kEffectPasses = {"alpha-mask", "alpha-blend", "shadows"};
+const Names kEffectPasses = {"alpha-mask", "alpha-blend", "shadows", "environment-downsample", "environment-prefilter",
+                              "bloom"};
 // Graph resources that exist only for an effect (matched by name prefix).
-const Names kEffectResourcePrefixes = {"shadow"};
+const Names kEffectResourcePrefixes = {"shadow", "environment", "bloom", "hdr (bloom)"};
+const Names kPrefilterPasses = {"environment-downsample", "environment-prefilter"};
+const Names kEnvironmentMaps = {"environment brdf", "environment irradiance", "environment specular"};
+const Names kBloomResources = {"bloom level 1", "bloom level 2", "bloom level 3", "bloom level 4", "bloom level 5",
+                               "hdr (bloom)"};
 
 glm::mat4 at(float x, float y, float z) { return glm::translate(glm::mat4(1.0f), {x, y, z}); }
 
@@ -70,6 +77,31 @@ scene::Scene spotBehindTheCamera() {
   return s;
 }
 
+// Under the sun, lit by a procedural sky image too (environment light).
+scene::Scene environmentLit() {
+  auto s = baseSet();
+  s.lights.push_back(sun());
+  TempDir dir;
+  writeProceduralSky(dir.path() / "sky.hdr", 64, 32);
+  s.environment = scene::loadEnvironment(dir.path() / "sky.hdr", 1.0f);
+  return s;
+}
+
+// A box emitting `strength` cd/m^2 (white emissive factor) in view.
+scene::Scene glowing(float strength) {
+  auto s = baseSet();
+  s.lights.push_back(sun());
+  addObject(s, {.name = "glow", .metallicFactor = 0.0f, .emissiveFactor = glm::vec3(1.0f),
+                .emissiveStrength = strength},
+            at(1.2f, 0.25f, 0.5f));
+  return s;
+}
+
+Names with(Names a, const Names& b) {
+  a.insert(b.begin(), b.end());
+  return a;
+}
+
 struct Row {
   std::string name;
   std::function<scene::Scene()> scene;
@@ -85,16 +117,11 @@ std::vector<Row> matrix() {
        {"shadows"}, {"shadow atlas"}},
       {"UnshadowedSpot", [] { auto s = baseSet(); s.lights.push_back(spot(false)); return s; }, {}, {}, {}},
       {"ShadowedSpotReachingNothingVisible", spotBehindTheCamera, {}, {}, {}},
-      {"Emissive",
-       [] {
-         auto s = baseSet();
-         s.lights.push_back(sun());
-         addObject(s, {.name = "glow", .metallicFactor = 0.0f, .emissiveFactor = glm::vec3(1.0f),
-                       .emissiveStrength = 50.0f},
-                   at(1.2f, 0.25f, 0.5f));
-         return s;
-       },
-       {}, {}, {}},
+      // Bloom: a visible object emitting at least the bloom threshold (10 cd/m^2).
+      {"Emissive", [] { return glowing(50.0f); }, {"bloom"}, {"bloom"}, kBloomResources},
+      {"DimEmissive", [] { return glowing(5.0f); }, {}, {}, {}},
+      // Environment light: the first frame prefilters the image into the three maps.
+      {"Environment", environmentLit, kPrefilterPasses, kPrefilterPasses, with(kEnvironmentMaps, {"environment image"})},
       {"AlphaBlend",
        [] {
          auto s = baseSet();
@@ -162,6 +189,19 @@ TEST_P(EffectMatrix, TheFrameHoldsExactlyTheEffectsTheSceneCallsFor) {
   EXPECT_EQ(got.passes, expected) << "got " << joined(got.passes) << ", expected " << joined(expected);
   EXPECT_EQ(got.resources, c.row.resources)
       << "got " << joined(got.resources) << ", expected " << joined(c.row.resources);
+}
+
+// The prefilter is one-time: after a frame has run it, the next frames hold
+// the maps (persistent) and no prefilter pass or image upload.
+TEST(EffectMatrixEnvironment, ThePrefilterRunsInTheFirstFrameOnly) {
+  for (auto mode : {scene::ShadingMode::Forward, scene::ShadingMode::Decoupled}) {
+    const char* what = mode == scene::ShadingMode::Forward ? "forward" : "decoupled";
+    StabilitySession session(environmentLit(), mode);
+    session.render(96, 64);
+    const Effects got = effectsOf(nlohmann::json::parse(graph::toJson(session.plan(96, 64))));
+    EXPECT_EQ(got.passes, Names{}) << what << ": got " << joined(got.passes);
+    EXPECT_EQ(got.resources, kEnvironmentMaps) << what << ": got " << joined(got.resources);
+  }
 }
 
 std::vector<Case> cases() {

@@ -12,6 +12,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <nlohmann/json.hpp>
+
+#include <shadelgraph/graph/plan_dump.hpp>
 #include <shadelgraph/scene/procedural_meshes.hpp>
 
 #include "stability_checks.hpp"
@@ -47,12 +50,13 @@ scene::Scene sunlitStudio() {
   return s;
 }
 
-// Looking down: only the scene in view. The analytic sky (the clear colour and
-// the ambient term) is not in physical units yet, so a view with sky in it
-// meters lower (environment light is future work).
+// Looking down: only the scene in view (the analytic sky, ambient term and
+// background, follows the sun in cd/m^2, but is no surface to meter).
 const scene::Camera kWide = cameraAt({0.0f, 4.0f, 3.5f}, {0.0f, 0.0f, 0.0f});
-// Filled by the glowing box: metered far brighter than the wide view.
+// Filled by the glowing box.
 const scene::Camera kAtTheGlow = cameraAt({1.6f, 0.4f, 1.2f}, {1.6f, 0.3f, 0.4f});
+// Filled by the unlit sign (0.29 cd/m^2): metered some 14 EV below the sunlit wide view.
+const scene::Camera kAtTheSign = cameraAt({-1.6f, 0.4f, 1.3f}, {-1.6f, 0.4f, 0.4f});
 
 // Pixels whose HDR colour is the unlit base colour (lit surfaces here are thousands of times brighter).
 size_t unlitPixels(const std::vector<glm::vec4>& hdr) {
@@ -89,22 +93,23 @@ TEST(PhysicalExposure, SunOf100000LuxAndEmissive1e4StayFiniteAndAreMetered) {
   expectAgreement(both.decoupled, both.forward, {}, "100,000 lux: decoupled vs forward");
 }
 
-// Frames 1.. after a cut from a view metered far brighter: the EV100 moves to
-// the new metering monotonically, each frame closing `adaptation` of the gap.
+// Frames 1.. after a cut from a view metered far brighter (the sunlit wide
+// view to the unlit sign filling the frame): the EV100 moves to the new
+// metering monotonically, each frame closing `adaptation` of the gap.
 TEST(PhysicalExposure, AutoExposureSettlesWithoutOscillating) {
   for (auto mode : {scene::ShadingMode::Forward, scene::ShadingMode::Decoupled}) {
     const char* what = mode == scene::ShadingMode::Forward ? "forward" : "decoupled";
     StabilitySession session(sunlitStudio(), mode, {}, {{"adaptation", 0.4}});
-    const StabilityFrame glare = session.render(kSize, kAtTheGlow);
+    const StabilityFrame glare = session.render(kSize, kWide);
     EXPECT_EQ(glare.exposure.ev100, glare.exposure.targetEv100) << what << ": the first frame has no history";
     std::vector<float> ev, target;
     for (int i = 0; i < 16; ++i) {
-      const StabilityFrame f = session.render(kSize, kWide);
+      const StabilityFrame f = session.render(kSize, kAtTheSign);
       expectFinite(f, what);
       ev.push_back(f.exposure.ev100);
       target.push_back(f.exposure.targetEv100);
     }
-    std::printf("%s: metered %.2f at the glow, %.2f wide; EV100 after the cut:", what, double(glare.exposure.ev100),
+    std::printf("%s: metered %.2f wide, %.2f at the sign; EV100 after the cut:", what, double(glare.exposure.ev100),
                 double(target[0]));
     for (float v : ev) std::printf(" %.2f", double(v));
     std::printf("\n");
@@ -118,6 +123,35 @@ TEST(PhysicalExposure, AutoExposureSettlesWithoutOscillating) {
       EXPECT_NEAR(ev[i] - target[i], 0.6f * (before - target[i]), 1e-3f) << what << " frame " << i;
     }
     EXPECT_NEAR(ev.back(), target.back(), 0.01f) << what << ": settled";
+  }
+}
+
+// The same hard case with bloom, which the 1e4 emission calls for (at least
+// 10 cd/m^2, passes/bloom): the HDR colour tonemap reads, after bloom, has no
+// Inf/NaN in any frame, and auto exposure still settles after a cut without
+// oscillating (bloom runs after the metering, so it cannot feed back into it).
+TEST(PhysicalExposure, WithBloomStaysFiniteAndSettles) {
+  for (auto mode : {scene::ShadingMode::Forward, scene::ShadingMode::Decoupled}) {
+    const char* what = mode == scene::ShadingMode::Forward ? "forward, bloom" : "decoupled, bloom";
+    StabilitySession session(sunlitStudio(), mode, {}, {{"adaptation", 0.4}}, kHdrFinalCapturedFrame);
+    const auto plan = nlohmann::json::parse(graph::toJson(session.plan(kSize, kSize, kAtTheGlow)));
+    bool bloom = false;
+    for (const auto& p : plan["passes"]) bloom |= p["name"] == "bloom" && !p["culled"].get<bool>();
+    ASSERT_TRUE(bloom) << what << ": the 1e4 emission calls for bloom";
+    const StabilityFrame glare = session.render(kSize, kAtTheGlow);
+    expectFinite(glare, what);
+    float before = glare.exposure.ev100, maxValue = summarize(glare.hdr).maxValue;
+    for (int i = 0; i < 12; ++i) {
+      const StabilityFrame f = session.render(kSize, kWide);
+      expectFinite(f, what);
+      maxValue = std::max(maxValue, summarize(f.hdr).maxValue);
+      EXPECT_GE(f.exposure.ev100, f.exposure.targetEv100 - 1e-4f) << what << " frame " << i << ": overshoot";
+      EXPECT_LE(f.exposure.ev100, before + 1e-4f) << what << " frame " << i << ": moved away from the metering";
+      before = f.exposure.ev100;
+      if (i == 11) EXPECT_NEAR(f.exposure.ev100, f.exposure.targetEv100, 0.05f) << what << ": settled";
+    }
+    std::printf("%s: EV100 %.2f at the glow, %.2f after 12 frames wide; HDR max after bloom %.0f\n", what,
+                double(glare.exposure.ev100), double(before), double(maxValue));
   }
 }
 

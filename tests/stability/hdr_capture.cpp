@@ -62,6 +62,12 @@ void HdrCapture::registerIn(plugin::Registry& registry, const nlohmann::json& ex
                                 {.pass = "exposure-capture", .after = {"exposure"}, .before = {"tonemap"}}},
                      .parameters = exposure.is_object() ? std::map<std::string, nlohmann::json>{{"exposure", exposure}}
                                                         : std::map<std::string, nlohmann::json>{}});
+  registry.addFrame({.name = kHdrFinalCapturedFrame,
+                     .base = "decoupled",
+                     .passes = {{.pass = "hdr-capture", .after = {"bloom"}, .before = {"tonemap"}},
+                                {.pass = "exposure-capture", .after = {"exposure"}, .before = {"tonemap"}}},
+                     .parameters = exposure.is_object() ? std::map<std::string, nlohmann::json>{{"exposure", exposure}}
+                                                        : std::map<std::string, nlohmann::json>{}});
 }
 
 shader::SgExposure HdrCapture::exposure() const {

@@ -22,10 +22,12 @@ class PassContext;
 namespace sg::test {
 
 inline constexpr const char* kHdrCapturedFrame = "hdr-captured";
+// The same, with the HDR colour captured last before tonemap: after bloom when the frame has it.
+inline constexpr const char* kHdrFinalCapturedFrame = "hdr-final-captured";
 
 class HdrCapture {
  public:
-  // Adds the capture passes and kHdrCapturedFrame to `registry` (with `exposure` as the exposure
+  // Adds the capture passes, kHdrCapturedFrame and kHdrFinalCapturedFrame to `registry` (with `exposure` as the exposure
   // pass's parameters when it is an object); the device is the one the frames run on.
   void registerIn(plugin::Registry& registry, const nlohmann::json& exposure = nullptr);
   void setDevice(gpu::Device& device) { device_ = &device; }

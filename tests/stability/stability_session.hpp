@@ -28,15 +28,16 @@ struct StabilityFrame {
 class StabilitySession {
  public:
   // `exposure`: the exposure pass's parameters, when an object (e.g. {"adaptation": 0.5}).
+  // `frame`: kHdrCapturedFrame (HDR before exposure) or kHdrFinalCapturedFrame (last before tonemap).
   StabilitySession(scene::Scene s, scene::ShadingMode mode, plugins::DecoupledSettings settings = {},
-                   const nlohmann::json& exposure = nullptr)
+                   const nlohmann::json& exposure = nullptr, const char* frame = kHdrCapturedFrame)
       : scene_(std::move(s)), context_(validatedOptions()) {
     plugins::registerBuiltins(registry_);
     capture_.registerIn(registry_, exposure);
     device_ = std::make_unique<gpu::Device>(context_);
     device_->shaders().add(gpu::builtinShaders());
     capture_.setDevice(*device_);
-    auto made = plugins::makeDecoupledRenderer(*device_, scene_, registry_, mode, settings, kHdrCapturedFrame);
+    auto made = plugins::makeDecoupledRenderer(*device_, scene_, registry_, mode, settings, frame);
     shading_ = std::move(made.shading);
     renderer_ = std::move(made.renderer);
   }

@@ -7,6 +7,8 @@
 //     binding 0) and sgScreenUv(worldPosition) (framework/render/shaders/frame.glsl);
 //   - sgLightAt(frame.lights[i], position): direction to a light and the
 //     radiance it delivers there; SG_PI (lights.glsl);
+//   - sgEnvironmentDiffuse / sgEnvironmentSpecular / sgEnvironmentBrdf: the
+//     scene's environment light when frame.environment.x > 0 (environment.glsl);
 //   - material, materialHas, materialSample(texture, slot, s): the object's
 //     scene material (glTF constants and textures, set 1) sampled with the
 //     surface's derivatives (scene_material.glsl).
@@ -19,6 +21,7 @@
 #include <framework/render/shaders/frame.glsl>
 #include <framework/plugin/shaders/surface.glsl>
 #include <framework/plugin/shaders/lights.glsl>
+#include <framework/plugin/shaders/environment.glsl>
 #include <framework/plugin/shaders/scene_material.glsl>
 
 #endif

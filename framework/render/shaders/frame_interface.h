@@ -15,6 +15,10 @@ SG_CONST uint kLightPoint = 1u;
 SG_CONST uint kLightSpot = 2u;
 SG_CONST uint kMaxLights = 8u;
 SG_CONST uint kBindShadowMaps = 40u;  // set 0 of material shaders: the shadow atlas (depth, sampled)
+// Set 0 of material shaders: the environment light's prefiltered maps (passes/environment), sampled.
+SG_CONST uint kBindEnvironmentIrradiance = 41u;  // cosine-convolved radiance, equirectangular
+SG_CONST uint kBindEnvironmentSpecular = 42u;    // GGX-prefiltered radiance, one level per roughness step, stacked
+SG_CONST uint kBindEnvironmentBrdf = 43u;        // the split-sum BRDF scale and bias by (N.V, roughness)
 
 struct Light {
   vec4 positionType;    // xyz world position, w = type
@@ -33,6 +37,7 @@ struct SgFrameUniforms {
   uvec4 counts;      // x = light count, y = output width, z = output height
   Light lights[kMaxLights];
   vec4 shadowAtlas;  // x = maps side by side in the atlas, y = texels per map side
+  vec4 environment;  // x = 1: image-based lighting from the prefiltered maps (0: the analytic sky), y = intensity (cd/m^2 per unit)
 };
 
 // Push constants of a scene draw (render::drawItem).

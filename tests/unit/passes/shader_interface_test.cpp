@@ -17,7 +17,9 @@
 
 #include <builtin_materials.hpp>
 #include <builtin_shaders.hpp>
+#include <bloom/bloom.hpp>
 #include <composite/composite.hpp>
+#include <environment/environment.hpp>
 #include <debug-views/debug_views.hpp>
 #include <exposure/exposure.hpp>
 #include <exposure/exposure_interface.h>
@@ -128,6 +130,8 @@ const std::map<std::string, size_t> kSharedRecords = {
     {"SgOccupancyPush", sizeof(shader::SgOccupancyPush)},
     {"SgExposure", sizeof(shader::SgExposure)},
     {"SgExposureParams", sizeof(shader::SgExposureParams)},
+    {"SgEnvironmentPush", sizeof(shader::SgEnvironmentPush)},
+    {"SgBloomPush", sizeof(shader::SgBloomPush)},
 };
 
 const char* typeName(VkDescriptorType type) {
@@ -227,6 +231,8 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   errors += mismatches("exposure", passes::exposurePipeline());
   errors += mismatches("shadows", passes::shadowMapPipeline());
   errors += mismatches("skinning", passes::skinningPipeline());
+  errors += mismatches("environment-prefilter", passes::environmentPrefilterPipeline());
+  errors += mismatches("bloom", passes::bloomPipeline());
   errors += mismatches("hi-z", passes::hiZPipeline());
   errors += mismatches("occlusion-cull", passes::occlusionCullPipeline());
   for (bool passthrough : {false, true})
