@@ -17,6 +17,7 @@
 #include <shadelgraph/graph/render_graph.hpp>
 #include <shadelgraph/plugin/frame_description.hpp>
 #include <shadelgraph/render/scene_view.hpp>
+#include <shadelgraph/render/shadow_views.hpp>
 #include <shadelgraph/scene/scene.hpp>
 
 namespace sg::render {
@@ -36,6 +37,8 @@ struct FrameInputs {
   uint32_t width = 0, height = 0;
   // Occlusion culling's per-renderer state; null when the frame is not to be occlusion-culled.
   DrawCulling* culling = nullptr;
+  // This frame's shadow maps (the frame uniforms hold their matrices and slots); empty: no shadows.
+  std::span<const ShadowView> shadowViews;
 };
 
 // Indices into GpuScene::draws() of the draws inside the view frustum. All
