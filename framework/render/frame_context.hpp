@@ -17,6 +17,7 @@
 #include <shadelgraph/graph/render_graph.hpp>
 #include <shadelgraph/plugin/frame_description.hpp>
 #include <shadelgraph/render/scene_view.hpp>
+#include <shadelgraph/render/shadow_views.hpp>
 #include <shadelgraph/scene/scene.hpp>
 
 namespace sg::render {
@@ -38,6 +39,8 @@ struct FrameInputs {
   DrawCulling* culling = nullptr;
   // This frame's joint matrices and morph weights; null when the scene has no skinned or morphed object.
   const DeformationFrame* deformation = nullptr;
+  // This frame's shadow maps (the frame uniforms hold their matrices and slots); empty: no shadows.
+  std::span<const ShadowView> shadowViews;
 };
 
 // Indices into GpuScene::draws() of the draws inside the view frustum. All

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <shadelgraph/render/shadow_views.hpp>
 
 namespace sg::render {
 
@@ -22,7 +21,7 @@ float skyScale(std::span<const scene::Light> lights) {
 glm::vec3 skyLuminance(std::span<const scene::Light> lights) { return kDimSky * skyScale(lights); }
 
 FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& camera, uint32_t width,
-                                uint32_t height, std::span<const glm::vec4> drawSpheres) {
+                                uint32_t height, std::span<const ShadowView> shadows) {
   FrameUniforms f{};
   f.view = camera.view();
   f.projection = camera.projectionMatrix(float(width) / float(height));
@@ -33,7 +32,8 @@ FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& 
   if (scene.environment.present()) f.environment = glm::vec4(1.0f, scene.environment.intensity, 0.0f, 0.0f);
   if (lights.empty())
     lights.push_back({.name = "default sun", .type = scene::LightType::Directional, .color = glm::vec3(1.0f),
-                      .intensity = 3.0f, .direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.5f))});
+                      .intensity = 3.0f, .direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.5f)),
+                      .shadows = false});
   const auto count = std::min<size_t>(lights.size(), kMaxLights);
   for (size_t i = 0; i < count; ++i) {
     const auto& l = lights[i];
@@ -45,12 +45,18 @@ FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& 
     g.cone = glm::vec4(cosOuter, 1.0f / std::max(cosInner - cosOuter, 1e-4f), 0.0f, 0.0f);
   }
   f.counts = glm::uvec4(uint32_t(count), width, height, 0u);
-  const auto views = shadowViews(std::span(lights).first(count), drawSpheres, kMaxLights);
-  for (const ShadowView& v : views) {
-    f.lights[v.light].cone.z = float(v.slot + 1);
-    f.lights[v.light].shadowMatrix = v.viewProjection;
+  for (const ShadowView& v : shadows) {
+    if (v.light >= count) continue;
+    GpuLight& g = f.lights[v.light];
+    if (v.face == 0) {
+      g.cone.z = float(v.slot + 1);
+      g.shadowMatrix = v.viewProjection;
+    }
+    if (v.face < kShadowCascades) g.cascadeEnds[int(v.face)] = v.cascadeEnd;
+    f.shadowMatrices[v.slot] = v.viewProjection;
   }
-  f.shadowAtlas = glm::vec4(float(views.size()), float(kShadowMapResolution), 0.0f, 0.0f);
+  f.shadowAtlas = glm::vec4(float(shadows.size()), float(kShadowMapResolution),
+                            float(shadowAtlasMaps(uint32_t(shadows.size())).x), 0.0f);
   return f;
 }
 

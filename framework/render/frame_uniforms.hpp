@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 #include <shadelgraph/render/shaders/frame_interface.h>
+#include <shadelgraph/render/shadow_views.hpp>
 
 #include <shadelgraph/scene/scene.hpp>
 
@@ -24,9 +25,10 @@ glm::vec3 skyLuminance(std::span<const scene::Light> lights);
 float skyScale(std::span<const scene::Light> lights);
 
 // A scene without lights gets a default sun so it is never black. Lights past
-// kMaxLights are dropped. Shadowed lights get their shadow map's slot and
-// matrix (render::shadowViews, fitted to `drawSpheres`, every draw's world bounding sphere).
+// kMaxLights are dropped (the default sun casts no shadow). Shadowed lights
+// get their maps' slots, matrices and cascade ends from `shadows`
+// (render::shadowViews of the scene's lights, computed once per frame).
 FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& camera, uint32_t width,
-                                uint32_t height, std::span<const glm::vec4> drawSpheres = {});
+                                uint32_t height, std::span<const ShadowView> shadows = {});
 
 }  // namespace sg::render

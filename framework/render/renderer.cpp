@@ -1,5 +1,7 @@
 #include <shadelgraph/render/renderer.hpp>
 
+#include <algorithm>
+
 #include <shadelgraph/gpu/error.hpp>
 #include <shadelgraph/render/frame_uniforms.hpp>
 #include <shadelgraph/render/frustum.hpp>
@@ -29,6 +31,7 @@ struct Renderer::Frame {
   std::optional<FrameContext> context;
   graph::ResourceHandle output;
   std::optional<DeformationFrame> deformation;
+  std::vector<ShadowView> shadows;  // inputs.shadowViews
 };
 
 Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, const plugin::Registry& registry,
@@ -119,7 +122,11 @@ scene::Camera Renderer::camera(const RenderSettings& settings) const {
 
 std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& settings) {
   const scene::Camera cam = camera(settings);
-  const FrameUniforms uniforms = makeFrameUniforms(scene_, cam, settings.width, settings.height, drawSpheres_);
+  const float aspect = float(settings.width) / float(settings.height);
+  const auto lights = std::span(scene_.lights).first(std::min<size_t>(scene_.lights.size(), kMaxLights));
+  std::vector<ShadowView> shadows =
+      shadowViews(lights, drawSpheres_, {cam.view(), cam.projectionMatrix(aspect), cam.znear, cam.zfar});
+  const FrameUniforms uniforms = makeFrameUniforms(scene_, cam, settings.width, settings.height, shadows);
   const auto slot = uint32_t(frameNumber_ % 2);
   gpu::Buffer& uniformBuffer = frameUniforms_[slot];
   uniformBuffer.write(&uniforms, sizeof uniforms);
@@ -139,7 +146,8 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
       {gpuScene_, uniformBuffer, gpuScene_.allDraws(), registry_, layerTextures_},
       {scene_, device_, executor_, modes_, drawSpheres_, frameNumber_++, cam.position(), focal, uniforms.viewProjection,
        settings.width, settings.height, settings.occlusionCulling ? &culling_ : nullptr},
-      {}, {}, {}});
+      {}, {}, {}, std::move(shadows)});
+  frame->inputs.shadowViews = frame->shadows;
   frame->output = frame->graph.importImage(
       "output", {.format = graph::Format::RGBA8Srgb, .size = graph::Size::absolute(settings.width, settings.height)},
       graph::ImportedState{graph::Layout::Undefined},

@@ -6,7 +6,7 @@
 namespace sg::passes {
 namespace {
 
-// The push constants of shadow_map.vert: the object's, then the light's index.
+// The push constants of shadow_map.vert: the object's, then the map's slot.
 constexpr uint32_t kLightPushOffset = sizeof(render::ObjectConstants);
 constexpr uint32_t kSide = render::kShadowMapResolution;
 
@@ -25,8 +25,9 @@ gpu::GraphicsPipelineDesc shadowMapPipeline() {
 
 graph::ResourceHandle addShadowMaps(graph::RenderGraph& graph, const render::SceneView& view,
                                     std::vector<ShadowMapDraws> maps, uint32_t slots) {
-  auto atlas = graph.createImage("shadow atlas",
-                                 {.format = graph::Format::D32F, .size = graph::Size::absolute(slots * kSide, kSide)});
+  const glm::uvec2 grid = render::shadowAtlasMaps(slots);
+  auto atlas = graph.createImage(
+      "shadow atlas", {.format = graph::Format::D32F, .size = graph::Size::absolute(grid.x * kSide, grid.y * kSide)});
   auto& pass = graph.addPass("shadows", graph::QueueClass::Graphics);
   atlas = pass.write(atlas, graph::Access::DepthAttachment);
   render::readSceneGeometry(pass, view);
@@ -37,13 +38,14 @@ graph::ResourceHandle addShadowMaps(graph::RenderGraph& graph, const render::Sce
     view.scene.bindGeometry(ctx.cmd());
     const auto& draws = view.scene.draws();
     for (const ShadowMapDraws& map : maps) {
-      // The map's column, +Y up like the scene passes (negative height).
-      const VkViewport viewport{float(map.slot * kSide), float(kSide), float(kSide), -float(kSide), 0.0f, 1.0f};
-      const VkRect2D scissor{{int32_t(map.slot * kSide), 0}, {kSide, kSide}};
+      // The map's square of the atlas, +Y up like the scene passes (negative height).
+      const uint32_t x = map.slot % render::kShadowAtlasColumns * kSide, y = map.slot / render::kShadowAtlasColumns * kSide;
+      const VkViewport viewport{float(x), float(y + kSide), float(kSide), -float(kSide), 0.0f, 1.0f};
+      const VkRect2D scissor{{int32_t(x), int32_t(y)}, {kSide, kSide}};
       vkCmdSetViewport(ctx.cmd(), 0, 1, &viewport);
       vkCmdSetScissor(ctx.cmd(), 0, 1, &scissor);
-      vkCmdPushConstants(ctx.cmd(), pipeline.layout(), VK_SHADER_STAGE_ALL, kLightPushOffset, sizeof map.light,
-                         &map.light);
+      vkCmdPushConstants(ctx.cmd(), pipeline.layout(), VK_SHADER_STAGE_ALL, kLightPushOffset, sizeof map.slot,
+                         &map.slot);
       for (uint32_t d : map.casters) render::drawItem(ctx.cmd(), pipeline, draws[d], d);
     }
     ctx.endRendering();

@@ -200,6 +200,49 @@ void DecoupledShading::selectFrameObjects(render::FrameContext& ctx) {
   ctx.draws().decoupled = frameObjects_;
 }
 
+void DecoupledShading::markShadowChanges(const render::FrameContext& ctx) {
+  const auto& in = ctx.inputs();
+  const auto& draws = ctx.gpuScene().draws();
+  const auto& lights = in.scene.lights;
+  std::vector<bool> shadowed(lights.size(), false);
+  for (const render::ShadowView& v : in.shadowViews) shadowed[v.light] = true;
+  const bool first = lastWorlds_.size() != draws.size() || lastShadowed_.size() != lights.size();
+  // Per moved caster and light: where its shadow was and is (spheres).
+  struct MovedCaster {
+    uint32_t light;
+    glm::vec4 was, is;
+  };
+  std::vector<MovedCaster> moved;
+  std::vector<bool> lightChanged(lights.size(), false);
+  if (!first) {
+    for (uint32_t l = 0; l < lights.size(); ++l) lightChanged[l] = shadowed[l] != lastShadowed_[l];
+    for (uint32_t d = 0; d < draws.size(); ++d) {
+      if (draws[d].world == lastWorlds_[d]) continue;
+      for (uint32_t l = 0; l < lights.size(); ++l)
+        if (shadowed[l] && (render::lightReaches(lights[l], in.drawSpheres[d]) || render::lightReaches(lights[l], lastSpheres_[d])))
+          moved.push_back({l, lastSpheres_[d], in.drawSpheres[d]});
+    }
+  }
+  for (uint32_t d = 0; d < slots_.size(); ++d) {
+    ObjectSlot& slot = slots_[d];
+    if (!slot.allocated || slot.changedFrame == frames_) continue;
+    const glm::vec4& receiver = in.drawSpheres[d];
+    bool changed = false;
+    for (uint32_t l = 0; l < lights.size() && !changed; ++l)
+      changed = lightChanged[l] && render::lightReaches(lights[l], receiver);
+    for (const MovedCaster& m : moved) {
+      if (changed) break;
+      changed = render::shadowMayFallOn(lights[m.light], m.was, receiver) ||
+                render::shadowMayFallOn(lights[m.light], m.is, receiver);
+    }
+    if (changed) slot.changedFrame = frames_;
+  }
+  lastWorlds_.clear();
+  for (const auto& draw : draws) lastWorlds_.push_back(draw.world);
+  lastSpheres_.assign(in.drawSpheres.begin(), in.drawSpheres.end());
+  lastShadowed_ = std::move(shadowed);
+}
+
 void DecoupledShading::chooseReuse(bool historyValid, const plugin::Registry& materials) {
   reuseAny_ = false;
   for (auto& slot : slots_) {
@@ -246,6 +289,7 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
   shadeFrames_ += shadeFrame_ ? 1 : 0;
   if (!space_) createTables(in.device);
   syncObjects(ctx);
+  markShadowChanges(ctx);
   if (tablesDirty_) {
     in.executor.finish();  // a frame still in flight may read the tables
     uploadTables(in.device);

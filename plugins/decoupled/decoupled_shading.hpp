@@ -150,6 +150,11 @@ class DecoupledShading {
   // writes every record to the GPU.
   // Also which view-independent layers each object keeps (layer_rate.hpp).
   void chooseReuse(bool historyValid, const plugin::Registry& materials);
+  // A stored shadel holds its shadows: an object is treated as changed this
+  // frame when a shadowed light that reaches it got or lost its maps, or when
+  // a caster of such a light moved and its shadow (where it was or where it
+  // is) may fall on the object.
+  void markShadowChanges(const render::FrameContext& ctx);
 
   std::vector<ShadingChoice> choices_;
   DecoupledSettings settings_;
@@ -179,6 +184,9 @@ class DecoupledShading {
     bool reshadedWhole = false;
   };
   std::vector<ObjectSlot> slots_;
+  std::vector<glm::mat4> lastWorlds_;    // per draw: its world matrix last frame (markShadowChanges)
+  std::vector<glm::vec4> lastSpheres_;   // per draw: its bounding sphere last frame
+  std::vector<bool> lastShadowed_;       // per light: it had shadow maps last frame
   uint32_t allocatedObjects_ = 0;
   std::vector<uint32_t> identity_;  // draw index -> object index (the same)
   std::map<int, std::pair<shadel::DetailLevels, uint32_t>> idMaps_;  // by mesh: its levels and ID-map offset

@@ -61,27 +61,23 @@ void publish(FrameContext& ctx, const passes::ForwardTargets& t) {
   ctx.write("scene.depth", t.depth);
 }
 
-// A map for each shadowed light that reaches a visible draw, holding every
-// draw it reaches (casters may be off screen); none: no pass, no atlas.
+// The frame's shadow maps (render::shadowViews: shadowed lights that reach a
+// visible draw), each holding the draws inside its view that its light reaches
+// (casters may be off screen); none: no pass, no atlas.
 void declareShadows(FrameContext& ctx) {
   const auto& in = ctx.inputs();
-  const auto lights = std::span(in.scene.lights).first(std::min<size_t>(in.scene.lights.size(), render::kMaxLights));
-  const auto views = render::shadowViews(lights, in.drawSpheres, render::kMaxLights);  // as the frame uniforms
-  const auto visible = ctx.visibleDraws();
+  if (in.shadowViews.empty()) return;
   const auto& draws = ctx.gpuScene().draws();
   std::vector<passes::ShadowMapDraws> maps;
-  for (const render::ShadowView& v : views) {
-    const scene::Light& light = lights[v.light];
-    const auto reaches = [&](uint32_t d) { return render::lightReaches(light, in.drawSpheres[d]); };
-    if (std::none_of(visible.begin(), visible.end(), reaches)) continue;
-    passes::ShadowMapDraws map{v.light, v.slot, {}};
+  for (const render::ShadowView& v : in.shadowViews) {
+    passes::ShadowMapDraws map{v.slot, {}};
     for (uint32_t d = 0; d < draws.size(); ++d)
-      if (draws[d].alphaMode != scene::AlphaMode::Blend && reaches(d)) map.casters.push_back(d);
+      if (draws[d].alphaMode != scene::AlphaMode::Blend && render::castsInto(v, in.scene.lights[v.light], in.drawSpheres[d]))
+        map.casters.push_back(d);
     maps.push_back(std::move(map));
   }
-  if (maps.empty()) return;
   ctx.write(render::kShadowMapsResource, passes::addShadowMaps(ctx.graph(), ctx.view(ctx.gpuScene().allDraws()),
-                                                               std::move(maps), uint32_t(views.size())));
+                                                               std::move(maps), uint32_t(in.shadowViews.size())));
 }
 
 // Deforms the skinned and morphed objects when one of them is visible (all
@@ -120,7 +116,7 @@ void registerForwardPackage(plugin::Registry& registry) {
                                 passes::addZPrepass(ctx.graph(), ctx.view(ctx.visibleDraws()), depthTarget(ctx)));
                     }});
   registry.addPass({.name = "shadows",
-                    .description = "shadow maps of the shadowed spot lights that reach a visible object (only then)",
+                    .description = "shadow maps (spot: one, point: six cube faces, directional: cascades) of the shadowed lights that reach a visible object (only then)",
                     .reads = {plugin::kForwardDrawsResource},
                     .writes = {render::kShadowMapsResource},
                     .declare = declareShadows});

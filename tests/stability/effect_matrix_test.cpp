@@ -53,9 +53,14 @@ scene::Scene baseSet() {
   return s;
 }
 
-scene::Light sun() {
+scene::Light sun(bool shadows) {
   return {.name = "sun", .type = scene::LightType::Directional, .intensity = 3.0f,
-          .direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.4f))};
+          .direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.4f)), .shadows = shadows};
+}
+
+scene::Light bulb(bool shadows, glm::vec3 position = {0.8f, 2.0f, 0.5f}, float range = 0.0f) {
+  return {.name = "bulb", .type = scene::LightType::Point, .intensity = 20.0f, .range = range,
+          .position = position, .shadows = shadows};
 }
 
 scene::Light spot(bool shadows) {
@@ -67,7 +72,7 @@ scene::Light spot(bool shadows) {
 // A shadowed spot lighting a box far behind the camera: it reaches no visible object.
 scene::Scene spotBehindTheCamera() {
   auto s = baseSet();
-  s.lights.push_back(sun());
+  s.lights.push_back(sun(false));
   addObject(s, {.name = "far box", .metallicFactor = 0.0f}, at(0.0f, 0.25f, 30.0f));
   scene::Light l = spot(true);
   l.position = {0.0f, 3.0f, 30.0f};
@@ -80,7 +85,7 @@ scene::Scene spotBehindTheCamera() {
 // Under the sun, lit by a procedural sky image too (environment light).
 scene::Scene environmentLit() {
   auto s = baseSet();
-  s.lights.push_back(sun());
+  s.lights.push_back(sun(false));
   TempDir dir;
   writeProceduralSky(dir.path() / "sky.hdr", 64, 32);
   s.environment = scene::loadEnvironment(dir.path() / "sky.hdr", 1.0f);
@@ -90,7 +95,7 @@ scene::Scene environmentLit() {
 // A box emitting `strength` cd/m^2 (white emissive factor) in view.
 scene::Scene glowing(float strength) {
   auto s = baseSet();
-  s.lights.push_back(sun());
+  s.lights.push_back(sun(false));
   addObject(s, {.name = "glow", .metallicFactor = 0.0f, .emissiveFactor = glm::vec3(1.0f),
                 .emissiveStrength = strength},
             at(1.2f, 0.25f, 0.5f));
@@ -107,14 +112,29 @@ struct Row {
   std::function<scene::Scene()> scene;
   Names forwardPasses, decoupledPasses;  // the effect passes each path holds
   Names resources;                        // effect resources (both paths)
+  std::string atlas = "";                 // the shadow atlas's size, when there is one: maps of 1024² 4 a row
 };
 
 std::vector<Row> matrix() {
   return {
       {"NoLights", [] { return baseSet(); }, {}, {}, {}},
-      {"Sun", [] { auto s = baseSet(); s.lights.push_back(sun()); return s; }, {}, {}, {}},
+      {"ShadowedSun", [] { auto s = baseSet(); s.lights.push_back(sun(true)); return s; }, {"shadows"}, {"shadows"},
+       {"shadow atlas"}, "4096x1024"},  // its 4 cascades
+      {"UnshadowedSun", [] { auto s = baseSet(); s.lights.push_back(sun(false)); return s; }, {}, {}, {}},
       {"ShadowedSpot", [] { auto s = baseSet(); s.lights.push_back(spot(true)); return s; }, {"shadows"},
-       {"shadows"}, {"shadow atlas"}},
+       {"shadows"}, {"shadow atlas"}, "1024x1024"},
+      {"ShadowedPoint", [] { auto s = baseSet(); s.lights.push_back(bulb(true)); return s; }, {"shadows"},
+       {"shadows"}, {"shadow atlas"}, "4096x2048"},  // its 6 cube faces
+      {"UnshadowedPoint", [] { auto s = baseSet(); s.lights.push_back(bulb(false)); return s; }, {}, {}, {}},
+      {"ShadowedPointReachingNothingVisible",
+       [] { auto s = baseSet(); s.lights.push_back(bulb(true, {0.0f, 2.0f, 30.0f}, 5.0f)); return s; }, {}, {}, {}},
+      {"SunSpotAndPoint",
+       [] {
+         auto s = baseSet();
+         s.lights = {sun(true), spot(true), bulb(true)};
+         return s;
+       },
+       {"shadows"}, {"shadows"}, {"shadow atlas"}, "4096x3072"},  // 4 + 1 + 6 maps
       {"UnshadowedSpot", [] { auto s = baseSet(); s.lights.push_back(spot(false)); return s; }, {}, {}, {}},
       {"ShadowedSpotReachingNothingVisible", spotBehindTheCamera, {}, {}, {}},
       // Bloom: a visible object emitting at least the bloom threshold (10 cd/m^2).
@@ -125,7 +145,7 @@ std::vector<Row> matrix() {
       {"AlphaBlend",
        [] {
          auto s = baseSet();
-         s.lights.push_back(sun());
+         s.lights.push_back(sun(false));
          addObject(s, {.name = "glass", .baseColorFactor = {0.5f, 0.7f, 1.0f, 0.4f}, .metallicFactor = 0.0f,
                        .alphaMode = scene::AlphaMode::Blend},
                    at(-1.2f, 0.25f, 0.5f));
@@ -135,7 +155,7 @@ std::vector<Row> matrix() {
       {"AlphaMask",
        [] {
          auto s = baseSet();
-         s.lights.push_back(sun());
+         s.lights.push_back(sun(false));
          addObject(s, {.name = "leaf", .baseColorFactor = {0.3f, 0.8f, 0.3f, 0.4f}, .metallicFactor = 0.0f,
                        .alphaMode = scene::AlphaMode::Mask},
                    at(-1.2f, 0.25f, 0.5f));
@@ -148,6 +168,7 @@ std::vector<Row> matrix() {
 // The effect passes and resources of a compiled frame, read from its JSON dump.
 struct Effects {
   Names passes, resources;
+  std::string atlas;
 };
 Effects effectsOf(const nlohmann::json& plan) {
   Effects e;
@@ -160,6 +181,8 @@ Effects effectsOf(const nlohmann::json& plan) {
     if (r["culled"].get<bool>()) continue;
     for (const auto& prefix : kEffectResourcePrefixes)
       if (name.rfind(prefix, 0) == 0) e.resources.insert(name);
+    if (name == "shadow atlas")
+      e.atlas = std::to_string(r["width"].get<uint32_t>()) + "x" + std::to_string(r["height"].get<uint32_t>());
   }
   return e;
 }
@@ -189,6 +212,7 @@ TEST_P(EffectMatrix, TheFrameHoldsExactlyTheEffectsTheSceneCallsFor) {
   EXPECT_EQ(got.passes, expected) << "got " << joined(got.passes) << ", expected " << joined(expected);
   EXPECT_EQ(got.resources, c.row.resources)
       << "got " << joined(got.resources) << ", expected " << joined(c.row.resources);
+  EXPECT_EQ(got.atlas, c.row.atlas) << "the shadow atlas's size";
 }
 
 // The prefilter is one-time: after a frame has run it, the next frames hold

@@ -1,7 +1,8 @@
-// Shadow maps' hard cases, validation on, both paths (docs/stability.md):
-// - acne: a plane lit by a shadowed spot at grazing angles (5°, 1°) is as
-//   smooth as without shadows (neighbouring pixels of the HDR image differ by
-//   under 2% of the mean) and keeps its light (at least 97% of it);
+// Shadow maps' hard cases, validation on, both paths, for each kind of map
+// (a spot's, a point light's cube, a directional light's cascades; docs/stability.md):
+// - acne: a plane lit at grazing angles (5°, 1°) is as smooth as without
+//   shadows (neighbouring pixels of the HDR image differ by under 2% of the
+//   mean) and keeps its light (at least 97% of it);
 // - contact (peter-panning): a sphere resting on the plane casts the shadow
 //   the geometry gives, pixel by pixel (ShadowContact below says how).
 #include <gtest/gtest.h>
@@ -10,6 +11,9 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
@@ -27,11 +31,16 @@ constexpr uint32_t kSize = 96;
 
 float luminance(const glm::vec4& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
+const char* typeName(scene::LightType type) {
+  return type == scene::LightType::Spot ? "Spot" : type == scene::LightType::Point ? "Point" : "Sun";
+}
+
 // A grey diffuse plane, a sphere of radius `radius` resting on it at
-// (sphereX, 0), and one spot light arriving at `elevationDegrees` above the
-// plane along +z, aimed at `target`, from `distance` away.
-scene::Scene plateWithSphere(float elevationDegrees, float distance, glm::vec3 target, float radius, bool shadows,
-                             float sphereX = 0.0f) {
+// (sphereX, 0), and one light arriving at `elevationDegrees` above the plane
+// along +z at `target`: a spot aimed at it or a point light, `distance` away,
+// or a directional light.
+scene::Scene plateWithSphere(scene::LightType type, float elevationDegrees, float distance, glm::vec3 target,
+                             float radius, bool shadows, float sphereX = 0.0f) {
   scene::Scene s;
   const int grey = addMaterial(s, {.name = "plate", .baseColorFactor = {0.5f, 0.5f, 0.5f, 1.0f},
                                    .metallicFactor = 0.0f, .roughnessFactor = 1.0f});
@@ -43,7 +52,8 @@ scene::Scene plateWithSphere(float elevationDegrees, float distance, glm::vec3 t
   placeMesh(s, scene::makeSphere(radius, 64, 32), ball, glm::translate(glm::mat4(1.0f), {sphereX, radius, 0.0f}));
   const float e = glm::radians(elevationDegrees);
   const glm::vec3 dir{0.0f, -std::sin(e), std::cos(e)};
-  s.lights.push_back({.name = "spot", .type = scene::LightType::Spot, .intensity = 4e5f, .innerConeAngle = 0.25f,
+  s.lights.push_back({.name = typeName(type), .type = type,
+                      .intensity = type == scene::LightType::Directional ? 1e3f : 4e5f, .innerConeAngle = 0.25f,
                       .outerConeAngle = 0.3f, .position = target - dir * distance, .direction = dir,
                       .shadows = shadows});
   return s;
@@ -91,7 +101,8 @@ Smoothness smoothness(const StabilityFrame& f, uint32_t x0, uint32_t y0, uint32_
 }
 
 struct Grazing {
-  const char* name;
+  scene::LightType type;
+  const char* angle;
   float degrees;
 };
 
@@ -99,16 +110,17 @@ class ShadowAcne : public ::testing::TestWithParam<Grazing> {};
 
 TEST_P(ShadowAcne, AGrazingLitPlaneStaysSmoothAndLit) {
   const Grazing g = GetParam();
+  const std::string name = std::string(typeName(g.type)) + g.angle;
   // The plane lit at `degrees`; the view holds only plane (the sphere and its shadow are 3 units aside).
   const glm::vec3 target{0.0f, 0.0f, 4.0f};
   const scene::Camera camera = cameraAt({0.0f, 3.0f, 6.5f}, target, 0.1f, 100.0f, 0.6f);
   for (auto mode : {scene::ShadingMode::Forward, scene::ShadingMode::Decoupled}) {
-    const std::string what = std::string(g.name) + (mode == scene::ShadingMode::Forward ? " forward" : " decoupled");
+    const std::string what = name + (mode == scene::ShadingMode::Forward ? " forward" : " decoupled");
     const StabilityFrame shadowed =
-        renderChecked(plateWithSphere(g.degrees, 20.0f, target, 0.5f, true, 3.0f), mode, camera, true, what);
-    const StabilityFrame unshadowed =
-        renderChecked(plateWithSphere(g.degrees, 20.0f, target, 0.5f, false, 3.0f), mode, camera, false, what + " (off)");
-    saveForInspection(shadowed, "shadow_acne_" + std::string(g.name) + (mode == scene::ShadingMode::Forward ? "_fwd" : "_dec"));
+        renderChecked(plateWithSphere(g.type, g.degrees, 20.0f, target, 0.5f, true, 3.0f), mode, camera, true, what);
+    const StabilityFrame unshadowed = renderChecked(plateWithSphere(g.type, g.degrees, 20.0f, target, 0.5f, false, 3.0f),
+                                                    mode, camera, false, what + " (off)");
+    saveForInspection(shadowed, "shadow_acne_" + name + (mode == scene::ShadingMode::Forward ? "_fwd" : "_dec"));
     const Smoothness on = smoothness(shadowed, 8, 8, kSize - 8, kSize - 8);
     const Smoothness off = smoothness(unshadowed, 8, 8, kSize - 8, kSize - 8);
     std::printf("%-22s mean %.4f (without shadows %.4f, kept %.4f), neighbour |d| %.4f of the mean (without %.4f)\n",
@@ -118,8 +130,17 @@ TEST_P(ShadowAcne, AGrazingLitPlaneStaysSmoothAndLit) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Angles, ShadowAcne, ::testing::Values(Grazing{"Grazing5Degrees", 5.0f}, Grazing{"Grazing1Degree", 1.0f}),
-                         [](const auto& param_info) { return std::string(param_info.param.name); });
+std::vector<Grazing> grazingCases() {
+  std::vector<Grazing> out;
+  for (auto type : {scene::LightType::Spot, scene::LightType::Directional, scene::LightType::Point})
+    for (const auto& [angle, degrees] : {std::pair{"Grazing5Degrees", 5.0f}, std::pair{"Grazing1Degree", 1.0f}})
+      out.push_back({type, angle, degrees});
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Angles, ShadowAcne, ::testing::ValuesIn(grazingCases()), [](const auto& param_info) {
+  return std::string(typeName(param_info.param.type)) + param_info.param.angle;
+});
 
 // The ground point a pixel centre sees, when the ray meets the ground before the sphere.
 std::optional<glm::vec3> groundSeenBy(const scene::Camera& camera, uint32_t size, uint32_t x, uint32_t y,
@@ -150,20 +171,28 @@ float missDistance(glm::vec3 ground, glm::vec3 light, glm::vec3 centre, float ra
 // ground pixel whose segment to the light passes within 0.8 r of the centre
 // keeps under 15% of its light, every one passing beyond 1.2 r over 90%; the
 // band between is the penumbra of the filter and the pixel footprint.
-TEST(ShadowContact, ASphereOnAPlaneCastsItsAnalyticShadow) {
+class ShadowContact : public ::testing::TestWithParam<scene::LightType> {};
+
+TEST_P(ShadowContact, ASphereOnAPlaneCastsItsAnalyticShadow) {
   constexpr float kRadius = 0.5f, kElevation = 35.0f, kDistance = 6.0f;
   constexpr uint32_t kView = 128;
+  const scene::LightType type = GetParam();
   const glm::vec3 centre{0.0f, kRadius, 0.0f};
   // Light along +z, so the shadow lies at z > 0; the camera looks across it from the side.
   const scene::Camera camera = cameraAt({3.0f, 1.5f, 0.3f}, {0.0f, 0.0f, 0.3f}, 0.1f, 100.0f, 0.8f);
-  const glm::vec3 light = plateWithSphere(kElevation, kDistance, {}, kRadius, true).lights[0].position;
+  const scene::Light sceneLight = plateWithSphere(type, kElevation, kDistance, {}, kRadius, true).lights[0];
+  // Where the light comes from, seen from a ground point (a directional light: far along its direction).
+  const auto lightFrom = [&](glm::vec3 ground) {
+    return type == scene::LightType::Directional ? ground - sceneLight.direction * 1e4f : sceneLight.position;
+  };
   for (auto mode : {scene::ShadingMode::Forward, scene::ShadingMode::Decoupled}) {
-    const std::string what = mode == scene::ShadingMode::Forward ? "contact forward" : "contact decoupled";
-    const StabilityFrame f = renderChecked(plateWithSphere(kElevation, kDistance, {}, kRadius, true), mode, camera,
-                                           true, what, kView);
-    const StabilityFrame off = renderChecked(plateWithSphere(kElevation, kDistance, {}, kRadius, false), mode,
+    const std::string what = std::string(typeName(type)) + (mode == scene::ShadingMode::Forward ? " contact forward" : " contact decoupled");
+    const StabilityFrame f = renderChecked(plateWithSphere(type, kElevation, kDistance, {}, kRadius, true), mode,
+                                           camera, true, what, kView);
+    const StabilityFrame off = renderChecked(plateWithSphere(type, kElevation, kDistance, {}, kRadius, false), mode,
                                              camera, false, what + " (off)", kView);
-    saveForInspection(f, mode == scene::ShadingMode::Forward ? "shadow_contact_fwd" : "shadow_contact_dec");
+    saveForInspection(f, std::string("shadow_contact_") + typeName(type) +
+                             (mode == scene::ShadingMode::Forward ? "_fwd" : "_dec"));
     size_t dark = 0, darkNearContact = 0, lit = 0, wrongDark = 0, wrongLit = 0;
     double worstDark = 0.0, worstLit = 1e30;
     for (uint32_t y = 0; y < kView; ++y)
@@ -172,7 +201,7 @@ TEST(ShadowContact, ASphereOnAPlaneCastsItsAnalyticShadow) {
         if (!g) continue;
         const size_t i = size_t(y) * kView + x;
         const double ratio = double(luminance(f.hdr[i])) / std::max(double(luminance(off.hdr[i])), 1e-6);
-        const float miss = missDistance(*g, light, centre, kRadius);
+        const float miss = missDistance(*g, lightFrom(*g), centre, kRadius);
         if (miss < 0.8f) {
           ++dark;
           if (glm::length(*g) < kRadius) ++darkNearContact;
@@ -193,6 +222,10 @@ TEST(ShadowContact, ASphereOnAPlaneCastsItsAnalyticShadow) {
     EXPECT_EQ(wrongLit, 0u) << what << ": lit ground shadowed (acne or a shadow too large)";
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Lights, ShadowContact,
+                         ::testing::Values(scene::LightType::Spot, scene::LightType::Directional, scene::LightType::Point),
+                         [](const auto& param_info) { return std::string(typeName(param_info.param)); });
 
 }  // namespace
 }  // namespace sg::test

@@ -15,20 +15,21 @@
 
 #define SG_PI 3.14159265358979
 
-// The shadow atlas (passes/shadows): one depth map per shadowed light, side by side.
+// The shadow atlas (passes/shadows): the maps of the shadowed lights,
+// frame.shadowAtlas.z maps a row; map s's matrix is frame.shadowMatrices[s].
 layout(set = 0, binding = kBindShadowMaps) uniform sampler2D sgShadowMaps;
 
-// How much of a shadowed light reaches `position`, 0..1: 3x3 bilinear PCF
-// (16 depth compares, weights 1-f, 1, 1, f per axis). The maps carry the
-// slope-scaled bias (written when they are drawn), so a receiver compares its own depth.
-float sgShadowAt(Light light, vec3 position) {
-  int slot = int(light.cone.z) - 1;
-  if (slot < 0) return 1.0;
-  vec4 clip = light.shadowMatrix * vec4(position, 1.0);
+// How much light map `slot` lets reach `position`, 0..1 (1 outside the map):
+// 3x3 bilinear PCF (16 depth compares, weights 1-f, 1, 1, f per axis). The
+// maps carry the slope-scaled bias (written when they are drawn), so a
+// receiver compares its own depth.
+float sgShadowMapAt(int slot, vec3 position) {
+  vec4 clip = frame.shadowMatrices[slot] * vec4(position, 1.0);
   if (clip.w <= 0.0) return 1.0;  // behind the light: outside its cone anyway
   vec3 ndc = clip.xyz / clip.w;
   if (any(greaterThan(abs(ndc.xy), vec2(1.0))) || ndc.z > 1.0) return 1.0;
-  int size = int(frame.shadowAtlas.y);
+  int size = int(frame.shadowAtlas.y), columns = max(int(frame.shadowAtlas.z), 1);
+  ivec2 origin = ivec2(slot % columns, slot / columns) * size;
   // The map is drawn with +Y up (negative-height viewport): row 0 is ndc.y = +1.
   vec2 texel = vec2(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5) * float(size) - 0.5;
   vec2 base = floor(texel), f = texel - base;
@@ -40,11 +41,41 @@ float sgShadowAt(Light light, vec3 position) {
     for (int x = 0; x < 4; ++x) {
       float wx = x == 0 ? 1.0 - f.x : (x == 3 ? f.x : 1.0);
       ivec2 t = clamp(ivec2(base) + ivec2(x - 1, y - 1), ivec2(0), ivec2(size - 1));
-      float stored = texelFetch(sgShadowMaps, min(ivec2(slot * size + t.x, t.y), last), 0).r;
+      float stored = texelFetch(sgShadowMaps, min(origin + t, last), 0).r;
       lit += ndc.z <= stored ? wx * wy : 0.0;
     }
   }
   return lit / 9.0;
+}
+
+// How much of a shadowed light reaches `position`, 0..1. Spot: its map.
+// Point: the cube face of the major axis. Directional: the cascade of the
+// position's view depth, blended into the next over the last kCascadeBlend of
+// it (the next cascade covers that band too), so the boundary does not pop.
+float sgShadowAt(Light light, vec3 position) {
+  int first = int(light.cone.z) - 1;
+  if (first < 0) return 1.0;
+  uint type = uint(light.positionType.w);
+  if (type == SG_LIGHT_SPOT) return sgShadowMapAt(first, position);
+  if (type == SG_LIGHT_POINT) {
+    vec3 d = position - light.positionType.xyz, a = abs(d);
+    int face = a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0 : 1) : (a.y >= a.z ? (d.y >= 0.0 ? 2 : 3) : (d.z >= 0.0 ? 4 : 5));
+    return sgShadowMapAt(first + face, position);
+  }
+  float depth = -(frame.view * vec4(position, 1.0)).z;
+  float start = 0.0;
+  for (int c = 0; c < int(kShadowCascades); ++c) {
+    float end = light.cascadeEnds[c];
+    if (depth <= end) {
+      float lit = sgShadowMapAt(first + c, position);
+      float band = kCascadeBlend * (end - start);
+      if (c + 1 < int(kShadowCascades) && depth > end - band)
+        lit = mix(lit, sgShadowMapAt(first + c + 1, position), (depth - (end - band)) / band);
+      return lit;
+    }
+    start = end;
+  }
+  return 1.0;  // beyond the farthest visible object
 }
 
 struct LightSample {
