@@ -8,7 +8,8 @@
 namespace sg::render {
 
 FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& camera, uint32_t width,
-                                uint32_t height, std::span<const glm::vec4> drawSpheres) {
+                                uint32_t height, std::vector<GpuLight>& gpuLights,
+                                std::span<const glm::vec4> drawSpheres) {
   FrameUniforms f{};
   f.view = camera.view();
   f.projection = camera.projectionMatrix(float(width) / float(height));
@@ -20,9 +21,10 @@ FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& 
     lights.push_back({.name = "default sun", .type = scene::LightType::Directional, .color = glm::vec3(1.0f),
                       .intensity = 3.0f, .direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.5f))});
   const auto count = std::min<size_t>(lights.size(), kMaxLights);
+  gpuLights.assign(count, GpuLight{});
   for (size_t i = 0; i < count; ++i) {
     const auto& l = lights[i];
-    GpuLight& g = f.lights[i];
+    GpuLight& g = gpuLights[i];
     g.positionType = glm::vec4(l.position, float(int(l.type)));
     g.directionRange = glm::vec4(glm::normalize(l.direction), l.range);
     g.color = glm::vec4(l.color * l.intensity, 0.0f);
@@ -30,10 +32,10 @@ FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& 
     g.cone = glm::vec4(cosOuter, 1.0f / std::max(cosInner - cosOuter, 1e-4f), 0.0f, 0.0f);
   }
   f.counts = glm::uvec4(uint32_t(count), width, height, 0u);
-  const auto views = shadowViews(std::span(lights).first(count), drawSpheres, kMaxLights);
+  const auto views = shadowViews(std::span(lights).first(count), drawSpheres, kMaxShadowMaps);
   for (const ShadowView& v : views) {
-    f.lights[v.light].cone.z = float(v.slot + 1);
-    f.lights[v.light].shadowMatrix = v.viewProjection;
+    gpuLights[v.light].cone.z = float(v.slot + 1);
+    gpuLights[v.light].shadowMatrix = v.viewProjection;
   }
   f.shadowAtlas = glm::vec4(float(views.size()), float(kShadowMapResolution), 0.0f, 0.0f);
   return f;

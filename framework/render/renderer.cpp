@@ -1,8 +1,12 @@
 #include <shadelgraph/render/renderer.hpp>
 
+#include <stdexcept>
+#include <string>
+
 #include <shadelgraph/gpu/error.hpp>
 #include <shadelgraph/render/frame_uniforms.hpp>
 #include <shadelgraph/render/frustum.hpp>
+#include <shadelgraph/render/shaders/light_grid.h>
 #include <shadelgraph/scene/bounds.hpp>
 
 namespace sg::render {
@@ -41,10 +45,23 @@ Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, const plugin:
       culling_(device.context(), device.memory(), gpuScene_.draws(), drawSpheres(scene, gpuScene_.draws())),
       executor_(device) {
   registry_.check();
+  if (scene.lights.size() > kMaxLights)
+    throw std::invalid_argument("the scene has " + std::to_string(scene.lights.size()) + " lights; at most " +
+                                std::to_string(kMaxLights) + " are supported");
   for (auto& uniforms : frameUniforms_)
     uniforms = gpu::Buffer(device.context(), device.memory(),
                            {sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryLocation::Upload,
                             "frame uniforms", "frame"});
+  // Sized for the scene's lights (at least the default sun).
+  const size_t lightBytes = std::max<size_t>(scene.lights.size(), 1) * sizeof(GpuLight);
+  for (auto& lights : lights_)
+    lights = gpu::Buffer(device.context(), device.memory(),
+                         {lightBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryLocation::Upload, "lights", "frame"});
+  const shader::SgLightGridHeader noGrid{};
+  noLightGrid_ = gpu::Buffer(device.context(), device.memory(),
+                             {sizeof noGrid + sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                              gpu::MemoryLocation::Upload, "no light grid", "frame"});
+  noLightGrid_.write(&noGrid, sizeof noGrid);
   for (const auto& instance : scene.instances) modes_.push_back(instance.shading);
   for (const auto& draw : gpuScene_.draws())
     if (!registry_.hasMaterial(draw.materialStack))
@@ -98,9 +115,12 @@ scene::Camera Renderer::camera(const RenderSettings& settings) const {
 
 std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& settings) {
   const scene::Camera cam = camera(settings);
-  const FrameUniforms uniforms = makeFrameUniforms(scene_, cam, settings.width, settings.height, drawSpheres_);
+  const FrameUniforms uniforms =
+      makeFrameUniforms(scene_, cam, settings.width, settings.height, frameLights_, drawSpheres_);
   gpu::Buffer& uniformBuffer = frameUniforms_[frameNumber_ % 2];
   uniformBuffer.write(&uniforms, sizeof uniforms);
+  gpu::Buffer& lightBuffer = lights_[frameNumber_ % 2];
+  lightBuffer.write(frameLights_.data(), frameLights_.size() * sizeof(GpuLight));
 
   if (!output_ || output_->desc().width != settings.width || output_->desc().height != settings.height) {
     vkDeviceWaitIdle(device_.context().device());
@@ -114,7 +134,7 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
                           ? std::abs(uniforms.projection[1][1]) * 0.5f * float(settings.height)
                           : 0.0f;
   auto frame = std::make_unique<Frame>(Frame{
-      {gpuScene_, uniformBuffer, gpuScene_.allDraws(), registry_, layerTextures_},
+      {gpuScene_, uniformBuffer, lightBuffer, noLightGrid_, gpuScene_.allDraws(), registry_, layerTextures_},
       {scene_, device_, executor_, modes_, drawSpheres_, frameNumber_++, cam.position(), focal, uniforms.viewProjection,
        settings.width, settings.height, settings.occlusionCulling ? &culling_ : nullptr},
       {}, {}, {}});

@@ -1,8 +1,8 @@
 #version 460
 // Depth of a shadow caster as one light sees it (the light's shadowMatrix in
-// the frame uniforms; which light is a push constant after the object's).
+// the frame's lights; which light is a push constant after the object's).
 #extension GL_EXT_scalar_block_layout : require
-#include <framework/render/shaders/frame.glsl>
+#include <framework/render/shaders/light_buffer.glsl>
 
 layout(push_constant, scalar) uniform ShadowDraw {
   SgObjectConstants object;
@@ -17,4 +17,4 @@ layout(location = 3) in vec2 inUv0;
 layout(location = 4) in vec2 inUv1;
 layout(location = 5) in vec4 inColor;
 
-void main() { gl_Position = frame.lights[draw.light].shadowMatrix * (draw.object.model * vec4(inPosition, 1.0)); }
+void main() { gl_Position = sgLights[draw.light].shadowMatrix * (draw.object.model * vec4(inPosition, 1.0)); }

@@ -15,7 +15,7 @@ constexpr uint32_t kSide = render::kShadowMapResolution;
 gpu::GraphicsPipelineDesc shadowMapPipeline() {
   return {.vertex = {.path = "passes/shadows/shadow_map.vert"},
           .fragment = {.path = "passes/shadows/shadow_map.frag"},
-          .layout = {.bindings = {{shader::kBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}},
+          .layout = {.bindings = {{shader::kBindLights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}},
                      .pushConstantBytes = kLightPushOffset + uint32_t(sizeof(uint32_t))},
           .vertexInput = render::sceneVertexInput(),
           .depthFormat = VK_FORMAT_D32_SFLOAT,
@@ -32,7 +32,7 @@ graph::ResourceHandle addShadowMaps(graph::RenderGraph& graph, const render::Sce
   pass.execute([view, maps = std::move(maps), atlas](PassContext& ctx) {
     ctx.beginRendering({}, DepthTarget{atlas, 1.0f}, true);
     const auto& pipeline = ctx.device().pipeline("shadow-map", shadowMapPipeline);
-    ctx.bind(pipeline, {{shader::kBindFrame, gpu::BufferBinding{view.frameUniforms.handle()}}});
+    ctx.bind(pipeline, {{shader::kBindLights, gpu::BufferBinding{view.lights.handle()}}});
     view.scene.bindGeometry(ctx.cmd());
     const auto& draws = view.scene.draws();
     for (const ShadowMapDraws& map : maps) {

@@ -4,6 +4,7 @@
 
 #include <shadelgraph/render/frame_context.hpp>
 #include <shadelgraph/render/frame_uniforms.hpp>
+#include <shadelgraph/render/light_binding.hpp>
 #include <shadelgraph/render/shadow_binding.hpp>
 #include <shadelgraph/render/shadow_views.hpp>
 
@@ -12,6 +13,7 @@
 #include "exposure/exposure.hpp"
 #include "forward/forward.hpp"
 #include "forward/forward_material.hpp"
+#include "light-cull/light_cull.hpp"
 #include "shadows/shadows.hpp"
 #include "occlusion-cull/occlusion_cull.hpp"
 #include "tonemap/tonemap.hpp"
@@ -21,6 +23,9 @@ namespace sg::plugins {
 namespace {
 
 using render::FrameContext;
+
+// Above this many lights a frame culls them per cluster (measured: docs/many-lights.md).
+constexpr uint32_t kLightCullThreshold = 16;
 
 graph::ResourceHandle depthTarget(FrameContext& ctx) {
   return ctx.has("scene.depth") ? ctx.read("scene.depth")
@@ -60,7 +65,7 @@ void publish(FrameContext& ctx, const passes::ForwardTargets& t) {
 void declareShadows(FrameContext& ctx) {
   const auto& in = ctx.inputs();
   const auto lights = std::span(in.scene.lights).first(std::min<size_t>(in.scene.lights.size(), render::kMaxLights));
-  const auto views = render::shadowViews(lights, in.drawSpheres, render::kMaxLights);  // as the frame uniforms
+  const auto views = render::shadowViews(lights, in.drawSpheres, render::kMaxShadowMaps);  // as the frame uniforms
   const auto visible = ctx.visibleDraws();
   const auto& draws = ctx.gpuScene().draws();
   std::vector<passes::ShadowMapDraws> maps;
@@ -76,6 +81,22 @@ void declareShadows(FrameContext& ctx) {
   if (maps.empty()) return;
   ctx.write(render::kShadowMapsResource, passes::addShadowMaps(ctx.graph(), ctx.view(ctx.gpuScene().allDraws()),
                                                                std::move(maps), uint32_t(views.size())));
+}
+
+// The light grid, when the frame has more lights than the pass's threshold
+// and something visible to shade; otherwise no pass and no grid (every light
+// loop visits every light).
+void declareLightCull(FrameContext& ctx) {
+  const auto& in = ctx.inputs();
+  const auto lights = uint32_t(std::max<size_t>(in.scene.lights.size(), 1));  // a scene without lights gets a sun
+  const int threshold = ctx.parameter<int>("threshold");
+  if (threshold < 0) throw plugin::FrameError("pass 'light-cull': parameter 'threshold' must be 0 or more");
+  const auto visible = ctx.visibleDraws();
+  if (lights <= uint32_t(threshold) || visible.empty()) return;
+  std::vector<glm::vec4> spheres;
+  for (const uint32_t d : visible) spheres.push_back(in.drawSpheres[d]);
+  const auto grid = passes::lightGridFor(in.width, in.height, in.viewProjection, spheres, lights);
+  ctx.write(render::kLightGridResource, passes::addLightCull(ctx.graph(), ctx.view({}), grid, lights));
 }
 
 }  // namespace
@@ -99,6 +120,14 @@ void registerForwardPackage(plugin::Registry& registry) {
                     .reads = {plugin::kForwardDrawsResource},
                     .writes = {render::kShadowMapsResource},
                     .declare = declareShadows});
+  registry.addPass({.name = "light-cull",
+                    .description = "clustered light culling: which lights reach each screen tile and depth slice "
+                                   "(only when the frame has more lights than the threshold)",
+                    .reads = {plugin::kForwardDrawsResource},
+                    .writes = {render::kLightGridResource},
+                    .parameters = {{"threshold", int(kLightCullThreshold),
+                                    "lights a frame may have without culling (measured: docs/many-lights.md)"}},
+                    .declare = declareLightCull});
   registry.addPass({.name = "forward-opaque",
                     .description = "opaque objects shaded forward (their material's fragment variant); clears the HDR colour",
                     .reads = {plugin::kForwardDrawsResource, "scene.depth"},
@@ -154,7 +183,7 @@ void registerForwardPackage(plugin::Registry& registry) {
                                                    ctx.read(plugin::kOutputResource), ctx.debugColors));
                     }});
   registry.addFrame({.name = "forward",
-                     .passes = {{.pass = "z-prepass"}, {.pass = "shadows"}, {.pass = "forward-opaque"}, {.pass = "alpha-mask"},
+                     .passes = {{.pass = "z-prepass"}, {.pass = "shadows"}, {.pass = "light-cull"}, {.pass = "forward-opaque"}, {.pass = "alpha-mask"},
                                 {.pass = "alpha-blend"}, {.pass = "exposure"}, {.pass = "tonemap"}}});
 }
 

@@ -23,6 +23,7 @@
 #include <exposure/exposure_interface.h>
 #include <forward/forward_material.hpp>
 #include <layer-shade/layer_shade.hpp>
+#include <light-cull/light_cull.hpp>
 #include <shadel-allocate/shadel_allocate.hpp>
 #include <shadel-clear/shadel_clear.hpp>
 #include <shade-frame/shade_frame_work.hpp>
@@ -127,6 +128,9 @@ const std::map<std::string, size_t> kSharedRecords = {
     {"SgOccupancyPush", sizeof(shader::SgOccupancyPush)},
     {"SgExposure", sizeof(shader::SgExposure)},
     {"SgExposureParams", sizeof(shader::SgExposureParams)},
+    {"Light", sizeof(shader::Light)},
+    {"SgLightGridHeader", sizeof(shader::SgLightGridHeader)},
+    {"SgLightCullPush", sizeof(shader::SgLightCullPush)},
 };
 
 const char* typeName(VkDescriptorType type) {
@@ -225,6 +229,7 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   errors += mismatches("z-prepass", passes::zPrepassPipeline());
   errors += mismatches("exposure", passes::exposurePipeline());
   errors += mismatches("shadows", passes::shadowMapPipeline());
+  errors += mismatches("light-cull", passes::lightCullPipeline());
   errors += mismatches("hi-z", passes::hiZPipeline());
   errors += mismatches("occlusion-cull", passes::occlusionCullPipeline());
   for (bool passthrough : {false, true})
