@@ -24,8 +24,9 @@ namespace {
 
 using render::FrameContext;
 
-// Above this many lights a frame culls them per cluster (measured: docs/many-lights.md).
-constexpr uint32_t kLightCullThreshold = 16;
+// Above this many lights with a range a frame culls them per cluster (measured:
+// docs/many-lights.md); 8 was the old cap, so no frame that rendered before gains the pass.
+constexpr uint32_t kLightCullThreshold = 8;
 
 graph::ResourceHandle depthTarget(FrameContext& ctx) {
   return ctx.has("scene.depth") ? ctx.read("scene.depth")
@@ -83,16 +84,19 @@ void declareShadows(FrameContext& ctx) {
                                                                std::move(maps), uint32_t(views.size())));
 }
 
-// The light grid, when the frame has more lights than the pass's threshold
-// and something visible to shade; otherwise no pass and no grid (every light
-// loop visits every light).
+// The light grid, when the frame has more lights with a range (the only ones
+// a cluster can leave out) than the pass's threshold and something visible to
+// shade; otherwise no pass and no grid (every light loop visits every light).
 void declareLightCull(FrameContext& ctx) {
   const auto& in = ctx.inputs();
   const auto lights = uint32_t(std::max<size_t>(in.scene.lights.size(), 1));  // a scene without lights gets a sun
+  const auto ranged = uint32_t(std::count_if(in.scene.lights.begin(), in.scene.lights.end(), [](const scene::Light& l) {
+    return l.type != scene::LightType::Directional && l.range > 0.0f;
+  }));
   const int threshold = ctx.parameter<int>("threshold");
   if (threshold < 0) throw plugin::FrameError("pass 'light-cull': parameter 'threshold' must be 0 or more");
   const auto visible = ctx.visibleDraws();
-  if (lights <= uint32_t(threshold) || visible.empty()) return;
+  if (ranged <= uint32_t(threshold) || visible.empty()) return;
   std::vector<glm::vec4> spheres;
   for (const uint32_t d : visible) spheres.push_back(in.drawSpheres[d]);
   const auto grid = passes::lightGridFor(in.width, in.height, in.viewProjection, spheres, lights);
@@ -122,11 +126,11 @@ void registerForwardPackage(plugin::Registry& registry) {
                     .declare = declareShadows});
   registry.addPass({.name = "light-cull",
                     .description = "clustered light culling: which lights reach each screen tile and depth slice "
-                                   "(only when the frame has more lights than the threshold)",
+                                   "(only when the frame has more lights with a range than the threshold)",
                     .reads = {plugin::kForwardDrawsResource},
                     .writes = {render::kLightGridResource},
                     .parameters = {{"threshold", int(kLightCullThreshold),
-                                    "lights a frame may have without culling (measured: docs/many-lights.md)"}},
+                                    "point and spot lights with a range a frame may have without culling (docs/many-lights.md)"}},
                     .declare = declareLightCull});
   registry.addPass({.name = "forward-opaque",
                     .description = "opaque objects shaded forward (their material's fragment variant); clears the HDR colour",
