@@ -24,9 +24,9 @@ namespace {
 using Names = std::set<std::string>;
 
 // Passes present only when the scene calls for them.
-const Names kEffectPasses = {"alpha-mask", "alpha-blend", "shadows"};
+const Names kEffectPasses = {"alpha-mask", "alpha-blend", "shadows", "light-cull"};
 // Graph resources that exist only for an effect (matched by name prefix).
-const Names kEffectResourcePrefixes = {"shadow"};
+const Names kEffectResourcePrefixes = {"shadow", "light grid"};
 
 glm::mat4 at(float x, float y, float z) { return glm::translate(glm::mat4(1.0f), {x, y, z}); }
 
@@ -83,6 +83,10 @@ std::vector<Row> matrix() {
       {"Sun", [] { auto s = baseSet(); s.lights.push_back(sun()); return s; }, {}, {}, {}},
       {"ShadowedSpot", [] { auto s = baseSet(); s.lights.push_back(spot(true)); return s; }, {"shadows"},
        {"shadows"}, {"shadow atlas"}},
+      // Many lights: above light-cull's threshold the frame culls them per cluster (docs/many-lights.md).
+      {"ThreeHundredPointLights", [] { return makeLitSetWithPointLights(300); }, {"light-cull"}, {"light-cull"},
+       {"light grid"}},
+      {"EightPointLights", [] { return makeLitSetWithPointLights(8); }, {}, {}, {}},
       {"UnshadowedSpot", [] { auto s = baseSet(); s.lights.push_back(spot(false)); return s; }, {}, {}, {}},
       {"ShadowedSpotReachingNothingVisible", spotBehindTheCamera, {}, {}, {}},
       {"Emissive",
