@@ -134,7 +134,8 @@ Effects effectsOf(const nlohmann::json& plan) {
   }
   for (const auto& r : plan["resources"]) {
     const auto name = r["name"].get<std::string>();
-    if (r["culled"].get<bool>()) continue;
+    // The harness's own copies (hdr-capture, light-grid-capture) are not the frame's.
+    if (r["culled"].get<bool>() || name.ends_with("(captured)")) continue;
     for (const auto& prefix : kEffectResourcePrefixes)
       if (name.rfind(prefix, 0) == 0) e.resources.insert(name);
   }

@@ -91,9 +91,11 @@ void HdrCapture::registerIn(plugin::Registry& registry, const nlohmann::json& ex
   if (lightCull.is_object()) parameters["light-cull"] = lightCull;
   registry.addFrame({.name = kHdrCapturedFrame,
                      .base = "decoupled",
-                     .passes = {{.pass = "hdr-capture", .before = {"exposure"}},
-                                {.pass = "exposure-capture", .after = {"exposure"}, .before = {"tonemap"}},
-                                {.pass = "light-grid-capture", .after = {"light-cull"}, .before = {"shadel-clear"}}},
+                     // light-grid-capture first: while it holds shadel-clear back, the tie
+                     // between the ready entries goes to it, not to hdr-capture.
+                     .passes = {{.pass = "light-grid-capture", .after = {"light-cull"}, .before = {"shadel-clear"}},
+                                {.pass = "hdr-capture", .before = {"exposure"}},
+                                {.pass = "exposure-capture", .after = {"exposure"}, .before = {"tonemap"}}},
                      .parameters = parameters});
 }
 

@@ -106,8 +106,8 @@ TEST_P(ManyLights, ClusteredShadingEqualsBruteForceWithinOneLevel) {
 
 INSTANTIATE_TEST_SUITE_P(Paths, ManyLights,
                          ::testing::Values(scene::ShadingMode::Forward, scene::ShadingMode::Decoupled),
-                         [](const auto& info) {
-                           return std::string(info.param == scene::ShadingMode::Forward ? "Forward" : "Decoupled");
+                         [](const auto& param_info) {
+                           return std::string(param_info.param == scene::ShadingMode::Forward ? "Forward" : "Decoupled");
                          });
 
 }  // namespace
