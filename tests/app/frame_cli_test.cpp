@@ -43,7 +43,7 @@ TEST(FrameCli, PassesListsEveryRegisteredPassWithItsResourcesAndTheFrames) {
   const auto json = nlohmann::json::parse(r.out);
   std::map<std::string, nlohmann::json> passes;
   for (const auto& p : json["passes"]) passes[p["name"].get<std::string>()] = p;
-  for (const char* name : {"z-prepass", "forward-opaque", "alpha-mask", "alpha-blend", "exposure", "tonemap",
+  for (const char* name : {"z-prepass", "light-cull", "forward-opaque", "alpha-mask", "alpha-blend", "exposure", "tonemap",
                            "shadel-clear", "shadel-mark", "support-expand", "shadel-allocate", "work-aggregate",
                            "layer-shade", "composite", "counters-readback", "decoupled-debug-view", "test-post"})
     EXPECT_TRUE(passes.count(name)) << name;
@@ -54,7 +54,8 @@ TEST(FrameCli, PassesListsEveryRegisteredPassWithItsResourcesAndTheFrames) {
   EXPECT_EQ(passes["test-post"]["plugin"], "test-good");
   EXPECT_EQ(passes["tonemap"]["plugin"], "built-in");
   EXPECT_EQ(json["frames"]["forward"],
-            nlohmann::json({"z-prepass", "shadows", "forward-opaque", "alpha-mask", "alpha-blend", "exposure", "tonemap"}));
+            nlohmann::json({"z-prepass", "shadows", "light-cull", "forward-opaque", "alpha-mask", "alpha-blend", "exposure",
+                            "tonemap"}));
   const auto& plugged = json["frames"]["test-frame"];
   ASSERT_TRUE(plugged.is_array());
   EXPECT_EQ(plugged[plugged.size() - 3], "test-post") << "before exposure: " << plugged.dump();
