@@ -21,7 +21,8 @@ float skyScale(std::span<const scene::Light> lights) {
 glm::vec3 skyLuminance(std::span<const scene::Light> lights) { return kDimSky * skyScale(lights); }
 
 FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& camera, uint32_t width,
-                                uint32_t height, std::span<const ShadowView> shadows) {
+                                uint32_t height, std::vector<GpuLight>& gpuLights,
+                                std::span<const ShadowView> shadows) {
   FrameUniforms f{};
   f.view = camera.view();
   f.projection = camera.projectionMatrix(float(width) / float(height));
@@ -35,9 +36,10 @@ FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& 
                       .intensity = 3.0f, .direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.5f)),
                       .shadows = false});
   const auto count = std::min<size_t>(lights.size(), kMaxLights);
+  gpuLights.assign(count, GpuLight{});
   for (size_t i = 0; i < count; ++i) {
     const auto& l = lights[i];
-    GpuLight& g = f.lights[i];
+    GpuLight& g = gpuLights[i];
     g.positionType = glm::vec4(l.position, float(int(l.type)));
     g.directionRange = glm::vec4(glm::normalize(l.direction), l.range);
     g.color = glm::vec4(l.color * l.intensity, 0.0f);
@@ -47,7 +49,7 @@ FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& 
   f.counts = glm::uvec4(uint32_t(count), width, height, 0u);
   for (const ShadowView& v : shadows) {
     if (v.light >= count) continue;
-    GpuLight& g = f.lights[v.light];
+    GpuLight& g = gpuLights[v.light];
     if (v.face == 0) {
       g.cone.z = float(v.slot + 1);
       g.shadowMatrix = v.viewProjection;

@@ -1,6 +1,7 @@
 #pragma once
 // The per-frame uniforms (shaders/frame_interface.h), filled from the scene.
 #include <span>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <shadelgraph/render/shaders/frame_interface.h>
@@ -24,11 +25,12 @@ glm::vec3 skyLuminance(std::span<const scene::Light> lights);
 // background behind every object (forward-opaque's clear colour) follows it too.
 float skyScale(std::span<const scene::Light> lights);
 
-// A scene without lights gets a default sun so it is never black. Lights past
-// kMaxLights are dropped (the default sun casts no shadow). Shadowed lights
-// get their maps' slots, matrices and cascade ends from `shadows`
-// (render::shadowViews of the scene's lights, computed once per frame).
+// A scene without lights gets a default sun so it is never black (it casts no
+// shadow); `lights` receives the frame's lights (frame.counts.x of them, for
+// kBindLights). A scene with more than kMaxLights is an error (Renderer's
+// constructor). Shadowed lights get their maps' slots, matrices and cascade
+// ends from `shadows` (render::shadowViews of the scene's lights, computed once per frame).
 FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& camera, uint32_t width,
-                                uint32_t height, std::span<const ShadowView> shadows = {});
+                                uint32_t height, std::vector<GpuLight>& lights, std::span<const ShadowView> shadows = {});
 
 }  // namespace sg::render

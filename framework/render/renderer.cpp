@@ -1,10 +1,13 @@
 #include <shadelgraph/render/renderer.hpp>
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include <shadelgraph/gpu/error.hpp>
 #include <shadelgraph/render/frame_uniforms.hpp>
 #include <shadelgraph/render/frustum.hpp>
+#include <shadelgraph/render/shaders/light_grid.h>
 #include <shadelgraph/scene/bounds.hpp>
 
 namespace sg::render {
@@ -46,10 +49,23 @@ Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, const plugin:
       deformation_(device.context(), device.memory(), scene, gpuScene_.deformation()),
       executor_(device) {
   registry_.check();
+  if (scene.lights.size() > kMaxLights)
+    throw std::invalid_argument("the scene has " + std::to_string(scene.lights.size()) + " lights; at most " +
+                                std::to_string(kMaxLights) + " are supported");
   for (auto& uniforms : frameUniforms_)
     uniforms = gpu::Buffer(device.context(), device.memory(),
                            {sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryLocation::Upload,
                             "frame uniforms", "frame"});
+  // Sized for the scene's lights (at least the default sun).
+  const size_t lightBytes = std::max<size_t>(scene.lights.size(), 1) * sizeof(GpuLight);
+  for (auto& lights : lights_)
+    lights = gpu::Buffer(device.context(), device.memory(),
+                         {lightBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryLocation::Upload, "lights", "frame"});
+  const shader::SgLightGridHeader noGrid{};
+  noLightGrid_ = gpu::Buffer(device.context(), device.memory(),
+                             {sizeof noGrid + sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                              gpu::MemoryLocation::Upload, "no light grid", "frame"});
+  noLightGrid_.write(&noGrid, sizeof noGrid);
   for (const auto& instance : scene.instances) modes_.push_back(instance.shading);
   for (const auto& draw : gpuScene_.draws())
     if (!registry_.hasMaterial(draw.materialStack))
@@ -126,10 +142,12 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
   const auto lights = std::span(scene_.lights).first(std::min<size_t>(scene_.lights.size(), kMaxLights));
   std::vector<ShadowView> shadows =
       shadowViews(lights, drawSpheres_, {cam.view(), cam.projectionMatrix(aspect), cam.znear, cam.zfar});
-  const FrameUniforms uniforms = makeFrameUniforms(scene_, cam, settings.width, settings.height, shadows);
+  const FrameUniforms uniforms = makeFrameUniforms(scene_, cam, settings.width, settings.height, frameLights_, shadows);
   const auto slot = uint32_t(frameNumber_ % 2);
   gpu::Buffer& uniformBuffer = frameUniforms_[slot];
   uniformBuffer.write(&uniforms, sizeof uniforms);
+  gpu::Buffer& lightBuffer = lights_[frameNumber_ % 2];
+  lightBuffer.write(frameLights_.data(), frameLights_.size() * sizeof(GpuLight));
 
   if (!output_ || output_->desc().width != settings.width || output_->desc().height != settings.height) {
     vkDeviceWaitIdle(device_.context().device());
@@ -143,7 +161,7 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
                           ? std::abs(uniforms.projection[1][1]) * 0.5f * float(settings.height)
                           : 0.0f;
   auto frame = std::make_unique<Frame>(Frame{
-      {gpuScene_, uniformBuffer, gpuScene_.allDraws(), registry_, layerTextures_},
+      {gpuScene_, uniformBuffer, lightBuffer, noLightGrid_, gpuScene_.allDraws(), registry_, layerTextures_},
       {scene_, device_, executor_, modes_, drawSpheres_, frameNumber_++, cam.position(), focal, uniforms.viewProjection,
        settings.width, settings.height, settings.occlusionCulling ? &culling_ : nullptr},
       {}, {}, {}, std::move(shadows)});

@@ -13,6 +13,7 @@
 #include <shadelgraph/plugin/frame_description.hpp>
 #include <shadelgraph/render/draw_culling.hpp>
 #include <shadelgraph/render/frame_context.hpp>
+#include <shadelgraph/render/frame_uniforms.hpp>
 #include <shadelgraph/render/gpu_scene.hpp>
 #include <shadelgraph/render/layer_textures.hpp>
 #include <shadelgraph/render/object_deformation.hpp>
@@ -96,6 +97,9 @@ class Renderer {
   DrawCulling culling_;
   ObjectDeformation deformation_;
   gpu::Buffer frameUniforms_[2];  // one per frame in flight
+  gpu::Buffer lights_[2];         // the frame's lights (kBindLights), one per frame in flight
+  gpu::Buffer noLightGrid_;       // bound as the light grid when the frame has none (header dims.w = 0)
+  std::vector<GpuLight> frameLights_;
   std::optional<gpu::Image> output_;
   gpu::GraphExecutor executor_;
 };

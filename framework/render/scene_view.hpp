@@ -1,6 +1,6 @@
 #pragma once
 // What scene passes draw: the uploaded scene, this frame's uniform buffer
-// (camera, lights; written by the host before the frame is submitted) and the
+// (camera) and lights (written by the host before the frame is submitted) and the
 // materials (layer stacks) the draws name.
 #include <map>
 #include <span>
@@ -19,6 +19,8 @@ namespace sg::render {
 struct SceneView {
   const GpuScene& scene;
   const gpu::Buffer& frameUniforms;
+  const gpu::Buffer& lights;       // Light[frame.counts.x] (kBindLights)
+  const gpu::Buffer& noLightGrid;  // the light grid's stand-in when the frame has none (render/light_binding.hpp)
   std::span<const uint32_t> draws;  // the draws (indices into scene.draws()) the pass takes
   const plugin::Registry& materials;
   LayerTextures& layerTextures;  // the layers' own textures, loaded when first drawn

@@ -65,8 +65,9 @@ vec3 shadeMetallicRoughness(Surface s, vec3 baseColor, float metallic, float rou
                             vec3 emissive, vec3 N) {
   vec3 V = normalize(frame.cameraPosition.xyz - s.position);
   vec3 color = vec3(0.0);
-  for (uint i = 0u; i < frame.counts.x; ++i) {
-    LightSample light = sgLightAt(frame.lights[i], s.position);
+  SgLightList lights = sgLightsAt(s.position);
+  for (uint k = 0u; k < lights.count; ++k) {
+    LightSample light = sgLightAt(sgLight(lights, k), s.position);
     color += brdfGltf(baseColor, metallic, roughness, N, V, light.direction, light.radiance);
   }
   float NdotV = clamp(dot(N, V), 1e-4, 1.0);

@@ -40,8 +40,9 @@ vec4 diffuseLight(Surface s) {
   if (material.flags.w != 0u) return m.baseColor;  // KHR_materials_unlit
   vec3 albedo = m.baseColor.rgb * (1.0 - m.metallic);
   vec3 color = vec3(0.0);
-  for (uint i = 0u; i < frame.counts.x; ++i) {
-    LightSample light = sgLightAt(frame.lights[i], s.position);
+  SgLightList lights = sgLightsAt(s.position);
+  for (uint k = 0u; k < lights.count; ++k) {
+    LightSample light = sgLightAt(sgLight(lights, k), s.position);
     color += albedo / kPi * light.radiance * clamp(dot(m.N, light.direction), 0.0, 1.0);
   }
   color += m.occlusion * ambientDiffuse(m.N) * albedo;

@@ -12,8 +12,9 @@ vec4 specularLight(Surface s) {
   vec3 f0 = mix(vec3(0.04), m.baseColor.rgb, m.metallic);
   float NdotV = clamp(abs(dot(m.N, V)), 1e-4, 1.0);
   vec3 color = diffuse.rgb;
-  for (uint i = 0u; i < frame.counts.x; ++i) {
-    LightSample light = sgLightAt(frame.lights[i], s.position);
+  SgLightList lights = sgLightsAt(s.position);
+  for (uint k = 0u; k < lights.count; ++k) {
+    LightSample light = sgLightAt(sgLight(lights, k), s.position);
     vec3 H = normalize(V + light.direction);
     float NdotL = clamp(dot(m.N, light.direction), 0.0, 1.0);
     vec3 F = fresnelSchlick(f0, clamp(dot(V, H), 0.0, 1.0));

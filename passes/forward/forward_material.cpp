@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <set>
 
+#include <shadelgraph/render/light_binding.hpp>
 #include <shadelgraph/render/material_variants.hpp>
 #include <shadelgraph/render/environment_binding.hpp>
 #include <shadelgraph/render/shadow_binding.hpp>
@@ -35,6 +36,7 @@ std::vector<gpu::DescriptorWrite> forwardDescriptors(PassContext& ctx, const ren
   std::vector<gpu::DescriptorWrite> writes{{shader::kBindFrame, gpu::BufferBinding{view.frameUniforms.handle()}},
                                            render::shadowMapsWrite(ctx, view)};
   for (const auto& w : render::environmentWrites(ctx, view)) writes.push_back(w);
+  for (const auto& write : render::lightWrites(ctx, view)) writes.push_back(write);
   uint32_t binding = render::kBindLayerFrameInputs;
   for (const auto& name : material.layers) {
     const auto& layer = view.materials.layer(name);
@@ -54,6 +56,7 @@ gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& regist
   std::vector<gpu::DescriptorBinding> bindings{{shader::kBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
                                                render::shadowMapsBinding()};
   for (const auto& b : render::environmentBindings()) bindings.push_back(b);
+  for (const auto& binding : render::lightBindings()) bindings.push_back(binding);
   for (uint32_t i = 0; i < render::forwardFrameInputs(registry, material).size(); ++i)
     bindings.push_back({render::kBindLayerFrameInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
   return {.vertex = {.path = "passes/forward/forward.vert"},
@@ -70,6 +73,7 @@ gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& regist
 void readFrameInputs(graph::Pass& pass, const render::SceneView& view, std::span<const uint32_t> draws) {
   render::readShadowMaps(pass, view, graph::ShaderStage::Fragment);
   render::readEnvironment(pass, view, graph::ShaderStage::Fragment);
+  render::readLightGrid(pass, view, graph::ShaderStage::Fragment);
   std::set<const plugin::MaterialStack*> materials;
   for (uint32_t d : draws) materials.insert(&forwardMaterial(view, d));
   for (const auto* material : materials)

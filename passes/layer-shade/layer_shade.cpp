@@ -3,6 +3,7 @@
 #include <map>
 
 #include <shadelgraph/gpu/pass_context.hpp>
+#include <shadelgraph/render/light_binding.hpp>
 #include <shadelgraph/render/material_variants.hpp>
 #include <shadelgraph/render/environment_binding.hpp>
 #include <shadelgraph/render/shadow_binding.hpp>
@@ -40,6 +41,7 @@ gpu::ComputePipelineDesc layerShadePipeline(const plugin::MaterialLayer& layer) 
   layout.bindings.push_back({kBindLayerOutput, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
   layout.bindings.push_back(render::shadowMapsBinding());
   for (const auto& b : render::environmentBindings()) layout.bindings.push_back(b);
+  for (const auto& binding : render::lightBindings()) layout.bindings.push_back(binding);
   for (uint32_t i = 0; i < layer.reads.size(); ++i)
     layout.bindings.push_back({kBindLayerInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
   for (uint32_t i = 0; i < layer.frameInputs.size(); ++i)
@@ -60,6 +62,7 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
   render::readShadowMaps(pass, frame.view, graph::ShaderStage::Compute);
   render::readSceneGeometry(pass, frame.view, graph::Access::StorageRead, graph::ShaderStage::Compute);
   render::readEnvironment(pass, frame.view, graph::ShaderStage::Compute);
+  render::readLightGrid(pass, frame.view, graph::ShaderStage::Compute);
   bool persistent = false;
   std::map<graph::ResourceHandle, graph::ResourceHandle> written;  // each output once, however many steps write it
   for (auto& step : steps) {
@@ -91,6 +94,7 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
           {kBindLayerOutput, gpu::ImageBinding{ctx.image(step.output).view(), VK_IMAGE_LAYOUT_GENERAL, VK_NULL_HANDLE}},
           render::shadowMapsWrite(ctx, frame.view)};
       for (const auto& w : render::environmentWrites(ctx, frame.view)) writes.push_back(w);
+      for (const auto& write : render::lightWrites(ctx, frame.view)) writes.push_back(write);
       for (uint32_t i = 0; i < step.inputs.size(); ++i) writes.push_back(sampled(kBindLayerInputs + i, step.inputs[i]));
       for (uint32_t i = 0; i < step.frameInputs.size(); ++i)
         writes.push_back(sampled(render::kBindLayerFrameInputs + i, step.frameInputs[i]));

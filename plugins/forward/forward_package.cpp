@@ -7,6 +7,7 @@
 #include <shadelgraph/render/environment_binding.hpp>
 #include <shadelgraph/render/frame_context.hpp>
 #include <shadelgraph/render/frame_uniforms.hpp>
+#include <shadelgraph/render/light_binding.hpp>
 #include <shadelgraph/render/shadow_binding.hpp>
 #include <shadelgraph/render/shadow_views.hpp>
 
@@ -17,6 +18,7 @@
 #include "exposure/exposure.hpp"
 #include "forward/forward.hpp"
 #include "forward/forward_material.hpp"
+#include "light-cull/light_cull.hpp"
 #include "shadows/shadows.hpp"
 #include "skinning/skinning.hpp"
 #include "occlusion-cull/occlusion_cull.hpp"
@@ -27,6 +29,10 @@ namespace sg::plugins {
 namespace {
 
 using render::FrameContext;
+
+// Above this many lights with a range a frame culls them per cluster (measured:
+// docs/many-lights.md); 8 was the old cap, so no frame that rendered before gains the pass.
+constexpr uint32_t kLightCullThreshold = 8;
 
 graph::ResourceHandle depthTarget(FrameContext& ctx) {
   return ctx.has("scene.depth") ? ctx.read("scene.depth")
@@ -94,6 +100,25 @@ void declareSkinning(FrameContext& ctx) {
             passes::addSkinning(ctx.graph(), ctx.inputs().executor, ctx.gpuScene(), *deformation));
 }
 
+// The light grid, when the frame has more lights with a range (the only ones
+// a cluster can leave out) than the pass's threshold and something visible to
+// shade; otherwise no pass and no grid (every light loop visits every light).
+void declareLightCull(FrameContext& ctx) {
+  const auto& in = ctx.inputs();
+  const auto lights = uint32_t(std::max<size_t>(in.scene.lights.size(), 1));  // a scene without lights gets a sun
+  const auto ranged = uint32_t(std::count_if(in.scene.lights.begin(), in.scene.lights.end(), [](const scene::Light& l) {
+    return l.type != scene::LightType::Directional && l.range > 0.0f;
+  }));
+  const int threshold = ctx.parameter<int>("threshold");
+  if (threshold < 0) throw plugin::FrameError("pass 'light-cull': parameter 'threshold' must be 0 or more");
+  const auto visible = ctx.visibleDraws();
+  if (ranged <= uint32_t(threshold) || visible.empty()) return;
+  std::vector<glm::vec4> spheres;
+  for (const uint32_t d : visible) spheres.push_back(in.drawSpheres[d]);
+  const auto grid = passes::lightGridFor(in.width, in.height, in.viewProjection, spheres, lights);
+  ctx.write(render::kLightGridResource, passes::addLightCull(ctx.graph(), ctx.view({}), grid, lights));
+}
+
 }  // namespace
 
 void registerForwardPackage(plugin::Registry& registry) {
@@ -126,6 +151,14 @@ void registerForwardPackage(plugin::Registry& registry) {
                     .writes = {render::kEnvironmentIrradianceResource, render::kEnvironmentSpecularResource,
                                render::kEnvironmentBrdfResource},
                     .declare = passes::addEnvironment});
+  registry.addPass({.name = "light-cull",
+                    .description = "clustered light culling: which lights reach each screen tile and depth slice "
+                                   "(only when the frame has more lights with a range than the threshold)",
+                    .reads = {plugin::kForwardDrawsResource},
+                    .writes = {render::kLightGridResource},
+                    .parameters = {{"threshold", int(kLightCullThreshold),
+                                    "point and spot lights with a range a frame may have without culling (docs/many-lights.md)"}},
+                    .declare = declareLightCull});
   registry.addPass({.name = "forward-opaque",
                     .description = "opaque objects shaded forward (their material's fragment variant); clears the HDR colour",
                     .reads = {plugin::kForwardDrawsResource, "scene.depth"},
@@ -205,7 +238,7 @@ void registerForwardPackage(plugin::Registry& registry) {
                                                    ctx.read(plugin::kOutputResource), ctx.debugColors));
                     }});
   registry.addFrame({.name = "forward",
-                     .passes = {{.pass = "skinning"}, {.pass = "z-prepass"}, {.pass = "shadows"}, {.pass = "environment"},
+                     .passes = {{.pass = "skinning"}, {.pass = "z-prepass"}, {.pass = "shadows"}, {.pass = "environment"}, {.pass = "light-cull"},
                                 {.pass = "forward-opaque"}, {.pass = "alpha-mask"}, {.pass = "alpha-blend"},
                                 {.pass = "exposure"}, {.pass = "bloom"}, {.pass = "tonemap"}}});
 }

@@ -45,7 +45,7 @@ TEST(FrameCli, PassesListsEveryRegisteredPassWithItsResourcesAndTheFrames) {
   const auto json = nlohmann::json::parse(r.out);
   std::map<std::string, nlohmann::json> passes;
   for (const auto& p : json["passes"]) passes[p["name"].get<std::string>()] = p;
-  for (const char* name : {"skinning", "z-prepass", "forward-opaque", "alpha-mask", "alpha-blend", "exposure", "tonemap",
+  for (const char* name : {"skinning", "z-prepass", "light-cull", "forward-opaque", "alpha-mask", "alpha-blend", "exposure", "tonemap",
                            "shadel-clear", "shadel-mark", "support-expand", "shadel-allocate", "work-aggregate",
                            "layer-shade", "composite", "counters-readback", "decoupled-debug-view", "test-post"})
     EXPECT_TRUE(passes.count(name)) << name;
@@ -56,7 +56,7 @@ TEST(FrameCli, PassesListsEveryRegisteredPassWithItsResourcesAndTheFrames) {
   EXPECT_EQ(passes["test-post"]["plugin"], "test-good");
   EXPECT_EQ(passes["tonemap"]["plugin"], "built-in");
   EXPECT_EQ(json["frames"]["forward"],
-            nlohmann::json({"skinning", "z-prepass", "shadows", "environment", "forward-opaque", "alpha-mask", "alpha-blend", "exposure",
+            nlohmann::json({"skinning", "z-prepass", "shadows", "environment", "light-cull", "forward-opaque", "alpha-mask", "alpha-blend", "exposure",
                             "bloom", "tonemap"}));
   EXPECT_EQ(passes["skinning"]["writes"], nlohmann::json({"scene.vertices"}));
   const auto& plugged = json["frames"]["test-frame"];

@@ -27,9 +27,9 @@ using Names = std::set<std::string>;
 
 // Passes present only when the scene calls for them.
 const Names kEffectPasses = {"alpha-mask", "alpha-blend", "shadows", "environment-downsample", "environment-prefilter",
-                              "bloom"};
+                              "bloom", "light-cull"};
 // Graph resources that exist only for an effect (matched by name prefix).
-const Names kEffectResourcePrefixes = {"shadow", "environment", "bloom", "hdr (bloom)"};
+const Names kEffectResourcePrefixes = {"shadow", "environment", "bloom", "hdr (bloom)", "light grid"};
 const Names kPrefilterPasses = {"environment-downsample", "environment-prefilter"};
 const Names kEnvironmentMaps = {"environment brdf", "environment irradiance", "environment specular"};
 const Names kBloomResources = {"bloom level 1", "bloom level 2", "bloom level 3", "bloom level 4", "bloom level 5",
@@ -128,6 +128,10 @@ std::vector<Row> matrix() {
       {"UnshadowedPoint", [] { auto s = baseSet(); s.lights.push_back(bulb(false)); return s; }, {}, {}, {}},
       {"ShadowedPointReachingNothingVisible",
        [] { auto s = baseSet(); s.lights.push_back(bulb(true, {0.0f, 2.0f, 30.0f}, 5.0f)); return s; }, {}, {}, {}},
+      // Many lights: above light-cull's threshold the frame culls them per cluster (docs/many-lights.md).
+      {"ThreeHundredPointLights", [] { return makeLitSetWithPointLights(300); }, {"light-cull"}, {"light-cull"},
+       {"light grid"}},
+      {"EightPointLights", [] { return makeLitSetWithPointLights(8); }, {}, {}, {}},
       {"SunSpotAndPoint",
        [] {
          auto s = baseSet();
@@ -178,7 +182,8 @@ Effects effectsOf(const nlohmann::json& plan) {
   }
   for (const auto& r : plan["resources"]) {
     const auto name = r["name"].get<std::string>();
-    if (r["culled"].get<bool>()) continue;
+    // The harness's own copies (hdr-capture, light-grid-capture) are not the frame's.
+    if (r["culled"].get<bool>() || name.ends_with("(captured)")) continue;
     for (const auto& prefix : kEffectResourcePrefixes)
       if (name.rfind(prefix, 0) == 0) e.resources.insert(name);
     if (name == "shadow atlas")

@@ -8,10 +8,12 @@
 #include <shadelgraph/gpu/pass_context.hpp>
 #include <shadelgraph/graph/render_graph.hpp>
 #include <shadelgraph/render/frame_context.hpp>
+#include <shadelgraph/render/light_binding.hpp>
 
 namespace sg::test {
 
-void HdrCapture::registerIn(plugin::Registry& registry, const nlohmann::json& exposure) {
+void HdrCapture::registerIn(plugin::Registry& registry, const nlohmann::json& exposure,
+                            const nlohmann::json& lightCull) {
   registry.beginPlugin("stability-test");
   // The capture is the only reader of the version it copies (readers on several
   // queues would share one General layout, which exposure's and tonemap's
@@ -56,18 +58,50 @@ void HdrCapture::registerIn(plugin::Registry& registry, const nlohmann::json& ex
                     }});
   // The decoupled frame (which shades forward objects too) with the HDR capture last before
   // exposure and the exposure capture between exposure and tonemap.
+  registry.addPass({.name = "light-grid-capture",
+                    .description = "copies the light grid to the host (only when the frame has one)",
+                    .reads = {},
+                    .writes = {render::kLightGridResource},
+                    .declare = [this](render::FrameContext& frame) {
+                      lightGrid_.reset();
+                      if (!frame.has(render::kLightGridResource)) return;
+                      auto& graph = frame.graph();
+                      const auto grid = frame.read(render::kLightGridResource);
+                      const uint64_t bytes = graph.resource(grid.id).buffer.size;
+                      auto copy = graph.createBuffer("light grid (captured)", {.size = bytes});
+                      auto& pass = graph.addPass("light-grid-capture", graph::QueueClass::Graphics,
+                                                 graph::PassKind::Transfer);
+                      pass.read(grid, graph::Access::TransferSrc);
+                      copy = pass.write(copy, graph::Access::TransferDst);
+                      lightGrid_ = std::make_shared<gpu::Buffer>(device_->context(), device_->memory(),
+                                                                 gpu::BufferDesc{bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                                                 gpu::MemoryLocation::Readback,
+                                                                                 "light grid capture", "readback"});
+                      pass.execute([target = lightGrid_, grid, copy, bytes](PassContext& ctx) {
+                        const VkBufferCopy region{0, 0, bytes};
+                        for (VkBuffer to : {target->handle(), ctx.buffer(copy).handle()})
+                          vkCmdCopyBuffer(ctx.cmd(), ctx.buffer(grid).handle(), to, 1, &region);
+                        gpu::memoryBarrier(ctx.cmd(), {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+                                           {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT});
+                      });
+                      frame.write(render::kLightGridResource, copy);
+                    }});
+  std::map<std::string, nlohmann::json> parameters;
+  if (exposure.is_object()) parameters["exposure"] = exposure;
+  if (lightCull.is_object()) parameters["light-cull"] = lightCull;
   registry.addFrame({.name = kHdrCapturedFrame,
                      .base = "decoupled",
-                     .passes = {{.pass = "hdr-capture", .before = {"exposure"}},
+                     // light-grid-capture first: while it holds shadel-clear back, the tie
+                     // between the ready entries goes to it, not to hdr-capture.
+                     .passes = {{.pass = "light-grid-capture", .after = {"light-cull"}, .before = {"shadel-clear"}},
+                                {.pass = "hdr-capture", .before = {"exposure"}},
                                 {.pass = "exposure-capture", .after = {"exposure"}, .before = {"tonemap"}}},
-                     .parameters = exposure.is_object() ? std::map<std::string, nlohmann::json>{{"exposure", exposure}}
-                                                        : std::map<std::string, nlohmann::json>{}});
+                     .parameters = parameters});
   registry.addFrame({.name = kHdrFinalCapturedFrame,
                      .base = "decoupled",
                      .passes = {{.pass = "hdr-capture", .after = {"bloom"}, .before = {"tonemap"}},
                                 {.pass = "exposure-capture", .after = {"exposure"}, .before = {"tonemap"}}},
-                     .parameters = exposure.is_object() ? std::map<std::string, nlohmann::json>{{"exposure", exposure}}
-                                                        : std::map<std::string, nlohmann::json>{}});
+                     .parameters = parameters});
 }
 
 shader::SgExposure HdrCapture::exposure() const {
@@ -99,6 +133,13 @@ void HdrCapture::record(PassContext& ctx, const gpu::Image& hdr, const gpu::Imag
                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &same);
   gpu::memoryBarrier(ctx.cmd(), {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
                      {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT});
+}
+
+std::vector<uint32_t> HdrCapture::lightGrid() const {
+  if (!lightGrid_) return {};
+  std::vector<uint32_t> out(lightGrid_->size() / sizeof(uint32_t));
+  std::memcpy(out.data(), lightGrid_->mapped(), out.size() * sizeof(uint32_t));
+  return out;
 }
 
 std::vector<glm::vec4> HdrCapture::pixels() const {

@@ -1,5 +1,8 @@
 #include "stability_scenes.hpp"
 
+#include <cmath>
+#include <string>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <shadelgraph/scene/procedural_meshes.hpp>
@@ -66,6 +69,20 @@ scene::Scene makeLitSet(uint32_t textureSize) {
   placeMesh(s, scene::makeSphere(1.0f, 48, 24), stoneMat, at(1.4f, 1.0f, -0.6f));
   addLights(s);
   s.cameras.push_back(cameraAt({0.5f, 3.0f, 6.0f}, {0.0f, 0.6f, 0.0f}));
+  return s;
+}
+
+scene::Scene makeLitSetWithPointLights(uint32_t count) {
+  scene::Scene s = makeLitSet();
+  s.lights.clear();
+  const auto side = uint32_t(std::ceil(std::sqrt(float(count))));
+  for (uint32_t i = 0; i < count; ++i) {
+    const float u = float(i % side) / float(side - 1), v = float(i / side) / float(side - 1);
+    const glm::vec3 hue = glm::abs(glm::fract(float(i) * 0.137f + glm::vec3(0.0f, 2.0f / 3.0f, 1.0f / 3.0f)) * 2.0f - 1.0f);
+    s.lights.push_back({.name = "bulb " + std::to_string(i), .type = scene::LightType::Point,
+                        .color = glm::mix(glm::vec3(1.0f), hue, 0.6f), .intensity = 0.4f, .range = 1.2f,
+                        .position = {8.0f * u - 4.0f, 0.2f + 0.5f * float(i % 5) / 4.0f, 8.0f * v - 4.0f}});
+  }
   return s;
 }
 

@@ -11,6 +11,11 @@ namespace sg::test {
 // The set around the origin, about 8 units across, with its camera.
 scene::Scene makeLitSet(uint32_t textureSize = 128);
 
+// The lit set with its lights replaced by `count` point lights on a grid over
+// the ground (0.2 to 0.7 above it, range 1.2: a ground point is within reach
+// of about 20 of 300), each of its own colour.
+scene::Scene makeLitSetWithPointLights(uint32_t count);
+
 // A scene holding only `mesh` (one primitive) with a tiles material (colour
 // and normal map), lit by a sun from above-front and a lamp; no camera.
 scene::Scene makeSingleMesh(scene::Primitive mesh, uint32_t textureSize = 128);

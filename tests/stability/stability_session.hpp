@@ -27,13 +27,14 @@ struct StabilityFrame {
 
 class StabilitySession {
  public:
-  // `exposure`: the exposure pass's parameters, when an object (e.g. {"adaptation": 0.5}).
+  // `exposure`, `lightCull`: those passes' parameters, when objects (e.g. {"adaptation": 0.5}).
   // `frame`: kHdrCapturedFrame (HDR before exposure) or kHdrFinalCapturedFrame (last before tonemap).
   StabilitySession(scene::Scene s, scene::ShadingMode mode, plugins::DecoupledSettings settings = {},
-                   const nlohmann::json& exposure = nullptr, const char* frame = kHdrCapturedFrame)
+                   const nlohmann::json& exposure = nullptr, const char* frame = kHdrCapturedFrame,
+                   const nlohmann::json& lightCull = nullptr)
       : scene_(std::move(s)), context_(validatedOptions()) {
     plugins::registerBuiltins(registry_);
-    capture_.registerIn(registry_, exposure);
+    capture_.registerIn(registry_, exposure, lightCull);
     device_ = std::make_unique<gpu::Device>(context_);
     device_->shaders().add(gpu::builtinShaders());
     capture_.setDevice(*device_);
@@ -61,6 +62,8 @@ class StabilitySession {
   graph::CompiledPlan plan(uint32_t width, uint32_t height, std::optional<scene::Camera> camera = {}) {
     return renderer_->plan({.width = width, .height = height, .cameraOverride = camera});
   }
+  // The last frame's light grid (light_grid.h) as words; empty when the frame culled no lights.
+  std::vector<uint32_t> lightGrid() const { return capture_.lightGrid(); }
   render::Renderer& renderer() { return *renderer_; }
   const scene::Scene& scene() const { return scene_; }
 

@@ -1,10 +1,13 @@
 // The frame's punctual lights at a surface point (KHR_lights_punctual):
-// sgLightAt gives, for one of frame.lights and a world position, the unit
-// direction from the position towards the light and the radiance arriving
+// sgLightsAt gives the lights that may reach a world position (every light,
+// or its cluster's list when the frame has a light grid: passes/light-cull),
+// sgLight the k-th of them, and sgLightAt, for one light and the position, the
+// unit direction from the position towards the light and the radiance arriving
 // there (colour * intensity, times the falloff, times the light's shadow
 // visibility when it has a shadow map). A layer's light loop:
-//   for (uint i = 0u; i < frame.counts.x; ++i) {
-//     LightSample l = sgLightAt(frame.lights[i], s.position);
+//   SgLightList lights = sgLightsAt(s.position);
+//   for (uint k = 0u; k < lights.count; ++k) {
+//     LightSample l = sgLightAt(sgLight(lights, k), s.position);
 //     color += brdf(N, V, l.direction) * l.radiance * max(dot(N, l.direction), 0.0);
 //   }
 // Part of the material SDK (framework/plugin/shaders/material.glsl).
@@ -12,8 +15,48 @@
 #define SG_LIGHTS_GLSL
 
 #include <framework/render/shaders/frame.glsl>
+#include <framework/render/shaders/light_buffer.glsl>
+#include <framework/render/shaders/light_grid.h>
 
 #define SG_PI 3.14159265358979
+
+// The light grid (light_grid.h), or a stand-in whose header says "no grid".
+layout(set = 0, binding = kBindLightGrid, scalar) readonly buffer SgLightGrid {
+  SgLightGridHeader sgLightGridHeader;
+  uint sgLightGridData[];
+};
+
+// Lights `count` of them: light k is sgLights[k], or, when `cluster` is not
+// ~0u, sgLights[the k-th index of that cluster].
+struct SgLightList {
+  uint cluster;  // start of the cluster's record in sgLightGridData, or ~0u: every light
+  uint count;
+};
+
+// The lights that may reach `position`: its cluster's when the frame has a
+// grid and the position is inside it, else every light. Positions outside the
+// grid (off screen, nearer or farther than any visible draw: a decoupled
+// object's shadels beyond the screen edge) loop over every light, so the
+// result never depends on the grid, only its cost.
+SgLightList sgLightsAt(vec3 position) {
+  SgLightList every = SgLightList(~0u, frame.counts.x);
+  uvec4 dims = sgLightGridHeader.dims;
+  if (dims.w == 0u) return every;
+  vec4 clip = frame.viewProjection * vec4(position, 1.0);
+  vec4 depth = sgLightGridHeader.depth;
+  if (!(clip.w >= depth.x && clip.w <= depth.y)) return every;
+  vec2 ndc = clip.xy / clip.w;
+  if (any(greaterThan(abs(ndc), vec2(1.0)))) return every;
+  uvec2 tile = min(uvec2((ndc * 0.5 + 0.5) * vec2(dims.xy)), dims.xy - 1u);
+  uint slice = min(uint(max(log(clip.w / depth.x) * depth.z, 0.0)), dims.z - 1u);
+  uint record = ((slice * dims.y + tile.y) * dims.x + tile.x) * (dims.w + 1u);
+  uint count = sgLightGridData[record];
+  return count == kLightGridEveryLight ? every : SgLightList(record, count);
+}
+
+Light sgLight(SgLightList list, uint k) {
+  return sgLights[list.cluster == ~0u ? k : sgLightGridData[list.cluster + 1u + k]];
+}
 
 // The shadow atlas (passes/shadows): the maps of the shadowed lights,
 // frame.shadowAtlas.z maps a row; map s's matrix is frame.shadowMatrices[s].

@@ -5,7 +5,8 @@
 //     (surface.glsl);
 //   - frame: the frame uniforms (camera, ambient, output size, lights; set 0,
 //     binding 0) and sgScreenUv(worldPosition) (framework/render/shaders/frame.glsl);
-//   - sgLightAt(frame.lights[i], position): direction to a light and the
+//   - sgLightsAt(position), sgLight(list, k), sgLightAt(light, position): the
+//     lights that may reach a point, and direction to one and the
 //     radiance it delivers there; SG_PI (lights.glsl);
 //   - sgEnvironmentDiffuse / sgEnvironmentSpecular / sgEnvironmentBrdf: the
 //     scene's environment light when frame.environment.x > 0 (environment.glsl);

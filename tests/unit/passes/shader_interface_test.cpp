@@ -25,6 +25,7 @@
 #include <exposure/exposure_interface.h>
 #include <forward/forward_material.hpp>
 #include <layer-shade/layer_shade.hpp>
+#include <light-cull/light_cull.hpp>
 #include <shadel-allocate/shadel_allocate.hpp>
 #include <shadel-clear/shadel_clear.hpp>
 #include <shade-frame/shade_frame_work.hpp>
@@ -132,6 +133,9 @@ const std::map<std::string, size_t> kSharedRecords = {
     {"SgExposureParams", sizeof(shader::SgExposureParams)},
     {"SgEnvironmentPush", sizeof(shader::SgEnvironmentPush)},
     {"SgBloomPush", sizeof(shader::SgBloomPush)},
+    {"Light", sizeof(shader::Light)},
+    {"SgLightGridHeader", sizeof(shader::SgLightGridHeader)},
+    {"SgLightCullPush", sizeof(shader::SgLightCullPush)},
 };
 
 const char* typeName(VkDescriptorType type) {
@@ -233,6 +237,7 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   errors += mismatches("skinning", passes::skinningPipeline());
   errors += mismatches("environment-prefilter", passes::environmentPrefilterPipeline());
   errors += mismatches("bloom", passes::bloomPipeline());
+  errors += mismatches("light-cull", passes::lightCullPipeline());
   errors += mismatches("hi-z", passes::hiZPipeline());
   errors += mismatches("occlusion-cull", passes::occlusionCullPipeline());
   for (bool passthrough : {false, true})

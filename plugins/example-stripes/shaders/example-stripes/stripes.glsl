@@ -38,8 +38,9 @@ vec4 stripes(Surface s) {
   vec3 albedo = mix(kStripeB, kStripeA, stripeMask(s)) * s.color.rgb;
   vec3 N = s.normal;
   vec3 color = albedo * frame.ambient.rgb;
-  for (uint i = 0u; i < frame.counts.x; ++i) {
-    LightSample light = sgLightAt(frame.lights[i], s.position);
+  SgLightList lights = sgLightsAt(s.position);
+  for (uint k = 0u; k < lights.count; ++k) {
+    LightSample light = sgLightAt(sgLight(lights, k), s.position);
     color += albedo / SG_PI * light.radiance * max(dot(N, light.direction), 0.0);
   }
   return vec4(color, 1.0);
