@@ -118,9 +118,18 @@ TEST_F(ViewCli, TheDebugViewMatchesRender) {
   SG_REQUIRE_ASSETS();
   const fs::path viewed = dir_.path() / "viewed.png", rendered = dir_.path() / "rendered.png";
   const std::string frame = kMixedScene.string() + " --frame 0 --size 320x180 --bias 0";
-  const auto r = view(frame, "key 2\nwait 2\nscreenshot " + viewed.string() + "\nquit\n");
+  const fs::path record = dir_.path() / "record", shots = dir_.path() / "shots";
+  const auto r = view(frame + " --record " + record.string() + " --screenshot-dir " + shots.string(),
+                      "key 2\nwait 2\nscreenshot " + viewed.string() + "\nkey P\nquit\n");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("view: level"), std::string::npos) << r.output;
+  // --record wrote every frame shown, P the frame as the script's screenshot.
+  const auto shown = r.output.find("viewer: ");
+  ASSERT_NE(shown, std::string::npos) << r.output;
+  const auto frames = size_t(std::atoi(r.output.c_str() + shown + 8));
+  EXPECT_GT(frames, 2u);
+  EXPECT_EQ(size_t(std::distance(fs::directory_iterator(record), fs::directory_iterator())), frames);
+  EXPECT_EQ(differing(sg::image::readPng(shots / "screenshot-000.png"), sg::image::readPng(viewed), 0), 0u);
   const auto rr = sg::test::runCli("render " + frame + " --view level -o " + rendered.string());
   ASSERT_EQ(rr.exitCode, 0) << rr.output;
   const auto a = sg::image::readPng(viewed), b = sg::image::readPng(rendered);

@@ -2,6 +2,7 @@
 // compiled frame graph, decoupled shading's counters, and the controls.
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -183,14 +184,15 @@ void controlsPanel(Viewer& viewer) {
 void drawPanels(Viewer& viewer) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_Once);
-  ImGui::SetNextWindowSize(ImVec2(320, display.y * 0.5f), ImGuiCond_Once);
+  ImGui::SetNextWindowSize(ImVec2(std::min(430.0f, display.x * 0.36f), display.y * 0.9f), ImGuiCond_Once);
   if (ImGui::Begin("frame")) {
     if (ImGui::CollapsingHeader("timings", ImGuiTreeNodeFlags_DefaultOpen)) timingPanel(viewer);
-    if (ImGui::CollapsingHeader("frame graph")) graphPanel(viewer);
+    if (ImGui::CollapsingHeader("frame graph", ImGuiTreeNodeFlags_DefaultOpen)) graphPanel(viewer);
   }
   ImGui::End();
-  ImGui::SetNextWindowPos(ImVec2(display.x - 308, 8), ImGuiCond_Once);
-  ImGui::SetNextWindowSize(ImVec2(300, display.y * 0.6f), ImGuiCond_Once);
+  const float shadingWidth = std::min(360.0f, display.x * 0.3f);
+  ImGui::SetNextWindowPos(ImVec2(display.x - shadingWidth - 8, 8), ImGuiCond_Once);
+  ImGui::SetNextWindowSize(ImVec2(shadingWidth, display.y * 0.9f), ImGuiCond_Once);
   if (ImGui::Begin("shading")) {
     if (ImGui::CollapsingHeader("counters", ImGuiTreeNodeFlags_DefaultOpen)) countersPanel(viewer);
     if (ImGui::CollapsingHeader("controls", ImGuiTreeNodeFlags_DefaultOpen)) controlsPanel(viewer);
