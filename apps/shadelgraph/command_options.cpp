@@ -122,7 +122,7 @@ void addViewOptions(CLI::App& command, ViewArgs& args) {
                      "replay input events from a file, one a line (docs/viewer.md): key, mouse move|drag|click, "
                      "scroll, wait, screenshot, resize, quit");
   command.add_option("--record", args.record, "write every frame shown as DIR/frame-NNNNNN.png");
-  command.add_option("--screenshot-dir", args.screenshotDir, "where P and the Screenshot button write")
+  command.add_option("--screenshot-dir", args.screenshotDir, "where P and the save buttons write")
       ->capture_default_str();
   command.add_flag("--hide-panels", args.hidePanels, "start with the panels hidden (H toggles them)");
 }
