@@ -53,12 +53,14 @@ Swapchain::Swapchain(Context& context, VkSurfaceKHR surface, VkExtent2D size)
     alloc.commandBufferCount = 1;
     SG_VK(vkAllocateCommandBuffers(device, &alloc, &commandBuffer_));
   } catch (...) {
-    this->~Swapchain();
+    release();
     throw;
   }
 }
 
-Swapchain::~Swapchain() {
+Swapchain::~Swapchain() { release(); }
+
+void Swapchain::release() {
   const VkDevice device = context_.device();
   waitIdle();
   destroySwapchain();

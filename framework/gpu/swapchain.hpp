@@ -50,6 +50,7 @@ class Swapchain {
  private:
   void create();
   void destroySwapchain();
+  void release();  // everything, the surface last (the destructor, a failed constructor)
 
   Context& context_;
   VkSurfaceKHR surface_ = VK_NULL_HANDLE;
