@@ -8,6 +8,10 @@ find_package(TinyGLTF CONFIG REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
 find_package(Threads REQUIRED)
+# The viewer (shadelgraph view): GLFW windows, Dear ImGui with its GLFW and
+# Vulkan backends (Debian builds them into libimgui.a).
+find_package(glfw3 CONFIG REQUIRED)
+pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
 if(SG_BUILD_TESTS)
   find_package(GTest CONFIG REQUIRED)
   # SPIR-V reflection for the test that checks pass shaders against their declarations.

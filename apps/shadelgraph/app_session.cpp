@@ -43,7 +43,8 @@ void applyObjectModes(scene::Scene& scene, const std::vector<std::string>& modes
 }  // namespace
 
 AppSession::AppSession(const std::string& scenePath, const std::string& mode, plugins::DecoupledSettings settings,
-                       const MaterialArgs& materials, const FrameArgs& frame) {
+                       const MaterialArgs& materials, const FrameArgs& frame,
+                       const gpu::ContextOptions& contextOptions) {
   // The built-ins, then the plugins (which may use built-in layers and
   // passes); a bad plugin fails before the scene loads and the device starts.
   plugins::registerBuiltins(registry);
@@ -62,10 +63,21 @@ AppSession::AppSession(const std::string& scenePath, const std::string& mode, pl
   if (!mode.empty())
     for (auto& instance : scene.instances) instance.shading = *scene::parseShadingMode(mode);
   applyObjectModes(scene, frame.objectModes);
-  context = std::make_unique<gpu::Context>();
+  context = std::make_unique<gpu::Context>(contextOptions);
   device = std::make_unique<gpu::Device>(*context);
   device->shaders().add(gpu::builtinShaders());
   auto made = plugins::makeDecoupledRenderer(*device, scene, registry, std::move(resolved), std::nullopt, settings);
+  decoupled = std::move(made.shading);
+  renderer = std::move(made.renderer);
+}
+
+void AppSession::rebuildRenderer(const plugins::DecoupledSettings& settings) {
+  auto frame = renderer->frame();
+  renderer->finishFrames();
+  vkDeviceWaitIdle(device->context().device());
+  renderer.reset();
+  decoupled.reset();
+  auto made = plugins::makeDecoupledRenderer(*device, scene, registry, std::move(frame), std::nullopt, settings);
   decoupled = std::move(made.shading);
   renderer = std::move(made.renderer);
 }

@@ -25,10 +25,15 @@ struct AppSession {
   // materials: plugin libraries or directories of them (--plugin, --plugin-dir),
   // loaded after those of $SG_PLUGIN_PATH, and a material for every object.
   AppSession(const std::string& scenePath, const std::string& mode = "", plugins::DecoupledSettings settings = {},
-             const MaterialArgs& materials = {}, const FrameArgs& frame = {});
+             const MaterialArgs& materials = {}, const FrameArgs& frame = {},
+             const gpu::ContextOptions& contextOptions = gpu::ContextOptions::fromEnvironment());
   ~AppSession();
   // Non-zero (and a message on stderr) when validation reported anything.
   int validationExitCode() const;
+  // A new renderer and decoupled shading with other settings (the viewer's
+  // controls), on the same device and frame; objects' modes and materials are
+  // the scene's again.
+  void rebuildRenderer(const plugins::DecoupledSettings& settings);
 
   // Material layers, materials and passes: the built-ins and every plugin's.
   plugin::Registry registry;

@@ -52,9 +52,8 @@ void addFrameOptions(CLI::App& command, FrameArgs& args) {
                      "NAME=forward|decoupled|auto: one object's shading mode, over --mode; repeatable");
 }
 
-void addRenderOptions(CLI::App& command, RenderArgs& args) {
+void addFrameSetupOptions(CLI::App& command, RenderArgs& args) {
   addSceneOptions(command, args.scene, args.size, args.mode);
-  command.add_option("-o,--output", args.output, "PNG to write")->capture_default_str();
   auto* camera = command.add_option_function<int>(
       "--camera", [&args](const int& index) { args.camera = index; },
       "camera index of the scene, 0 or more (default: its first, else framing)");
@@ -88,6 +87,20 @@ void addRenderOptions(CLI::App& command, RenderArgs& args) {
       "budget mode: no shade frames; each frame fills what is missing, then reshades the stalest chunks this many "
       "milliseconds of layer shading afford, 0.01 to 10000 (docs/decoupled-shading.md)");
   budget->excludes("--shade-rate");
+  command.add_option("--time", args.time,
+                     "seconds into the scene's glTF animations at the last frame (clamped to each one's keys)")
+      ->capture_default_str();
+  command.add_option("--fps", args.fps, "glTF animation frames per second, 0.001 to 1000")->capture_default_str();
+  command.add_option("--animation", args.animation, "which glTF animations play: all, none, an index or a name")
+      ->capture_default_str();
+  command.add_flag("--no-aliasing", args.noAliasing, "give every transient its own memory");
+  addMaterialOptions(command, args.materials);
+  addFrameOptions(command, args.frameGraph);
+}
+
+void addRenderOptions(CLI::App& command, RenderArgs& args) {
+  addFrameSetupOptions(command, args);
+  command.add_option("-o,--output", args.output, "PNG to write")->capture_default_str();
   command.add_option("--stats", args.stats, "write frame statistics as JSON");
   command.add_option("--trace", args.trace, "write per-pass timings as a Chrome trace (Perfetto)");
   command.add_option("--frames", args.frames,
@@ -95,21 +108,26 @@ void addRenderOptions(CLI::App& command, RenderArgs& args) {
                      "frame and glTF animations 1/--fps s, the camera stays; the last is reported")
       ->capture_default_str();
   command.add_flag("--still", args.still, "moving objects and animations stay at the last frame's pose in all --frames");
-  command.add_option("--time", args.time,
-                     "seconds into the scene's glTF animations at the last frame (clamped to each one's keys)")
-      ->capture_default_str();
-  command.add_option("--fps", args.fps, "glTF animation frames per second, 0.001 to 1000")->capture_default_str();
-  command.add_option("--animation", args.animation, "which glTF animations play: all, none, an index or a name")
-      ->capture_default_str();
   command.add_option("--soak-report", args.soakReport,
                   "write CSV rows (frame, rss_mib, frame_ms, gpu_ms: resident memory, and median frame times since the "
                   "last row) every --soak-every frames, and print RSS and frame time after warm-up (the first tenth "
                   "of --frames) against the end");
   command.add_option("--soak-every", args.soakEvery, "frames per --soak-report row")->capture_default_str();
-  command.add_flag("--no-aliasing", args.noAliasing, "give every transient its own memory");
-  addMaterialOptions(command, args.materials);
-  addFrameOptions(command, args.frameGraph);
 }
+
+void addViewOptions(CLI::App& command, ViewArgs& args) {
+  args.frame.size = "960x540";
+  addFrameSetupOptions(command, args.frame);
+  command.add_option("--script", args.script,
+                     "replay input events from a file, one a line (docs/viewer.md): key, mouse move|drag|click, "
+                     "scroll, wait, screenshot, resize, quit");
+  command.add_option("--record", args.record, "write every frame shown as DIR/frame-NNNNNN.png");
+  command.add_option("--screenshot-dir", args.screenshotDir, "where P and the save buttons write")
+      ->capture_default_str();
+  command.add_flag("--hide-panels", args.hidePanels, "start with the panels hidden (H toggles them)");
+}
+
+void checkViewArgs(const ViewArgs& args) { checkRenderArgs(args.frame); }
 
 void checkRenderArgs(const RenderArgs& args) {
   uint32_t width = 0, height = 0;

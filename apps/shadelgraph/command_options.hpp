@@ -57,9 +57,21 @@ struct RenderArgs {
   MaterialArgs materials;
   FrameArgs frameGraph;
 };
+// What sets up the frame (scene, size, camera, mode, decoupled settings, materials, frame graph): render's and view's.
+void addFrameSetupOptions(CLI::App& command, RenderArgs& args);
 void addRenderOptions(CLI::App& command, RenderArgs& args);
 // Every option's value, before the scene is loaded or the device started.
 void checkRenderArgs(const RenderArgs& args);
+
+struct ViewArgs {
+  RenderArgs frame;  // the frame set-up options render has (its output options unused)
+  std::string script;  // input events to replay
+  std::string record;  // directory: every frame shown as a PNG
+  std::string screenshotDir = "out/view";
+  bool hidePanels = false;
+};
+void addViewOptions(CLI::App& command, ViewArgs& args);
+void checkViewArgs(const ViewArgs& args);
 
 struct GraphArgs {
   std::string scene;

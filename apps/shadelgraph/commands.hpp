@@ -10,6 +10,7 @@ void addGraphCommand(CLI::App& app);
 void addInspectCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addPassesCommand(CLI::App& app);
+void addViewCommand(CLI::App& app);
 
 // Set by a command that finished but must report failure (e.g. validation messages).
 int exitCode();

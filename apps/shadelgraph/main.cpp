@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   sg::app::addInspectCommand(app);
   sg::app::addBenchCommand(app);
   sg::app::addPassesCommand(app);
+  sg::app::addViewCommand(app);
   try {
     // CLI11 would only say that a subcommand is required: name the unknown one.
     if (argc > 1 && argv[1][0] != '-') {

@@ -16,6 +16,7 @@
 #include "app_session.hpp"
 #include "command_options.hpp"
 #include "commands.hpp"
+#include "frame_setup.hpp"
 #include "option_checks.hpp"
 #include "output_file.hpp"
 #include "scene_source.hpp"
@@ -153,40 +154,10 @@ std::vector<gpu::TraceEvent> traceEvents(const std::vector<gpu::FrameTimings>& f
   return events;
 }
 
-// The camera at frame `frame` (30 per second) of the scene file's camera path `path`.
-scene::Camera pathCamera(const AppSession& session, int path, int frame) {
-  if (session.cameraPaths.empty()) throw std::invalid_argument("--frame: the scene has no camera paths (a .json scene file defines them)");
-  if (path < 0 || size_t(path) >= session.cameraPaths.size())
-    throw std::invalid_argument("--path " + std::to_string(path) + ": the scene has " +
-                                std::to_string(session.cameraPaths.size()) + " camera path(s)");
-  const auto pose = scene::evaluatePose(session.cameraPaths[size_t(path)], float(frame) / 30.0f);
-  return scene::poseCamera(pose, scene::worldBounds(session.scene));
-}
-
-// The scene's camera `index`, named as the option that asked for it.
-void checkCameraIndex(const AppSession& session, int index) {
-  if (size_t(index) >= session.scene.cameras.size())
-    throw std::invalid_argument("--camera " + std::to_string(index) + ": the scene has " +
-                                std::to_string(session.scene.cameras.size()) + " camera(s)");
-}
-
 void runRender(const RenderArgs& args) {
   checkRenderArgs(args);
-  render::RenderSettings settings;
-  parseSize("--size", args.size, settings.width, settings.height);
-  if (args.camera) settings.camera = *args.camera;
-  settings.aliasing = !args.noAliasing;
-  settings.framesInFlight = uint32_t(args.framesInFlight);
-
-  plugins::DecoupledSettings decoupled{.storageFactor = args.storage, .filter = args.filter,
-                                      .shadeRate = uint32_t(args.shadeRate), .overlap = args.framesInFlight > 1,
-                                      .shadeBudgetMs = args.shadeBudget};
-  const std::map<std::string, plugins::DebugView> views{{"final", plugins::DebugView::Final},
-                                                        {"level", plugins::DebugView::Level},
-                                                        {"occupancy", plugins::DebugView::Occupancy},
-                                                        {"sheet", plugins::DebugView::Sheet}};
-  decoupled.view = views.at(args.view);
-  if (args.bias) decoupled.fixedBias = float(*args.bias);
+  render::RenderSettings settings = renderSettings(args);
+  const plugins::DecoupledSettings decoupled = decoupledSettings(args);
   AppSession session(args.scene, args.mode, decoupled, args.materials, args.frameGraph);
   if (args.camera) checkCameraIndex(session, *args.camera);
   for (const auto& choice : session.decoupled->choices())

@@ -75,7 +75,7 @@ Context::Context(const ContextOptions& options) {
   try {
     createInstance(options);
     pickPhysicalDevice(options);
-    createDevice();
+    createDevice(options);
   } catch (...) {
     destroy();
     throw;
@@ -117,6 +117,7 @@ void Context::createInstance(const ContextOptions& options) {
   std::vector<const char*> layers;
   std::vector<const char*> extensions{VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
   if (validation_) layers.push_back(kValidationLayer);
+  for (const auto& e : options.instanceExtensions) extensions.push_back(e.c_str());
 
   VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
   VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
@@ -143,7 +144,14 @@ void Context::createInstance(const ContextOptions& options) {
     info.pNext = &messengerInfo;
     if (options.synchronizationValidation) messengerInfo.pNext = &features;
   }
-  SG_VK(vkCreateInstance(&info, nullptr, &instance_));
+  const VkResult created = vkCreateInstance(&info, nullptr, &instance_);
+  if (created == VK_ERROR_EXTENSION_NOT_PRESENT)
+    throw GpuError("the Vulkan instance lacks an extension asked for (" + [&] {
+      std::string names;
+      for (const auto& e : options.instanceExtensions) names += (names.empty() ? "" : ", ") + e;
+      return names;
+    }() + ")");
+  SG_VK(created);
 
   if (validation_) {
     auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
@@ -198,7 +206,7 @@ void Context::pickPhysicalDevice(const ContextOptions& options) {
   if (!physicalDevice_) throw GpuError("no usable Vulkan 1.3 device:" + (rejected.empty() ? std::string(" none matched SG_DEVICE") : rejected));
 }
 
-void Context::createDevice() {
+void Context::createDevice(const ContextOptions& options) {
   uint32_t count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice_, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
@@ -255,6 +263,13 @@ void Context::createDevice() {
     }
     calibrate = calibrate && device && monotonic;
     if (calibrate) deviceExtensions.push_back(VK_EXT_CALIBRATED_TIMESTAMPS_EXTENSION_NAME);
+    for (const auto& wanted : options.deviceExtensions) {
+      const bool present = std::any_of(available.begin(), available.end(), [&](const VkExtensionProperties& e) {
+        return wanted == e.extensionName;
+      });
+      if (!present) throw GpuError(std::string(properties_.deviceName) + " does not support " + wanted);
+      deviceExtensions.push_back(wanted.c_str());
+    }
   }
 
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};

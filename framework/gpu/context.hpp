@@ -17,6 +17,10 @@ struct ContextOptions {
   bool validation = false;                 // Khronos validation layer + messenger
   bool synchronizationValidation = false;  // sync validation (needs validation)
   std::string deviceFilter;                // substring of the device name; empty = best
+  // Beyond what the context needs itself, e.g. a window's surface extensions
+  // (instance) and VK_KHR_swapchain (device); a missing one is named in the error.
+  std::vector<std::string> instanceExtensions;
+  std::vector<std::string> deviceExtensions;
   // Defaults from the environment: SG_VALIDATION=1 turns both validations on,
   // SG_DEVICE picks a device by name.
   static ContextOptions fromEnvironment();
@@ -65,7 +69,7 @@ class Context {
  private:
   void createInstance(const ContextOptions& options);
   void pickPhysicalDevice(const ContextOptions& options);
-  void createDevice();
+  void createDevice(const ContextOptions& options);
   void destroy();
 
   VkInstance instance_ = VK_NULL_HANDLE;

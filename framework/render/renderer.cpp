@@ -216,6 +216,7 @@ FrameResult Renderer::render(const RenderSettings& settings) {
                                                       .enableAliasing = settings.aliasing});
   executor_.bindImage(frame->output, *output_);
   FrameResult result;
+  if (settings.keepPlan) result.plan = plan;
   result.timings = executor_.execute(frame->graph, plan);
   result.timings.frameMs = timer.elapsedMs();
   result.transientBytes = executor_.transientBytes();

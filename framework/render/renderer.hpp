@@ -37,12 +37,14 @@ struct RenderSettings {
   // frame, left running): 1 or 2.
   uint32_t framesInFlight = 1;
   bool readback = true;  // read the output image back (FrameResult::image)
+  bool keepPlan = false;  // copy the compiled frame into FrameResult::plan (the viewer shows it)
 };
 
 struct FrameResult {
   gpu::HostImage image;
   gpu::FrameTimings timings;
   uint64_t transientBytes = 0;
+  std::optional<graph::CompiledPlan> plan;  // with RenderSettings::keepPlan
 };
 
 class Renderer {
