@@ -146,7 +146,7 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
   const auto slot = uint32_t(frameNumber_ % 2);
   gpu::Buffer& uniformBuffer = frameUniforms_[slot];
   uniformBuffer.write(&uniforms, sizeof uniforms);
-  gpu::Buffer& lightBuffer = lights_[frameNumber_ % 2];
+  gpu::Buffer& lightBuffer = lights_[slot];
   lightBuffer.write(frameLights_.data(), frameLights_.size() * sizeof(GpuLight));
 
   if (!output_ || output_->desc().width != settings.width || output_->desc().height != settings.height) {
@@ -164,7 +164,7 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
       {gpuScene_, uniformBuffer, lightBuffer, noLightGrid_, gpuScene_.allDraws(), registry_, layerTextures_},
       {scene_, device_, executor_, modes_, drawSpheres_, frameNumber_++, cam.position(), focal, uniforms.viewProjection,
        settings.width, settings.height, settings.occlusionCulling ? &culling_ : nullptr},
-      {}, {}, {}, std::move(shadows)});
+      {}, {}, {}, {}, std::move(shadows)});
   frame->inputs.shadowViews = frame->shadows;
   frame->output = frame->graph.importImage(
       "output", {.format = graph::Format::RGBA8Srgb, .size = graph::Size::absolute(settings.width, settings.height)},
