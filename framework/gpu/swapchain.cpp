@@ -63,6 +63,8 @@ Swapchain::~Swapchain() { release(); }
 void Swapchain::release() {
   const VkDevice device = context_.device();
   waitIdle();
+  // Presentation may still wait on the semaphores the last submission signalled.
+  SG_VK(vkDeviceWaitIdle(device));
   destroySwapchain();
   if (pool_) vkDestroyCommandPool(device, pool_, nullptr);
   if (submitted_) vkDestroyFence(device, submitted_, nullptr);

@@ -2,7 +2,7 @@
 // Depth of a shadow caster as one shadow map sees it (the map's matrix in the
 // frame uniforms' shadowMatrices; which map is a push constant after the object's).
 #extension GL_EXT_scalar_block_layout : require
-#include <framework/render/shaders/light_buffer.glsl>
+#include <framework/render/shaders/frame.glsl>
 
 layout(push_constant, scalar) uniform ShadowDraw {
   SgObjectConstants object;

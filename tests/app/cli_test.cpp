@@ -448,8 +448,8 @@ TEST(Cli, GraphHoldsOnlyWhatTheMaterialsCallFor) {
   EXPECT_TRUE(bumps.kept.count("support-expand"));
   EXPECT_TRUE(bumps.kept.count("layer-shade #2"));
   EXPECT_FALSE(bumps.kept.count("layer-shade #3"));
-  EXPECT_EQ(bumps.historyResources, 2) << "its height layer is kept across frames (a surface layer): last frame's "
-                                          "height image and remap table";
+  EXPECT_EQ(bumps.historyResources, 1) << "its height layer is kept across frames (a surface layer): last frame's "
+                                          "height image (chunks keep their slots: no remap table to keep)";
 
   const auto skin = planOf("--mode decoupled --material skin");
   EXPECT_TRUE(skin.kept.count("layer-shade #3"));
@@ -457,7 +457,7 @@ TEST(Cli, GraphHoldsOnlyWhatTheMaterialsCallFor) {
 
   const auto marble = planOf("--mode decoupled --material marble");
   EXPECT_FALSE(marble.kept.count("support-expand"));
-  EXPECT_EQ(marble.historyResources, 2) << "last frame's marble image and remap table";
+  EXPECT_EQ(marble.historyResources, 1) << "last frame's marble image (chunks keep their slots)";
 
   const auto forward = planOf("--mode forward --material skin");
   EXPECT_FALSE(forward.kept.count("layer-shade"));
