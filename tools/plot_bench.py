@@ -9,7 +9,10 @@
   targets 0.8 and 0.6 marked), ꟻLIP and flicker against frame time, and the
   frame split into raster passes, shade-space bookkeeping, shading and gaps;
 - graph.json (bench graph): declare + compile time against graph size, log-log,
-  with the linear growth from the smallest size for comparison.
+  with the linear growth from the smallest size for comparison;
+- effects.json (bench --effects): per size, light culling against brute force
+  by light count (log-log, both paths), frame time by shadowed lights per
+  light type, and environment light and bloom on against off.
 Usage: plot_bench.py RESULTS_DIR"""
 import json
 import sys
@@ -187,6 +190,54 @@ def plot_graph(results, out):
     plt.close(fig)
 
 
+def plot_effects(run, out):
+    tag = f"{run['width']}x{run['height']}"
+    panels = [k for k in ("lights", "shadows", "ibl", "bloom") if k in run]
+    fig, axes = plt.subplots(1, len(panels), figsize=(5 * len(panels), 4.2), squeeze=False)
+    colors = {"forward": "tab:red", "decoupled": "tab:blue"}
+    for ax, panel in zip(axes[0], panels):
+        if panel == "lights":
+            for path, color in colors.items():
+                rows = [r for r in run["lights"]["rows"] if r["path"] == path]
+                counts = [r["lights"] for r in rows]
+                ax.plot(counts, [r["culled_ms_median"] for r in rows], "o-", color=color, label=f"{path} culled")
+                ax.plot(counts, [r["brute_force_ms_median"] for r in rows], "s--", color=color,
+                        label=f"{path} brute force")
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+            ax.set_xlabel("point lights (each floor point in reach of ~%g)" % run["lights"]["lights_in_reach"])
+            ax.set_ylabel("GPU frame ms (median)")
+            ax.set_title("Light culling")
+        elif panel == "shadows":
+            for g in run["shadows"]:
+                style = {"directional": "o", "spot": "s", "point": "^"}[g["light_type"]]
+                rows = g["rows"]
+                ax.plot([r["shadowed"] for r in rows], [r["ratio_to_unshadowed"] for r in rows], style + "-",
+                        color=colors[g["path"]], label=f"{g['light_type']} {g['path']}")
+            ax.set_xlabel("shadowed lights (of the same lights)")
+            ax.set_ylabel("frame time ÷ unshadowed")
+            ax.set_title("Shadows")
+        else:
+            key_on, key_off, label = (("environment_ms_median", "analytic_sky_ms_median", "environment / sky")
+                                      if panel == "ibl" else ("bloom_ms_median", "no_bloom_ms_median", "bloom on / off"))
+            rows = run[panel]["rows"]
+            x = range(len(rows))
+            ax.bar([i - 0.2 for i in x], [r[key_off] for r in rows], 0.4, color="0.6", label="off")
+            ax.bar([i + 0.2 for i in x], [r[key_on] for r in rows], 0.4, color="tab:orange", label="on")
+            ax.set_xticks(list(x), [r["path"] for r in rows])
+            ax.set_ylabel("GPU frame ms (median)")
+            title = label
+            if panel == "ibl":
+                title += f" (prefilter once: {run['ibl']['prefilter_ms_median']:.0f} ms)"
+            ax.set_title(title)
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=7)
+    fig.suptitle(f"What each effect costs: {tag} (lavapipe; ratios within one run)")
+    fig.tight_layout()
+    fig.savefig(out / f"effects-{tag}.png", dpi=100)
+    plt.close(fig)
+
+
 def main():
     out = Path(sys.argv[1] if len(sys.argv) > 1 else "out/bench")
     found = False
@@ -205,8 +256,12 @@ def main():
     if (out / "graph.json").exists():
         plot_graph(json.loads((out / "graph.json").read_text()), out)
         found = True
+    if (out / "effects.json").exists():
+        for run in json.loads((out / "effects.json").read_text())["runs"]:
+            plot_effects(run, out)
+        found = True
     if not found:
-        sys.exit(f"plot_bench.py: no results.json, materials.json, shade-rate.json or graph.json in {out}")
+        sys.exit(f"plot_bench.py: no results.json, materials.json, shade-rate.json, graph.json or effects.json in {out}")
     print(f"wrote plots to {out}")
 
 

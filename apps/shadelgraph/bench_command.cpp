@@ -26,6 +26,7 @@
 #include <shadelgraph/image/png.hpp>
 #include <shadelgraph/render/renderer.hpp>
 
+#include "bench_effects.hpp"
 #include "bench_graph.hpp"
 #include "bench_materials.hpp"
 #include "bench_scenes.hpp"
@@ -281,6 +282,14 @@ void runBench(const BenchArgs& args) {
   gpu::Context context;
   gpu::Device device(context);
   device.shaders().add(gpu::builtinShaders());
+  if (args.effects) {
+    runEffectsBench(context, device,
+                    {.groups = args.effectGroups, .sizes = args.sizes, .repetitions = args.repetitions,
+                     .lightCounts = args.lightCounts},
+                    out);
+    setExitCode(context.validationLog().count() ? 1 : 0);
+    return;
+  }
   if (args.sceneRatios) {
     runSceneRatioBench(context, device, {.scenes = args.scenes, .sizes = args.sizes, .repetitions = args.repetitions},
                        out);

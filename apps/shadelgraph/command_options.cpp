@@ -177,6 +177,17 @@ CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& gr
                    "the first scene's first camera path, if it has one), forward and decoupled, each also as before issue 14 (without "
                    "occlusion culling), alternated; "
                    "writes scene-ratios.json");
+  command.add_flag("--effects", args.effects,
+                   "instead of the configuration sweep: what each effect costs, forward and decoupled, alternated "
+                   "(shadows per light by type, light culling against brute force by light count, environment light "
+                   "and its one-time prefilter, bloom) and the ꟻLIP the effect adds; writes effects.json");
+  command.add_option("--effect-groups", args.effectGroups, "--effects: which comparisons (comma-separated: shadows, lights, ibl, bloom)")
+      ->delimiter(',')
+      ->capture_default_str();
+  command.add_option("--light-counts", args.lightCounts,
+                     "--effects: point-light counts of the culling comparison (comma-separated, each 1 to 4096)")
+      ->delimiter(',')
+      ->capture_default_str();
   auto* shimmer = command.add_flag("--shimmer", args.shimmer, "add the shimmer case (default scene's gold sphere, close up)");
   command.add_option("--materials", args.materials,
                   "instead of the configuration sweep: for each of these materials (comma-separated, e.g. "
@@ -228,6 +239,12 @@ void checkBenchArgs(const BenchArgs& args) {
   if (args.sizes.empty()) throw std::invalid_argument("--sizes: expected at least one WIDTHxHEIGHT");
   if (args.sceneRatios && args.scenes.size() < 2)
     throw std::invalid_argument("--scene-ratios: expected at least two scenes (the first is the baseline)");
+  if (args.effectGroups.empty()) throw std::invalid_argument("--effect-groups: expected at least one of shadows, lights, ibl, bloom");
+  for (const auto& group : args.effectGroups)
+    if (group != "shadows" && group != "lights" && group != "ibl" && group != "bloom")
+      throw std::invalid_argument("--effect-groups: unknown '" + group + "' (expected shadows, lights, ibl or bloom)");
+  if (args.lightCounts.empty()) throw std::invalid_argument("--light-counts: expected at least one count");
+  for (const int count : args.lightCounts) requireInRange("--light-counts", count, 1, 4096);  // the frame's light buffer
   for (const auto& size : args.sizes) {
     uint32_t w = 0, h = 0;
     parseSize("--sizes", size, w, h);

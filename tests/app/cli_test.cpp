@@ -362,6 +362,58 @@ TEST(Cli, BenchSceneRatiosComparesEveryScene) {
   }
 }
 
+// The effects bench, tiny: every comparison in both paths, and what the
+// images must show whatever the timing: culling changes nothing (its lists are
+// exact supersets), shadows and bloom change the image (figures are not asserted).
+TEST(Cli, BenchEffectsComparesEveryEffectInBothPaths) {
+  const auto dir = tempDir() / "bench-effects";
+  std::filesystem::remove_all(dir);
+  auto r = run("bench --effects --out " + dir.string() + " --sizes 64x36 --repetitions 1 --light-counts 4,40");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "results.json")) << "--effects replaces the configuration sweep";
+  std::ifstream in(dir / "effects.json");
+  const auto json = nlohmann::json::parse(in);
+  for (const char* key : {"cpu", "cores", "device", "driver"}) EXPECT_TRUE(json["machine"].contains(key)) << key;
+  ASSERT_EQ(json["runs"].size(), 1u);
+  const auto& run = json["runs"][0];
+
+  std::set<std::string> shadowGroups;
+  for (const auto& g : run["shadows"]) {
+    const auto name = g["light_type"].get<std::string>() + " " + g["path"].get<std::string>();
+    shadowGroups.insert(name);
+    const auto& rows = g["rows"];
+    ASSERT_EQ(rows.size(), g["light_type"] == "point" ? 3u : 4u) << name;  // 0, 1, 2 (, 4) shadowed
+    EXPECT_EQ(rows[0]["shadowed"], 0) << name;
+    EXPECT_DOUBLE_EQ(rows[0]["ratio_to_unshadowed"].get<double>(), 1.0) << name;
+    EXPECT_TRUE(rows[0]["ms_per_shadowed_light"].is_null()) << name;
+    EXPECT_DOUBLE_EQ(rows.back()["flip_against_all_shadowed"].get<double>(), 0.0) << name;
+    EXPECT_GT(g["flip_unshadowed_against_shadowed"].get<double>(), 0.001) << name << ": shadows must show";
+    for (const auto& row : rows) EXPECT_GT(row["frame_ms_median"].get<double>(), 0.0) << name;
+  }
+  EXPECT_EQ(shadowGroups, (std::set<std::string>{"directional forward", "directional decoupled", "spot forward",
+                                                  "spot decoupled", "point forward", "point decoupled"}));
+
+  const auto& lights = run["lights"]["rows"];
+  ASSERT_EQ(lights.size(), 4u);  // 2 counts x 2 paths
+  for (const auto& row : lights) {
+    const auto name = row["lights"].dump() + " " + row["path"].get<std::string>();
+    EXPECT_LT(row["flip_culled_against_brute_force"].get<double>(), 0.002) << name << ": culling must not change the image";
+    EXPECT_GT(row["culled_ms_median"].get<double>(), 0.0) << name;
+    EXPECT_GT(row["brute_force_ms_median"].get<double>(), 0.0) << name;
+  }
+  EXPECT_TRUE(run["lights"]["culling_faster_from"].contains("forward"));
+  EXPECT_TRUE(run["lights"]["culling_faster_from"].contains("decoupled"));
+
+  EXPECT_GT(run["ibl"]["prefilter_ms_median"].get<double>(), 0.0) << "the first frame prefilters";
+  ASSERT_EQ(run["ibl"]["rows"].size(), 2u);
+  for (const auto& row : run["ibl"]["rows"]) EXPECT_GT(row["flip_sky_against_environment"].get<double>(), 0.001);
+  ASSERT_EQ(run["bloom"]["rows"].size(), 2u);
+  for (const auto& row : run["bloom"]["rows"]) {
+    EXPECT_GT(row["bloom_pass_ms_median"].get<double>(), 0.0) << row["path"];
+    EXPECT_GT(row["flip_no_bloom_against_bloom"].get<double>(), 0.001) << row["path"];
+  }
+}
+
 TEST(Cli, BenchMaterialsWritesEveryMaterialAndPath) {
   const auto dir = tempDir() / "bench-materials";
   std::filesystem::remove_all(dir);
@@ -572,6 +624,9 @@ const BadCommand kBadCommands[] = {
     {"BenchReferenceBeyondSizeLimit", "bench --sizes 8192x8192 --reference-scale 4", "--reference-scale 4"},
     {"BenchSizesTrailingJunk", "bench --sizes 64x36junk", "--sizes '64x36junk'"},
     {"BenchSceneRatiosOneScene", "bench --scene-ratios", "--scene-ratios"},
+    {"BenchLightCountsZero", "bench --effects --light-counts 8,0", "--light-counts 0"},
+    {"BenchLightCountsBeyondLightBuffer", "bench --effects --light-counts 5000", "--light-counts 5000"},
+    {"BenchEffectGroupUnknown", "bench --effects --effect-groups shadows,fog", "--effect-groups: unknown 'fog'"},
 };
 
 // Readable in gtest's and ctest's listings: the command line, not the struct's bytes.

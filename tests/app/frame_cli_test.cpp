@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_run.hpp"
-#include "procedural_hdr.hpp"
+#include "procedural_sky.hpp"
 #include "test_support.hpp"
 
 namespace {
@@ -70,7 +70,7 @@ TEST(FrameCli, PassesListsEveryRegisteredPassWithItsResourcesAndTheFrames) {
 TEST(FrameCli, AnEnvironmentImageAddsThePrefilterOnlyWhenNamed) {
   SG_REQUIRE_ASSETS();
   sg::test::TempDir dir;
-  sg::test::writeProceduralSky(dir.path() / "sky.hdr", 64, 32);
+  sg::bench::writeProceduralSky(dir.path() / "sky.hdr", 64, 32);
   const std::string model = sg::test::samplePath("EnvironmentTest").string();
   const auto lit = dir.write("lit.json", R"({"objects": [{"gltf": ")" + model +
                                              R"("}], "environment": {"image": "sky.hdr", "intensity": 2}})");

@@ -15,7 +15,7 @@
 #include <shadelgraph/graph/plan_dump.hpp>
 #include <shadelgraph/scene/procedural_meshes.hpp>
 
-#include "procedural_hdr.hpp"
+#include "procedural_sky.hpp"
 #include "stability_checks.hpp"
 #include "stability_scenes.hpp"
 #include "test_support.hpp"
@@ -87,7 +87,7 @@ scene::Scene environmentLit() {
   auto s = baseSet();
   s.lights.push_back(sun(false));
   TempDir dir;
-  writeProceduralSky(dir.path() / "sky.hdr", 64, 32);
+  bench::writeProceduralSky(dir.path() / "sky.hdr", 64, 32);
   s.environment = scene::loadEnvironment(dir.path() / "sky.hdr", 1.0f);
   return s;
 }

@@ -3,7 +3,7 @@
 // one-time prefilter), the same in the forward fragment variant and the
 // decoupled compute variant of a material (gltf-pbr, split-pbr), and the
 // sample asset EnvironmentTest renders under it. The test image is the
-// procedural sky of tests/support/procedural_hdr.hpp (no HDR environment ships
+// procedural sky of benchmarks/environment/procedural_sky.hpp (no HDR environment ships
 // with the sample assets or Debian).
 #include <gtest/gtest.h>
 
@@ -15,7 +15,7 @@
 #include <shadelgraph/scene/gltf_loader.hpp>
 #include <shadelgraph/scene/procedural_meshes.hpp>
 
-#include "procedural_hdr.hpp"
+#include "procedural_sky.hpp"
 #include "stability_checks.hpp"
 #include "stability_scenes.hpp"
 #include "test_support.hpp"
@@ -27,7 +27,7 @@ glm::mat4 at(float x, float y, float z) { return glm::translate(glm::mat4(1.0f),
 
 scene::Environment proceduralSky(float intensity) {
   TempDir dir;
-  writeProceduralSky(dir.path() / "sky.hdr");
+  bench::writeProceduralSky(dir.path() / "sky.hdr");
   return scene::loadEnvironment(dir.path() / "sky.hdr", intensity);
 }
 

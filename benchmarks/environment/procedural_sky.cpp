@@ -1,4 +1,4 @@
-#include "procedural_hdr.hpp"
+#include "procedural_sky.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -7,7 +7,7 @@
 #include <glm/glm.hpp>
 #include <stb_image_write.h>
 
-namespace sg::test {
+namespace sg::bench {
 
 void writeProceduralSky(const std::filesystem::path& file, uint32_t width, uint32_t height, float sun) {
   const float pi = 3.14159265358979f;
@@ -27,4 +27,4 @@ void writeProceduralSky(const std::filesystem::path& file, uint32_t width, uint3
     throw std::runtime_error("cannot write " + file.string());
 }
 
-}  // namespace sg::test
+}  // namespace sg::bench
