@@ -12,6 +12,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <shadelgraph/render/frame_uniforms.hpp>
 #include <shadelgraph/scene/gltf_loader.hpp>
 #include <shadelgraph/scene/procedural_meshes.hpp>
 
@@ -106,6 +107,18 @@ TEST(EnvironmentLightOrientation, SkyAboveGroundBelow) {
     EXPECT_GT(bottom.r, 1.3f * bottom.b) << what << ": the lower half faces the brown ground";
     EXPECT_GT(top.g, bottom.g) << what << ": the sky is brighter than the ground";
   }
+}
+
+// A scene without lights gets the default sun, unless an environment image lights it
+// (EnvironmentTest's screenshot has no sun: no sun highlight, no terminator).
+TEST(EnvironmentImage, ReplacesTheDefaultSun) {
+  scene::Scene s;
+  placeMesh(s, scene::makeSphere(1.0f, 16, 8), addMaterial(s, {.name = "white"}), glm::mat4(1.0f));
+  const scene::Camera camera = cameraAt({0.0f, 0.0f, 4.0f}, {0.0f, 0.0f, 0.0f});
+  std::vector<render::GpuLight> lights;
+  EXPECT_EQ(render::makeFrameUniforms(s, camera, 64, 64, lights).counts.x, 1u) << "no lights, no image: the default sun";
+  s.environment = proceduralSky(1.0f);
+  EXPECT_EQ(render::makeFrameUniforms(s, camera, 64, 64, lights).counts.x, 0u) << "the image lights it alone";
 }
 
 // The sample asset meant for environment light: its metal/rough grid under the
