@@ -31,7 +31,8 @@ FrameUniforms makeFrameUniforms(const scene::Scene& scene, const scene::Camera& 
   std::vector<scene::Light> lights = scene.lights;
   f.ambient = glm::vec4(skyLuminance(lights), 0.0f);
   if (scene.environment.present()) f.environment = glm::vec4(1.0f, scene.environment.intensity, 0.0f, 0.0f);
-  if (lights.empty())
+  // No default sun under an environment image: the image is the scene's light (a sun of its own would add a highlight and a terminator it does not have).
+  if (lights.empty() && !scene.environment.present())
     lights.push_back({.name = "default sun", .type = scene::LightType::Directional, .color = glm::vec3(1.0f),
                       .intensity = 3.0f, .direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.5f)),
                       .shadows = false});

@@ -26,7 +26,7 @@ glm::vec3 skyLuminance(std::span<const scene::Light> lights);
 float skyScale(std::span<const scene::Light> lights);
 
 // A scene without lights gets a default sun so it is never black (it casts no
-// shadow); `lights` receives the frame's lights (frame.counts.x of them, for
+// shadow), unless it names an environment image, which lights it; `lights` receives the frame's lights (frame.counts.x of them, for
 // kBindLights). A scene with more than kMaxLights is an error (Renderer's
 // constructor). Shadowed lights get their maps' slots, matrices and cascade
 // ends from `shadows` (render::shadowViews of the scene's lights, computed once per frame).

@@ -122,7 +122,9 @@ std::vector<ShadowView> cascades(uint32_t lightIndex, const scene::Light& light,
     }
     float radius = 0.0f;
     for (const glm::vec3& c : corners) radius = std::max(radius, glm::distance(c, centre));
-    radius = std::ceil(radius * 64.0f) / 64.0f;  // rounding noise must not change the texel size
+    // Rounding noise must not change the texel size: up to 1/64 of the radius's power of two (any scale).
+    const float grain = std::exp2(std::floor(std::log2(std::max(radius, 1e-30f)))) / 64.0f;
+    radius = std::ceil(radius / grain) * grain;
     const float half = radius * (1.0f + 8.0f / float(kShadowMapResolution));  // room for the PCF footprint and the snap
     const float texel = 2.0f * half / float(kShadowMapResolution);
     glm::vec3 c = glm::vec3(lightView * (inverseView * glm::vec4(centre, 1.0f)));

@@ -12,6 +12,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <shadelgraph/render/frame_uniforms.hpp>
 #include <shadelgraph/scene/gltf_loader.hpp>
 #include <shadelgraph/scene/procedural_meshes.hpp>
 
@@ -43,13 +44,14 @@ scene::Scene skyLitSpheres(const std::string& material) {
                                      .roughnessFactor = 0.15f});
   const int copper = addMaterial(s, {.name = "copper", .baseColorFactor = {0.95f, 0.64f, 0.54f, 1.0f},
                                      .metallicFactor = 1.0f, .roughnessFactor = 0.5f});
-  placeMesh(s, scene::makePlane(8.0f, 8.0f, 16), ground, glm::mat4(1.0f));
+  // Split 64 a side: an untextured mesh's shadels follow its triangles (3 cm here, so the shadows are as sharp as forward's).
+  placeMesh(s, scene::makePlane(8.0f, 8.0f, 64), ground, glm::mat4(1.0f));
   placeMesh(s, scene::makeSphere(0.6f, 48, 24), white, at(-1.4f, 0.6f, 0.0f));
   placeMesh(s, scene::makeSphere(0.6f, 48, 24), chrome, at(0.0f, 0.6f, 0.0f));
   placeMesh(s, scene::makeSphere(0.6f, 48, 24), copper, at(1.4f, 0.6f, 0.0f));
   for (auto& instance : s.instances) instance.material = material;
   s.lights.push_back({.name = "sun", .type = scene::LightType::Directional, .intensity = 3000.0f,
-                      .direction = glm::normalize(glm::vec3(-0.7f, -0.84f, 0.7f)), .shadows = false});
+                      .direction = glm::normalize(glm::vec3(-0.7f, -0.84f, 0.7f))});
   s.environment = proceduralSky(1000.0f);
   return s;
 }
@@ -105,6 +107,18 @@ TEST(EnvironmentLightOrientation, SkyAboveGroundBelow) {
     EXPECT_GT(bottom.r, 1.3f * bottom.b) << what << ": the lower half faces the brown ground";
     EXPECT_GT(top.g, bottom.g) << what << ": the sky is brighter than the ground";
   }
+}
+
+// A scene without lights gets the default sun, unless an environment image lights it
+// (EnvironmentTest's screenshot has no sun: no sun highlight, no terminator).
+TEST(EnvironmentImage, ReplacesTheDefaultSun) {
+  scene::Scene s;
+  placeMesh(s, scene::makeSphere(1.0f, 16, 8), addMaterial(s, {.name = "white"}), glm::mat4(1.0f));
+  const scene::Camera camera = cameraAt({0.0f, 0.0f, 4.0f}, {0.0f, 0.0f, 0.0f});
+  std::vector<render::GpuLight> lights;
+  EXPECT_EQ(render::makeFrameUniforms(s, camera, 64, 64, lights).counts.x, 1u) << "no lights, no image: the default sun";
+  s.environment = proceduralSky(1.0f);
+  EXPECT_EQ(render::makeFrameUniforms(s, camera, 64, 64, lights).counts.x, 0u) << "the image lights it alone";
 }
 
 // The sample asset meant for environment light: its metal/rough grid under the

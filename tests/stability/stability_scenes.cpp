@@ -26,12 +26,12 @@ int addTilesMaterial(scene::Scene& s, uint32_t textureSize) {
   return addMaterial(s, m);
 }
 
-// Unshadowed: these cases test shading and geometry (shadows have their own, shadow_test.cpp, cascade_test.cpp).
+// Both shadowed (the default): the sun's cascades and the lamp's cube maps go wherever the set goes, far away or scaled.
 void addLights(scene::Scene& s) {
   s.lights.push_back({.name = "sun", .type = scene::LightType::Directional, .color = {1.0f, 0.95f, 0.85f},
-                      .intensity = 2.5f, .direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.6f)), .shadows = false});
+                      .intensity = 2.5f, .direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.6f))});
   s.lights.push_back({.name = "lamp", .type = scene::LightType::Point, .color = {0.5f, 0.7f, 1.0f},
-                      .intensity = 8.0f, .position = {2.5f, 2.0f, 2.0f}, .shadows = false});
+                      .intensity = 8.0f, .position = {2.5f, 2.0f, 2.0f}});
 }
 
 glm::mat4 at(float x, float y, float z) { return glm::translate(glm::mat4(1.0f), {x, y, z}); }

@@ -99,6 +99,13 @@ float sgShadowAt(Light light, vec3 position) {
   int first = int(light.cone.z) - 1;
   if (first < 0) return 1.0;
   uint type = uint(light.positionType.w);
+  // Far from the origin a float position is only good to its last bits, and so
+  // are the caster depths in the maps: the receiver steps 2 ulps of its largest
+  // coordinate towards the light (nothing near the origin: 1 um at 4 units).
+  vec3 a = abs(position);
+  float ulps = 2.0 * max(a.x, max(a.y, a.z)) * 1.1920929e-7;
+  vec3 towards = type == SG_LIGHT_DIRECTIONAL ? -light.directionRange.xyz : light.positionType.xyz - position;
+  position += ulps * towards / max(length(towards), 1e-30);
   if (type == SG_LIGHT_SPOT) return sgShadowMapAt(first, position);
   if (type == SG_LIGHT_POINT) {
     vec3 d = position - light.positionType.xyz, a = abs(d);
