@@ -135,10 +135,11 @@ void controlsPanel(Viewer& viewer) {
   auto cameras = viewer.cameraNames();
   cameras.insert(cameras.begin(), "free (drag, wheel, W A S D)");
   if (combo("camera", camera, cameras)) viewer.chooseCamera(camera - 1);
-  for (const auto& effect : viewer.effects()) {
-    bool on = viewer.effectOn(effect);
-    if (ImGui::Checkbox(effect.c_str(), &on)) viewer.setEffect(effect, on);
-    ImGui::SameLine();
+  const auto effects = viewer.effects();
+  for (size_t e = 0; e < effects.size(); ++e) {
+    bool on = viewer.effectOn(effects[e]);
+    if (e > 0) ImGui::SameLine();
+    if (ImGui::Checkbox(effects[e].c_str(), &on)) viewer.setEffect(effects[e], on);
   }
   ImGui::Checkbox("pause", &viewer.paused);
   if (ImGui::Button("save frame")) viewer.saveFrame(viewer.nextScreenshotPath());
