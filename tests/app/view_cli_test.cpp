@@ -247,4 +247,28 @@ TEST_F(ViewCli, MinimizeWithoutAWindowManagerNamesTheLine) {
   EXPECT_NE(r.output.find(":2: minimize: the window system did not iconify the window"), std::string::npos) << r.output;
 }
 
+// C steps through the scene's glTF cameras and camera paths back to the free
+// camera (mixed.json: the engine's glTF camera, the path "orbit"); after an
+// orbit, F frames the scene as render frames a scene without a camera
+// (boxes.json; the same framing rebuilt from the controller's angles, so a few
+// pixels may round differently).
+TEST_F(ViewCli, CKeySelectsTheCameraPathAndFFramesTheScene) {
+  SG_REQUIRE_ASSETS();
+  const fs::path framed = dir_.path() / "framed.png", rendered = dir_.path() / "rendered.png";
+  const auto cameras = view(kMixedScene.string() + " --size 160x90 --frame 0", "key C\nkey C\nkey C\nquit\n");
+  ASSERT_EQ(cameras.exitCode, 0) << cameras.output;
+  EXPECT_NE(cameras.output.find("camera: camera 0: \ncamera: path 0: orbit\ncamera: free\n"), std::string::npos)
+      << cameras.output;
+  const std::string frame = (fs::path(SG_SOURCE_DIR) / "tests/scenes/boxes.json").string() + " --size 320x180 --bias 0";
+  const auto r = view(frame + " --frame 0", "mouse drag 160 90 220 60\nwait 1\nkey F\nwait 1\nscreenshot " +
+                                              framed.string() + "\nquit\n");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("camera: free, framing the scene"), std::string::npos) << r.output;
+  const auto rr = sg::test::runCli("render " + frame + " -o " + rendered.string());
+  ASSERT_EQ(rr.exitCode, 0) << rr.output;
+  const auto a = sg::image::readPng(framed), b = sg::image::readPng(rendered);
+  ASSERT_EQ(a.width, b.width);
+  EXPECT_LT(differing(a, b, 16), a.pixels.size() / 4 / 100) << "more than 1% of the pixels differ from render's framing";
+}
+
 }  // namespace

@@ -246,6 +246,7 @@ void Viewer::handle(const InputEvent& e) {
       if (e.key == GLFW_KEY_F) {
         controller_.frame(scene::worldBounds(session_->scene), float(settings_.width) / float(settings_.height));
         cameraChoice_ = kFreeCamera;
+        std::printf("camera: free, framing the scene\n");
       }
       if (e.key == GLFW_KEY_P) frameShot_ = nextScreenshotPath();
       if (e.key == GLFW_KEY_H) panels_ = !panels_;
