@@ -152,6 +152,9 @@ void addGraphOptions(CLI::App& command, GraphArgs& args) {
   auto* dot = command.add_flag("--dot", args.dot, "Graphviz DOT");
   command.add_flag("--json", args.json, "JSON")->excludes(dot);
   command.add_flag("--no-aliasing", args.noAliasing, "give every transient its own memory");
+  command.add_option("--pick", args.pick, "X,Y: the frame with a pick pending at that pixel (the viewer's click)")
+      ->expected(2)
+      ->delimiter(',');
   addMaterialOptions(command, args.materials);
   addFrameOptions(command, args.frame);
 }
@@ -159,6 +162,10 @@ void addGraphOptions(CLI::App& command, GraphArgs& args) {
 void checkGraphArgs(const GraphArgs& args) {
   uint32_t width = 0, height = 0;
   parseSize("--size", args.size, width, height);
+  if (!args.pick.empty()) {
+    requireInRange("--pick x", args.pick[0], 0, width - 1);
+    requireInRange("--pick y", args.pick[1], 0, height - 1);
+  }
 }
 
 CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& graphArgs) {

@@ -78,6 +78,7 @@ struct GraphArgs {
   std::string size = "1280x720";
   std::string mode;
   bool dot = false, json = false, noAliasing = false;
+  std::vector<int> pick;  // x, y: the frame with a pick pending there
   MaterialArgs materials;
   FrameArgs frame;
 };

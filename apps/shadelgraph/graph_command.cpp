@@ -21,6 +21,7 @@ void addGraphCommand(CLI::App& app) {
     render::RenderSettings settings;
     parseSize("--size", args.size, settings.width, settings.height);
     settings.aliasing = !args.noAliasing;
+    if (!args.pick.empty()) settings.pick = glm::uvec2(uint32_t(args.pick[0]), uint32_t(args.pick[1]));
     AppSession session(args.scene, args.mode, {}, args.materials, args.frame);
     const auto plan = session.renderer->plan(settings);
     const std::string text = args.dot ? graph::toDot(plan) : args.json ? graph::toJson(plan) : graph::toText(plan);

@@ -153,7 +153,8 @@ nlohmann::json mergeParameters(const FrameDescription& d, const PassPlugin& pass
 }  // namespace
 
 bool isRendererResource(const std::string& name) {
-  return name == kOutputResource || name == kForwardDrawsResource || name == kDecoupledDrawsResource;
+  return name == kOutputResource || name == kForwardDrawsResource || name == kDecoupledDrawsResource ||
+         name == kPickResource;
 }
 
 FrameDescription parseFrameDescription(const nlohmann::json& json, const std::string& source) {

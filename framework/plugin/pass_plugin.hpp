@@ -44,6 +44,10 @@ struct PassPlugin {
 inline constexpr const char* kOutputResource = "scene.ldr";           // the 8-bit sRGB output image
 inline constexpr const char* kForwardDrawsResource = "view.draws";    // visible draws shaded forward
 inline constexpr const char* kDecoupledDrawsResource = "view.decoupled";  // visible draws a package shades decoupled
+// Only in a frame with a pick pending (RenderSettings::pick): a 4-byte buffer
+// that a pick pass (passes/object-pick) writes the object under the pixel to
+// (scene instance + 1; 0: none); the renderer reads it back (FrameResult::picked).
+inline constexpr const char* kPickResource = "view.pick";
 bool isRendererResource(const std::string& name);
 
 }  // namespace sg::plugin

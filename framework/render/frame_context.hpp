@@ -6,6 +6,7 @@
 #include <map>
 #include <span>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,8 @@ struct FrameInputs {
   const DeformationFrame* deformation = nullptr;
   // This frame's shadow maps (the frame uniforms hold their matrices and slots); empty: no shadows.
   std::span<const ShadowView> shadowViews;
+  // The pixel (x right, y down) whose object is asked for this frame (RenderSettings::pick).
+  std::optional<glm::uvec2> pick;
 };
 
 // Indices into GpuScene::draws() of the draws inside the view frustum. All

@@ -1,6 +1,7 @@
 #include <shadelgraph/render/renderer.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -35,6 +36,8 @@ struct Renderer::Frame {
   graph::ResourceHandle output;
   std::optional<DeformationFrame> deformation;
   std::vector<ShadowView> shadows;  // inputs.shadowViews
+  graph::ResourceHandle pick;       // with a pick pending: the readback as imported
+  bool pickAnswered = false;        // a pass wrote it
 };
 
 Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, const plugin::Registry& registry,
@@ -166,6 +169,7 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
        settings.width, settings.height, settings.occlusionCulling ? &culling_ : nullptr},
       {}, {}, {}, {}, std::move(shadows)});
   frame->inputs.shadowViews = frame->shadows;
+  frame->inputs.pick = settings.pick;
   frame->output = frame->graph.importImage(
       "output", {.format = graph::Format::RGBA8Srgb, .size = graph::Size::absolute(settings.width, settings.height)},
       graph::ImportedState{graph::Layout::Undefined},
@@ -178,6 +182,7 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
   for (uint32_t d = 0; d < drawSpheres_.size(); ++d)
     if (sphereInFrustum(uniforms.viewProjection, drawSpheres_[d])) context.draws().forward.push_back(d);
   context.write(plugin::kOutputResource, frame->output);
+  if (settings.pick) importPick(*frame, *settings.pick, settings.width, settings.height);
   // Packages first settle what they take (prepare), then every pass declares.
   for (const auto& pass : frame_.passes)
     if (pass.pass->prepare) {
@@ -194,7 +199,30 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
     throw plugin::FrameError("frame '" + frame_.name + "' writes nothing to '" + plugin::kOutputResource +
                              "' (it needs a pass such as tonemap)");
   frame->graph.markOutput(result);
+  if (frame->pick.valid()) {
+    const auto picked = context.read(plugin::kPickResource);
+    frame->pickAnswered = picked != frame->pick;
+    if (frame->pickAnswered) frame->graph.markOutput(picked);
+  }
   return frame;
+}
+
+// The pick resource of this frame: the readback buffer, cleared to "nothing".
+void Renderer::importPick(Frame& frame, glm::uvec2 pixel, uint32_t width, uint32_t height) {
+  if (pixel.x >= width || pixel.y >= height)
+    throw std::out_of_range("pick pixel " + std::to_string(pixel.x) + "," + std::to_string(pixel.y) +
+                            " is outside the " + std::to_string(width) + "x" + std::to_string(height) + " frame");
+  if (!pickReadback_)
+    pickReadback_ = gpu::Buffer(device_.context(), device_.memory(),
+                                {sizeof(uint32_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryLocation::Readback,
+                                 "pick readback", "readback"});
+  const uint32_t none = 0;
+  pickReadback_.write(&none, sizeof none);
+  frame.pick = frame.graph.importBuffer("pick readback", {.size = sizeof(uint32_t)}, {},
+                                        {graph::Layout::Undefined, graph::PipelineStage::AllCommands,
+                                         graph::AccessFlag::None});
+  executor_.bindBuffer(frame.pick, pickReadback_);
+  frame.context->write(plugin::kPickResource, frame.pick);
 }
 
 graph::CompiledPlan Renderer::plan(const RenderSettings& settings) {
@@ -220,6 +248,12 @@ FrameResult Renderer::render(const RenderSettings& settings) {
   result.timings = executor_.execute(frame->graph, plan);
   result.timings.frameMs = timer.elapsedMs();
   result.transientBytes = executor_.transientBytes();
+  if (frame->pickAnswered) {  // execute waited for the frame
+    result.pickAnswered = true;
+    uint32_t id = 0;
+    std::memcpy(&id, pickReadback_.mapped(), sizeof id);
+    if (id != 0) result.picked = id - 1;
+  }
   if (settings.readback) result.image = gpu::readImage(device_.context(), device_.memory(), *output_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
   return result;
 }

@@ -38,6 +38,9 @@ struct RenderSettings {
   uint32_t framesInFlight = 1;
   bool readback = true;  // read the output image back (FrameResult::image)
   bool keepPlan = false;  // copy the compiled frame into FrameResult::plan (the viewer shows it)
+  // A pixel (x right, y down) whose object the frame's pick pass reads back
+  // (FrameResult::picked); the frame has the pass's work only while this is set.
+  std::optional<glm::uvec2> pick;
 };
 
 struct FrameResult {
@@ -45,6 +48,10 @@ struct FrameResult {
   gpu::FrameTimings timings;
   uint64_t transientBytes = 0;
   std::optional<graph::CompiledPlan> plan;  // with RenderSettings::keepPlan
+  // With RenderSettings::pick: whether a pass of the frame wrote the pick
+  // resource (plugin::kPickResource), and the scene instance it found there.
+  bool pickAnswered = false;
+  std::optional<uint32_t> picked;
 };
 
 class Renderer {
@@ -83,6 +90,7 @@ class Renderer {
  private:
   struct Frame;
   std::unique_ptr<Frame> declare(const RenderSettings& settings);
+  void importPick(Frame& frame, glm::uvec2 pixel, uint32_t width, uint32_t height);
   // The object's draws' bounding spheres from its world transform (and its deformed bounds).
   void updateSpheres(uint32_t instance, const glm::mat4& world);
 
@@ -103,6 +111,7 @@ class Renderer {
   gpu::Buffer noLightGrid_;       // bound as the light grid when the frame has none (header dims.w = 0)
   std::vector<GpuLight> frameLights_;
   std::optional<gpu::Image> output_;
+  gpu::Buffer pickReadback_;  // made at the first pick
   gpu::GraphExecutor executor_;
 };
 

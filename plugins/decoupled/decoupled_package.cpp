@@ -152,7 +152,7 @@ void registerDecoupledPackage(plugin::Registry& registry) {
                       if (view == DebugView::Sheet) ctx.write("scene.hdr", passes::addSheetView(ctx.graph(), d.frame(ctx)));
                     }});
   registry.addFrame({.name = "decoupled",
-                     .passes = {{.pass = "skinning"}, {.pass = "z-prepass"}, {.pass = "shadows"}, {.pass = "environment"}, {.pass = "light-cull"},
+                     .passes = {{.pass = "skinning"}, {.pass = "z-prepass"}, {.pass = "object-pick"}, {.pass = "shadows"}, {.pass = "environment"}, {.pass = "light-cull"},
                                 {.pass = "shadel-clear"}, {.pass = "shadel-mark"},
                                 {.pass = "support-expand"}, {.pass = "shadel-allocate"}, {.pass = "work-aggregate"},
                                 {.pass = "layer-shade"}, {.pass = "forward-opaque"}, {.pass = "alpha-mask"},

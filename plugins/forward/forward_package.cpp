@@ -19,6 +19,7 @@
 #include "forward/forward.hpp"
 #include "forward/forward_material.hpp"
 #include "light-cull/light_cull.hpp"
+#include "object-pick/object_pick.hpp"
 #include "shadows/shadows.hpp"
 #include "skinning/skinning.hpp"
 #include "occlusion-cull/occlusion_cull.hpp"
@@ -140,6 +141,18 @@ void registerForwardPackage(plugin::Registry& registry) {
                       ctx.write("scene.depth",
                                 passes::addZPrepass(ctx.graph(), ctx.view(ctx.visibleDraws()), depthTarget(ctx)));
                     }});
+  registry.addPass({.name = "object-pick",
+                    .description = "the object under a pixel, read back (only in a frame with a pick pending: "
+                                   "the viewer's click)",
+                    .reads = {plugin::kForwardDrawsResource},
+                    .writes = {plugin::kPickResource},
+                    .declare = [](FrameContext& ctx) {
+                      if (!ctx.has(plugin::kPickResource)) return;
+                      const auto& in = ctx.inputs();
+                      ctx.write(plugin::kPickResource,
+                                passes::addObjectPick(ctx.graph(), ctx.view(ctx.visibleDraws()), *in.pick,
+                                                      {in.width, in.height}, ctx.read(plugin::kPickResource)));
+                    }});
   registry.addPass({.name = "shadows",
                     .description = "shadow maps (spot: one, point: six cube faces, directional: cascades) of the shadowed lights that reach a visible object (only then)",
                     .reads = {plugin::kForwardDrawsResource},
@@ -238,7 +251,7 @@ void registerForwardPackage(plugin::Registry& registry) {
                                                    ctx.read(plugin::kOutputResource), ctx.debugColors));
                     }});
   registry.addFrame({.name = "forward",
-                     .passes = {{.pass = "skinning"}, {.pass = "z-prepass"}, {.pass = "shadows"}, {.pass = "environment"}, {.pass = "light-cull"},
+                     .passes = {{.pass = "skinning"}, {.pass = "z-prepass"}, {.pass = "object-pick"}, {.pass = "shadows"}, {.pass = "environment"}, {.pass = "light-cull"},
                                 {.pass = "forward-opaque"}, {.pass = "alpha-mask"}, {.pass = "alpha-blend"},
                                 {.pass = "exposure"}, {.pass = "bloom"}, {.pass = "tonemap"}}});
 }

@@ -56,8 +56,9 @@ TEST(FrameCli, PassesListsEveryRegisteredPassWithItsResourcesAndTheFrames) {
   EXPECT_EQ(passes["test-post"]["plugin"], "test-good");
   EXPECT_EQ(passes["tonemap"]["plugin"], "built-in");
   EXPECT_EQ(json["frames"]["forward"],
-            nlohmann::json({"skinning", "z-prepass", "shadows", "environment", "light-cull", "forward-opaque", "alpha-mask", "alpha-blend", "exposure",
-                            "bloom", "tonemap"}));
+            nlohmann::json({"skinning", "z-prepass", "object-pick", "shadows", "environment", "light-cull", "forward-opaque",
+                            "alpha-mask", "alpha-blend", "exposure", "bloom", "tonemap"}));
+  EXPECT_EQ(passes["object-pick"]["writes"], nlohmann::json({"view.pick"}));
   EXPECT_EQ(passes["skinning"]["writes"], nlohmann::json({"scene.vertices"}));
   const auto& plugged = json["frames"]["test-frame"];
   ASSERT_TRUE(plugged.is_array());
@@ -85,6 +86,26 @@ TEST(FrameCli, AnEnvironmentImageAddsThePrefilterOnlyWhenNamed) {
   const auto r = run("render " + lit.string() + " --size 160x90 --frames 2 -o " + out.string());
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(std::filesystem::exists(out));
+}
+
+// The object-pick pass is in both frames, but its graph passes (a 1x1 id
+// target and its readback) are in a frame only while a pick is pending.
+TEST(FrameCli, ThePickPassIsInTheFrameOnlyWhileAPickIsPending) {
+  for (const char* frame : {"forward", "decoupled"}) {
+    const auto normal = keptPasses(std::string("--frame-graph ") + frame);
+    const auto picking = keptPasses(std::string("--frame-graph ") + frame + " --pick 48,32");
+    EXPECT_FALSE(normal.count("object-pick")) << frame;
+    EXPECT_FALSE(normal.count("object-pick readback")) << frame;
+    EXPECT_TRUE(picking.count("object-pick")) << frame;
+    EXPECT_TRUE(picking.count("object-pick readback")) << frame;
+    std::set<std::string> rest = picking;
+    rest.erase("object-pick");
+    rest.erase("object-pick readback");
+    EXPECT_EQ(rest, normal) << frame << ": a pick adds its own passes and nothing else";
+  }
+  const auto outside = run("graph --size 96x64 --pick 96,0");
+  EXPECT_EQ(outside.exitCode, 1);
+  EXPECT_EQ(outside.err, "shadelgraph: error: --pick x 96: must be at most 95\n");
 }
 
 TEST(FrameCli, TheForwardFrameHoldsNoDecoupledPass) {

@@ -7,8 +7,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <thread>
 
 namespace sg::test {
 
@@ -57,6 +61,48 @@ class XvfbDisplay {
  private:
   pid_t pid_ = -1;
   std::string display_, error_;
+};
+
+// A window manager on DISPLAY, for what only one provides (iconifying a
+// window): twm (Debian's twm, which ./sg installs), placing windows itself and
+// using the server's built-in "fixed" font. Missing twm is a failure.
+class TwmWindowManager {
+ public:
+  TwmWindowManager() {
+    const auto config = std::filesystem::temp_directory_path() / ("sg-twmrc-" + std::to_string(getpid()));
+    std::ofstream(config) << "RandomPlacement\nTitleFont \"fixed\"\nResizeFont \"fixed\"\nMenuFont \"fixed\"\n"
+                             "IconFont \"fixed\"\nIconManagerFont \"fixed\"\n";
+    pid_ = fork();
+    if (pid_ == 0) {
+      const int null = open("/dev/null", O_WRONLY);
+      dup2(null, 1);
+      dup2(null, 2);  // its warnings about missing charsets are not the test's
+      execlp("twm", "twm", "-f", config.c_str(), static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    // twm has no readiness signal: give it time to take the screen, then check it is still there.
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    int status = 0;
+    if (pid_ < 0 || waitpid(pid_, &status, WNOHANG) != 0) {
+      pid_ = -1;
+      error_ = "twm did not start (install Debian's twm: ./sg installs it)";
+    }
+  }
+  ~TwmWindowManager() {
+    if (pid_ > 0) {
+      kill(pid_, SIGTERM);
+      waitpid(pid_, nullptr, 0);
+    }
+  }
+  TwmWindowManager(const TwmWindowManager&) = delete;
+  TwmWindowManager& operator=(const TwmWindowManager&) = delete;
+
+  bool ok() const { return pid_ > 0; }
+  const std::string& error() const { return error_; }
+
+ private:
+  pid_t pid_ = -1;
+  std::string error_;
 };
 
 }  // namespace sg::test

@@ -98,12 +98,22 @@ ScriptStep parseLine(const std::vector<std::string>& t) {
     s.height = uint32_t(count(t[2], "height", 1));
     if (s.width > kMaxOutputSide || s.height > kMaxOutputSide)
       throw LineError("resize: each side at most " + std::to_string(kMaxOutputSide));
+  } else if (event == "effect") {
+    arity(t, 3, 3, "effect NAME on|off");
+    if (t[2] != "on" && t[2] != "off") throw LineError("effect " + t[1] + ": expected on or off, not '" + t[2] + "'");
+    s.kind = ScriptStep::Kind::Effect;
+    s.path = t[1];
+    s.frames = t[2] == "on" ? 1 : 0;
+  } else if (event == "minimize" || event == "restore") {
+    arity(t, 1, 1, event == "minimize" ? "minimize" : "restore");
+    s.kind = event == "minimize" ? ScriptStep::Kind::Minimize : ScriptStep::Kind::Restore;
   } else if (event == "quit") {
     arity(t, 1, 1, "quit");
     s.kind = ScriptStep::Kind::Quit;
   } else {
     throw LineError("unknown event '" + event +
-                    "' (expected key, mouse, scroll, wait, screenshot, window-screenshot, resize or quit)");
+                    "' (expected key, mouse, scroll, wait, screenshot, window-screenshot, resize, effect, minimize, "
+                    "restore or quit)");
   }
   return s;
 }

@@ -1,5 +1,6 @@
 #include "viewer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -7,17 +8,20 @@
 #include <GLFW/glfw3.h>
 
 #include <shadelgraph/image/png.hpp>
-#include <shadelgraph/scene/object_motion.hpp>
 
 #include "../frame_setup.hpp"
 #include "../output_file.hpp"
-#include "object_picker.hpp"
 
 namespace sg::app::view {
 namespace {
 
 constexpr float kSecondsPerFrame = 1.0f / 30.0f;  // scene time a frame, as render's --frames steps
 constexpr double kClickPixels = 3.0;              // a press and release closer than this is a click, not a drag
+// Passes that add only what the scene calls for, so a frame without them still renders (docs/composing-frames.md).
+const char* const kEffectPasses[] = {"shadows", "environment", "bloom"};
+// Views after render's --view ones: every object in a debug material.
+const std::pair<const char*, const char*> kMaterialViews[] = {{"uv checker", "debug-uv-checker"},
+                                                              {"triangle id", "debug-triangle-id"}};
 
 gpu::ContextOptions windowContextOptions() {
   auto options = gpu::ContextOptions::fromEnvironment();
@@ -53,6 +57,7 @@ Viewer::Viewer(const ViewArgs& args) : args_(args) {
                                                 window_->framebufferSize());
   presenter_ = std::make_unique<FramePresenter>(*session_->context, session_->device->memory(), *swapchain_,
                                                 window_->handle());
+  fullFrame_ = session_->renderer->frame();
   panels_ = !args_.hidePanels;
   // The camera render would use (kRenderCamera), until the user moves it or chooses another.
   cameraChoice_ = r.camera ? *r.camera : kRenderCamera;
@@ -132,7 +137,64 @@ void Viewer::setObjectMode(uint32_t instance, scene::ShadingMode mode) {
 
 void Viewer::setObjectMaterial(uint32_t instance, const std::string& material) {
   materials_[instance] = material;
-  session_->renderer->setObjectMaterial(instance, material);
+  if (materialView_.empty()) session_->renderer->setObjectMaterial(instance, material);
+}
+
+const std::vector<std::string>& Viewer::viewNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const auto& view : debugViews()) n.push_back(view.first);
+    for (const auto& view : kMaterialViews) n.push_back(view.first);
+    return n;
+  }();
+  return names;
+}
+
+int Viewer::viewIndex() const {
+  for (size_t i = 0; i < std::size(kMaterialViews); ++i)
+    if (materialView_ == kMaterialViews[i].second) return int(debugViews().size() + i);
+  for (size_t i = 0; i < debugViews().size(); ++i)
+    if (debugViews()[i].second == decoupled_.view) return int(i);
+  return 0;
+}
+
+void Viewer::setView(int index) {
+  const size_t decoupledViews = debugViews().size();
+  const auto view = size_t(index) < decoupledViews ? debugViews()[size_t(index)].second : plugins::DebugView::Final;
+  if (view != decoupled_.view) {
+    decoupled_.view = view;
+    rebuild_ = true;
+  }
+  materialView_ = size_t(index) < decoupledViews ? "" : kMaterialViews[size_t(index) - decoupledViews].second;
+  for (uint32_t i = 0; i < materials_.size(); ++i)
+    session_->renderer->setObjectMaterial(i, materialView_.empty() ? materials_[i] : materialView_);
+  std::printf("view: %s\n", viewNames()[size_t(index)].c_str());
+}
+
+std::vector<std::string> Viewer::effects() const {
+  std::vector<std::string> found;
+  for (const char* effect : kEffectPasses)
+    for (const auto& pass : fullFrame_.passes)
+      if (pass.pass->name == effect) found.push_back(effect);
+  return found;
+}
+
+void Viewer::setEffect(const std::string& effect, bool on) {
+  const auto have = effects();
+  if (std::find(have.begin(), have.end(), effect) == have.end()) {
+    std::string list;
+    for (const auto& e : have) list += (list.empty() ? "" : ", ") + e;
+    throw std::invalid_argument("effect '" + effect + "': the frame has no such effect (it has: " +
+                                (list.empty() ? "none" : list) + ")");
+  }
+  if (on)
+    disabledEffects_.erase(effect);
+  else
+    disabledEffects_.insert(effect);
+  plugin::ResolvedFrame frame = fullFrame_;
+  std::erase_if(frame.passes, [&](const plugin::ResolvedPass& p) { return disabledEffects_.count(p.pass->name) != 0; });
+  session_->renderer->setFrame(std::move(frame));
+  std::printf("effect %s: %s\n", effect.c_str(), on ? "on" : "off");
 }
 
 std::filesystem::path Viewer::nextScreenshotPath() {
@@ -147,21 +209,31 @@ void Viewer::saveFrame(const std::filesystem::path& path) const {
               stats_.objects);
 }
 
+// A click asks the next frame for the object under the pixel: that frame holds the object-pick pass.
 void Viewer::pick(double x, double y) {
-  std::vector<glm::mat4> worlds;
-  for (const auto& instance : session_->scene.instances)
-    worlds.push_back(instance.motion.moves() ? scene::movedWorld(instance.motion, instance.world, float(played_) * kSecondsPerFrame)
-                                             : instance.world);
-  const auto hit = pickObject(session_->scene, worlds, currentCamera(), settings_.width, settings_.height, x, y);
-  selected = hit;
-  if (!hit) {
-    std::printf("pick %.0f %.0f: nothing\n", x, y);
+  if (x < 0 || y < 0 || x >= double(settings_.width) || y >= double(settings_.height)) {
+    std::printf("pick %.0f %.0f: outside the frame\n", x, y);
     return;
   }
-  // A click switches the object between decoupled and forward (auto counts as decoupled: what it asks for).
-  const auto mode = modes_[*hit] == scene::ShadingMode::Forward ? scene::ShadingMode::Decoupled : scene::ShadingMode::Forward;
-  setObjectMode(*hit, mode);
-  std::printf("pick %.0f %.0f: '%s' -> %s\n", x, y, session_->scene.instances[*hit].name.c_str(),
+  pendingPick_ = glm::uvec2(uint32_t(x), uint32_t(y));
+}
+
+// The pick frame's answer: the object under the pixel switches between decoupled and forward.
+void Viewer::finishPick(glm::uvec2 pixel) {
+  if (!frame_.pickAnswered) {
+    std::printf("pick %u %u: the frame has no object-pick pass\n", pixel.x, pixel.y);
+    return;
+  }
+  selected = frame_.picked;
+  if (!frame_.picked) {
+    std::printf("pick %u %u: nothing\n", pixel.x, pixel.y);
+    return;
+  }
+  const uint32_t hit = *frame_.picked;
+  // Auto counts as decoupled: what it asks for.
+  const auto mode = modes_[hit] == scene::ShadingMode::Forward ? scene::ShadingMode::Decoupled : scene::ShadingMode::Forward;
+  setObjectMode(hit, mode);
+  std::printf("pick %u %u: '%s' -> %s\n", pixel.x, pixel.y, session_->scene.instances[hit].name.c_str(),
               std::string(scene::toString(mode)).c_str());
 }
 
@@ -174,6 +246,7 @@ void Viewer::handle(const InputEvent& e) {
       if (e.key == GLFW_KEY_F) {
         controller_.frame(scene::worldBounds(session_->scene), float(settings_.width) / float(settings_.height));
         cameraChoice_ = kFreeCamera;
+        std::printf("camera: free, framing the scene\n");
       }
       if (e.key == GLFW_KEY_P) frameShot_ = nextScreenshotPath();
       if (e.key == GLFW_KEY_H) panels_ = !panels_;
@@ -184,11 +257,7 @@ void Viewer::handle(const InputEvent& e) {
       }
       if (e.key == GLFW_KEY_C) chooseCamera(std::max(cameraChoice_ + 1, 0));
       if (e.key == GLFW_KEY_SPACE) paused = !paused;
-      if (e.key >= GLFW_KEY_1 && e.key < GLFW_KEY_1 + int(debugViews().size())) {
-        decoupled_.view = debugViews()[size_t(e.key - GLFW_KEY_1)].second;
-        rebuild_ = true;
-        std::printf("view: %s\n", debugViews()[size_t(e.key - GLFW_KEY_1)].first.c_str());
-      }
+      if (e.key >= GLFW_KEY_1 && e.key < GLFW_KEY_1 + int(viewNames().size())) setView(e.key - GLFW_KEY_1);
       break;
     case T::KeyUp:
       keysHeld_.erase(e.key);
@@ -293,6 +362,25 @@ void Viewer::stepScript() {
                                    std::to_string(size.width) + "x" + std::to_string(size.height));
         break;
       }
+      case K::Minimize:
+      case K::Restore: {
+        const bool iconify = s.kind == K::Minimize;
+        window_->setIconified(iconify);
+        for (int i = 0; i < 200 && window_->minimized() != iconify; ++i) glfwWaitEventsTimeout(0.01);
+        if (window_->minimized() != iconify)
+          throw std::runtime_error(args_.script + ":" + std::to_string(s.line) + ": " +
+                                   (iconify ? "minimize: the window system did not iconify the window (is a window "
+                                              "manager running?)"
+                                            : "restore: the window system kept the window iconified"));
+        break;
+      }
+      case K::Effect:
+        try {
+          setEffect(s.path, s.frames != 0);
+        } catch (const std::invalid_argument& e) {
+          throw std::runtime_error(args_.script + ":" + std::to_string(s.line) + ": " + e.what());
+        }
+        break;
       case K::Quit:
         quit_ = true;
         break;
@@ -318,7 +406,7 @@ void Viewer::renderFrame() {
     session_->rebuildRenderer(decoupled_);
     for (uint32_t i = 0; i < modes_.size(); ++i) {
       session_->renderer->setObjectMode(i, modes_[i]);
-      session_->renderer->setObjectMaterial(i, materials_[i]);
+      session_->renderer->setObjectMaterial(i, materialView_.empty() ? materials_[i] : materialView_);
     }
   }
   // As render: its own choice of camera (the scene's first, else framing at this aspect), or the one chosen here.
@@ -330,7 +418,11 @@ void Viewer::renderFrame() {
   if (animations_->playing()) animations_->poseAt(float(args_.frame.time) + float(played_) * kSecondsPerFrame, *session_->renderer);
   settings_.readback = true;
   settings_.keepPlan = panels_;
+  settings_.pick = pendingPick_;
+  pendingPick_.reset();
   frame_ = session_->renderer->render(settings_);
+  if (settings_.pick) finishPick(*settings_.pick);
+  settings_.pick.reset();
   session_->decoupled->observeTimings(frame_.timings);
   stats_ = session_->decoupled->stats();
   history_.add(frame_.timings);
@@ -351,8 +443,18 @@ void Viewer::run() {
       controller_.fly(forward, right, up, kSecondsPerFrame);
     }
     if (window_->minimized()) {
-      glfwWaitEventsTimeout(0.1);  // minimized: nothing is rendered until the window comes back
+      if (!minimizedSince_) {
+        minimizedSince_ = 0;
+        std::printf("minimized after %llu frames\n", (unsigned long long)shown_);
+      }
+      ++*minimizedSince_;
+      glfwWaitEventsTimeout(0.1);  // nothing is rendered, the swapchain left alone, until the window comes back
       continue;
+    }
+    if (minimizedSince_) {
+      std::printf("restored after %llu frames (%llu idle waits)\n", (unsigned long long)shown_,
+                  (unsigned long long)*minimizedSince_);
+      minimizedSince_.reset();
     }
     applySize();
     renderFrame();

@@ -45,6 +45,14 @@ class Viewer {
   void setObjectMode(uint32_t instance, scene::ShadingMode mode);
   void setObjectMaterial(uint32_t instance, const std::string& material);
   const std::string& objectMaterial(uint32_t instance) const { return materials_[instance]; }
+  // The views keys 1-6 choose: render's --view ones, then every object in a debug material.
+  static const std::vector<std::string>& viewNames();
+  int viewIndex() const;
+  void setView(int index);
+  // The frame's effect passes (shadows, environment, bloom): each can be left out of the frame.
+  std::vector<std::string> effects() const;
+  bool effectOn(const std::string& effect) const { return !disabledEffects_.count(effect); }
+  void setEffect(const std::string& effect, bool on);
   std::optional<uint32_t> selected;
   // kRenderCamera: the one render would use; kFreeCamera; 0..cameras-1: the scene's; then the camera paths.
   static constexpr int kRenderCamera = -2, kFreeCamera = -1;
@@ -65,6 +73,7 @@ class Viewer {
   scene::Camera currentCamera() const;
   void freeCameraFromCurrent();
   void pick(double x, double y);
+  void finishPick(glm::uvec2 pixel);
 
   ViewArgs args_;
   std::unique_ptr<ViewerWindow> window_;
@@ -78,14 +87,19 @@ class Viewer {
   int globalMode_ = 0;
   std::vector<scene::ShadingMode> modes_;  // requested per object
   std::vector<std::string> materials_;     // per object, as the scene has it or chosen
+  std::string materialView_;               // a debug material every object shows instead (views 5, 6); empty: none
+  plugin::ResolvedFrame fullFrame_;        // the frame with every effect
+  std::set<std::string> disabledEffects_;
   CameraController controller_;
   int cameraChoice_ = -1;
   std::optional<scene::Camera> fixedCamera_;  // --frame's pose
   render::FrameResult frame_;
   plugins::DecoupledStats stats_;
   TimingHistory history_;
+  std::optional<glm::uvec2> pendingPick_;  // a click's pixel, for the next frame's object-pick pass
   uint64_t shown_ = 0;   // frames shown
   uint64_t played_ = 0;  // frames of scene time (not while paused)
+  std::optional<uint64_t> minimizedSince_;  // while minimized: the idle waits so far
   bool panels_ = true;
   bool quit_ = false;
   // Input state.

@@ -109,16 +109,8 @@ void controlsPanel(Viewer& viewer) {
   auto& s = viewer.decoupledSettings();
   int mode = viewer.globalMode();
   if (combo("mode", mode, {"each object's own", "forward", "decoupled", "auto"})) viewer.setGlobalMode(mode);
-  int view = 0;
-  std::vector<std::string> views;
-  for (size_t i = 0; i < debugViews().size(); ++i) {
-    views.push_back(debugViews()[i].first);
-    if (debugViews()[i].second == s.view) view = int(i);
-  }
-  if (combo("view", view, views)) {
-    s.view = debugViews()[size_t(view)].second;
-    viewer.rebuildRenderer();
-  }
+  int view = viewer.viewIndex();
+  if (combo("view", view, Viewer::viewNames())) viewer.setView(view);
   if (combo("filter", s.filter, {"point", "bilinear", "trilinear"})) viewer.rebuildRenderer();
   bool fixedBias = s.fixedBias.has_value();
   float bias = s.fixedBias.value_or(viewer.stats().bias);
@@ -143,6 +135,12 @@ void controlsPanel(Viewer& viewer) {
   auto cameras = viewer.cameraNames();
   cameras.insert(cameras.begin(), "free (drag, wheel, W A S D)");
   if (combo("camera", camera, cameras)) viewer.chooseCamera(camera - 1);
+  const auto effects = viewer.effects();
+  for (size_t e = 0; e < effects.size(); ++e) {
+    bool on = viewer.effectOn(effects[e]);
+    if (e > 0) ImGui::SameLine();
+    if (ImGui::Checkbox(effects[e].c_str(), &on)) viewer.setEffect(effects[e], on);
+  }
   ImGui::Checkbox("pause", &viewer.paused);
   if (ImGui::Button("save frame")) viewer.saveFrame(viewer.nextScreenshotPath());
   ImGui::SameLine();

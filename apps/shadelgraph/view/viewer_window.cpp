@@ -106,6 +106,13 @@ bool ViewerWindow::minimized() const {
   return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) || size.width == 0 || size.height == 0;
 }
 
+void ViewerWindow::setIconified(bool iconified) {
+  if (iconified)
+    glfwIconifyWindow(window_);
+  else
+    glfwRestoreWindow(window_);
+}
+
 void ViewerWindow::setSize(uint32_t width, uint32_t height) { glfwSetWindowSize(window_, int(width), int(height)); }
 
 }  // namespace sg::app::view

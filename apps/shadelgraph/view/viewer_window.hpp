@@ -32,6 +32,8 @@ class ViewerWindow {
   VkExtent2D framebufferSize() const;
   bool minimized() const;
   void setSize(uint32_t width, uint32_t height);
+  // Asks the window manager to iconify (or restore) the window; it answers asynchronously.
+  void setIconified(bool iconified);
   GLFWwindow* handle() const { return window_; }
 
  private:
