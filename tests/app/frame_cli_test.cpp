@@ -56,7 +56,8 @@ TEST(FrameCli, PassesListsEveryRegisteredPassWithItsResourcesAndTheFrames) {
   EXPECT_EQ(passes["test-post"]["plugin"], "test-good");
   EXPECT_EQ(passes["tonemap"]["plugin"], "built-in");
   EXPECT_EQ(json["frames"]["forward"],
-            nlohmann::json({"skinning", "z-prepass", "shadows", "environment", "light-cull", "forward-opaque", "alpha-mask", "alpha-blend", "exposure",
+            nlohmann::json({"skinning", "z-prepass", "shadows", "environment", "light-cull", "forward-opaque", "alpha-mask",
+                            "environment-background", "alpha-blend", "exposure",
                             "bloom", "tonemap"}));
   EXPECT_EQ(passes["skinning"]["writes"], nlohmann::json({"scene.vertices"}));
   const auto& plugged = json["frames"]["test-frame"];
