@@ -1,10 +1,14 @@
 #include "environment.hpp"
 
+#include <algorithm>
+
 #include <shadelgraph/gpu/barriers.hpp>
 #include <shadelgraph/gpu/device.hpp>
 #include <shadelgraph/gpu/graph_to_vulkan.hpp>
 #include <shadelgraph/gpu/pass_context.hpp>
 #include <shadelgraph/render/environment_binding.hpp>
+
+#include "environment_maps.hpp"
 
 namespace sg::passes {
 namespace {
@@ -13,14 +17,6 @@ namespace {
 const graph::ResourceState kResting{graph::Layout::General, graph::PipelineStage::AllCommands,
                                     graph::AccessFlag::ShaderStorageRead | graph::AccessFlag::ShaderStorageWrite |
                                         graph::AccessFlag::ShaderSampledRead};
-
-// Per renderer: the image's texels, the maps, and whether the maps hold the prefilter's result.
-struct EnvironmentMaps {
-  const void* scene = nullptr;  // the scene::Environment the maps were made from
-  gpu::Buffer source;
-  gpu::Image specular, irradiance, brdf;
-  bool prefiltered = false;
-};
 
 gpu::Image mapImage(gpu::Device& device, uint32_t width, uint32_t height, const char* name) {
   return gpu::Image(device.context(), device.memory(),
@@ -37,7 +33,9 @@ void create(EnvironmentMaps& maps, gpu::Device& device, const scene::Environment
                              "environment image", "environment", true});
   maps.source.write(env.rgba.data(), bytes);
   using shader::kEnvSpecularWidth;
-  maps.specular = mapImage(device, kEnvSpecularWidth, kEnvSpecularWidth / 2 * shader::kEnvSpecularLevels,
+  // The levels stacked, then a quarter width of rows for level 0's halvings.
+  maps.specular = mapImage(device, kEnvSpecularWidth,
+                           kEnvSpecularWidth / 2 * shader::kEnvSpecularLevels + kEnvSpecularWidth / 4,
                            "environment specular");
   maps.irradiance = mapImage(device, shader::kEnvIrradianceWidth, shader::kEnvIrradianceWidth / 2,
                              "environment irradiance");
@@ -92,19 +90,26 @@ gpu::ComputePipelineDesc environmentPrefilterPipeline() {
                      .pushConstantBytes = sizeof(shader::SgEnvironmentPush)}};
 }
 
+EnvironmentMaps& environmentMaps(render::FrameContext& frame) {
+  const scene::Environment& env = frame.inputs().scene.environment;
+  auto& maps = frame.ownState<EnvironmentMaps>(kEnvironmentMapsState);
+  if (maps.scene != &env || !maps.source) create(maps, frame.inputs().device, env);
+  return maps;
+}
+
 void addEnvironment(render::FrameContext& frame) {
   const scene::Environment& env = frame.inputs().scene.environment;
   if (!env.present()) return;
-  auto& maps = frame.ownState<EnvironmentMaps>("environment");
-  if (maps.scene != &env || !maps.source) create(maps, frame.inputs().device, env);
+  auto& maps = environmentMaps(frame);
 
   Handles h;
+  // The image itself, every frame: the prefilter's source once, the background's always.
+  h.source = frame.graph().importPersistentBuffer("environment image", {.size = maps.source.size()}, kResting);
+  frame.inputs().executor.bindBuffer(h.source, maps.source);
   h.specular = importMap(frame, maps.specular, "environment specular");
   h.irradiance = importMap(frame, maps.irradiance, "environment irradiance");
   h.brdf = importMap(frame, maps.brdf, "environment brdf");
   if (!maps.prefiltered) {
-    h.source = frame.graph().importPersistentBuffer("environment image", {.size = maps.source.size()}, kResting);
-    frame.inputs().executor.bindBuffer(h.source, maps.source);
     const uint32_t w = env.width, hgt = env.height;
     const uint32_t level = shader::kEnvSpecularWidth;
     // Level 0 and the BRDF lookup from the image; then what level 0 convolves to.
@@ -114,7 +119,10 @@ void addEnvironment(render::FrameContext& frame) {
     h.brdf = down.write(h.brdf, graph::Access::StorageWrite);
     down.execute([h, w, hgt, level](PassContext& ctx) {
       // The irradiance slot, untouched by these steps, holds level 0's image.
-      dispatch(ctx, h.source, h.specular, h.specular, h.brdf, {shader::kEnvStepDownsample, 0, w, hgt}, level, level / 2);
+      // Level 0 and its halvings, each straight from the image (no step reads another's output).
+      for (uint32_t k = 0; k <= shader::kEnvPyramidMips; ++k)
+        dispatch(ctx, h.source, h.specular, h.specular, h.brdf, {shader::kEnvStepDownsample, k, w, hgt}, level >> k,
+                 std::max(level >> (k + 1), 1u));
       dispatch(ctx, h.source, h.specular, h.specular, h.brdf, {shader::kEnvStepBrdf, 0, w, hgt}, shader::kEnvBrdfSize,
                shader::kEnvBrdfSize);
     });
@@ -135,6 +143,7 @@ void addEnvironment(render::FrameContext& frame) {
   frame.write(render::kEnvironmentSpecularResource, h.specular);
   frame.write(render::kEnvironmentIrradianceResource, h.irradiance);
   frame.write(render::kEnvironmentBrdfResource, h.brdf);
+  frame.write(kEnvironmentImageResource, h.source);
 }
 
 }  // namespace sg::passes

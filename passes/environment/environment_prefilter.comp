@@ -2,7 +2,7 @@
 // The environment light's one-time prefilter (Karis 2013, "Real Shading in
 // Unreal Engine 4"): the equirectangular HDR image box-filtered to specular
 // level 0, the cosine-convolved irradiance (E / pi), the GGX-prefiltered
-// specular levels (N = V = R) and the split-sum BRDF lookup of brdf.glsl's
+// specular levels (N = V = R, filtered importance sampling) and the split-sum BRDF lookup of brdf.glsl's
 // GGX with height-correlated Smith visibility. One step per dispatch.
 #extension GL_EXT_scalar_block_layout : require
 #include "environment_interface.h"
@@ -25,18 +25,31 @@ vec3 directionAt(vec2 uv) {
 
 vec2 uvOf(vec3 d) { return vec2(atan(d.x, -d.z) / (2.0 * kPi) + 0.5, acos(clamp(d.y, -1.0, 1.0)) / kPi); }
 
-// Bilinear read of specular level 0: u wraps, v clamps.
-vec3 level0(vec3 d) {
-  vec2 t = uvOf(d) * vec2(kLevel) - 0.5;
+// Level 0 (k = 0) or its halving k: size and where its texels start in `specular`.
+ivec2 mipSize(int k) { return ivec2(kLevel.x >> k, kLevel.y >> k); }
+ivec2 mipOrigin(int k) { return k == 0 ? ivec2(0) : ivec2(kLevel.x - ((2 * kLevel.x) >> k), kLevel.y * int(kEnvSpecularLevels)); }
+
+// Bilinear read of level 0's mip k: u wraps, v clamps.
+vec3 mipRead(vec3 d, int k) {
+  ivec2 size = mipSize(k), origin = mipOrigin(k);
+  vec2 t = uvOf(d) * vec2(size) - 0.5;
   ivec2 b = ivec2(floor(t));
   vec2 f = t - vec2(b);
   vec3 c = vec3(0.0);
   for (int j = 0; j < 2; ++j)
     for (int i = 0; i < 2; ++i) {
-      ivec2 q = ivec2(((b.x + i) % kLevel.x + kLevel.x) % kLevel.x, clamp(b.y + j, 0, kLevel.y - 1));
-      c += (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y) * imageLoad(specular, q).rgb;
+      ivec2 q = ivec2(((b.x + i) % size.x + size.x) % size.x, clamp(b.y + j, 0, size.y - 1));
+      c += (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y) * imageLoad(specular, origin + q).rgb;
     }
   return c;
+}
+
+// Level 0 filtered to mip `lod` (trilinear between its halvings).
+vec3 level0(vec3 d, float lod) {
+  lod = clamp(lod, 0.0, float(kEnvPyramidMips));
+  int a = int(floor(lod)), b = min(a + 1, int(kEnvPyramidMips));
+  vec3 ca = mipRead(d, a);
+  return lod > float(a) ? mix(ca, mipRead(d, b), lod - float(a)) : ca;
 }
 
 vec2 hammersley(uint i, uint n) { return vec2(float(i) / float(n), float(bitfieldReverse(i)) * 2.3283064365386963e-10); }
@@ -52,6 +65,11 @@ vec3 ggxHalf(vec2 xi, vec3 N, float alpha) {
   return normalize(t * h.x + b * h.y + N * h.z);
 }
 
+float ggxD(float NdotH, float alpha) {
+  float a2 = alpha * alpha, k = NdotH * NdotH * (a2 - 1.0) + 1.0;
+  return a2 / (kPi * k * k);
+}
+
 float visibilitySmithGgx(float NdotL, float NdotV, float alpha) {
   float a2 = alpha * alpha;
   float g = NdotL * sqrt(NdotV * NdotV * (1.0 - a2) + a2) + NdotV * sqrt(NdotL * NdotL * (1.0 - a2) + a2);
@@ -64,10 +82,11 @@ vec3 bounded(vec3 c) { return clamp(c, vec3(0.0), vec3(65000.0)); }
 void main() {
   ivec2 at = ivec2(gl_GlobalInvocationID.xy);
   if (p.step == kEnvStepDownsample) {
-    if (any(greaterThanEqual(at, kLevel))) return;
+    ivec2 size = mipSize(int(p.level));
+    if (any(greaterThanEqual(at, size))) return;
     // The source texels under this texel, at most 16 x 16 of them (strided beyond).
     uvec2 src = uvec2(p.sourceWidth, p.sourceHeight);
-    uvec2 lo = uvec2(at) * src / uvec2(kLevel), hi = max(lo + 1u, (uvec2(at) + 1u) * src / uvec2(kLevel));
+    uvec2 lo = uvec2(at) * src / uvec2(size), hi = max(lo + 1u, (uvec2(at) + 1u) * src / uvec2(size));
     uvec2 stride = max((hi - lo) / 16u, uvec2(1u));
     vec3 sum = vec3(0.0);
     float n = 0.0;
@@ -76,7 +95,7 @@ void main() {
         sum += texels[y * src.x + x].rgb;
         n += 1.0;
       }
-    imageStore(specular, at, vec4(bounded(sum / n), 1.0));
+    imageStore(specular, mipOrigin(int(p.level)) + at, vec4(bounded(sum / n), 1.0));
   } else if (p.step == kEnvStepBrdf) {
     if (any(greaterThanEqual(at, ivec2(kEnvBrdfSize)))) return;
     float NdotV = max(float(at.x) / float(kEnvBrdfSize - 1u), 1e-4);
@@ -118,12 +137,20 @@ void main() {
     vec3 N = directionAt((vec2(at) + 0.5) / vec2(kLevel));
     vec3 sum = vec3(0.0);
     float weight = 0.0;
+    // Filtered importance sampling (Colbert & Krivanek, GPU Gems 3 ch. 20): each sample
+    // reads the mip whose texels cover its share of the lobe, 1 / (n pdf) steradians, so
+    // few samples of a wide lobe do not alias the bright texels they land on into streaks.
+    float texelAngle = (2.0 * kPi / float(kLevel.x)) * (kPi / float(kLevel.y));  // times sin(theta)
     for (uint i = 0u; i < kEnvSpecularSamples; ++i) {
       vec3 H = ggxHalf(hammersley(i, kEnvSpecularSamples), N, alpha);
       vec3 L = reflect(-N, H);
       float NdotL = dot(N, L);
       if (NdotL <= 0.0) continue;
-      sum += level0(L) * NdotL;
+      float pdf = ggxD(clamp(dot(N, H), 0.0, 1.0), alpha) * 0.25;  // D NdotH / (4 VdotH), N = V
+      float sampleAngle = 1.0 / (float(kEnvSpecularSamples) * max(pdf, 1e-6));
+      float pixelAngle = texelAngle * max(sqrt(max(1.0 - L.y * L.y, 0.0)), 1.0 / float(kLevel.y));
+      float lod = 0.5 * log2(sampleAngle / pixelAngle) + 1.0;  // +1: neighbouring samples' footprints overlap
+      sum += level0(L, lod) * NdotL;
       weight += NdotL;
     }
     imageStore(specular, at + ivec2(0, int(p.level) * kLevel.y), vec4(bounded(sum / max(weight, 1e-6)), 1.0));

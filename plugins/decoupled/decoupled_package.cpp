@@ -156,7 +156,8 @@ void registerDecoupledPackage(plugin::Registry& registry) {
                                 {.pass = "shadel-clear"}, {.pass = "shadel-mark"},
                                 {.pass = "support-expand"}, {.pass = "shadel-allocate"}, {.pass = "work-aggregate"},
                                 {.pass = "layer-shade"}, {.pass = "forward-opaque"}, {.pass = "alpha-mask"},
-                                {.pass = "composite"}, {.pass = "counters-readback"}, {.pass = "alpha-blend"},
+                                {.pass = "composite"}, {.pass = "environment-background"}, {.pass = "counters-readback"},
+                                {.pass = "alpha-blend"},
                                 {.pass = "decoupled-debug-view"}, {.pass = "exposure"}, {.pass = "bloom"},
                                 {.pass = "tonemap"}}});
 }

@@ -162,8 +162,18 @@ void registerForwardPackage(plugin::Registry& registry) {
                     .description = "the scene's environment image prefiltered once for image-based lighting "
                                    "(only when the scene names one; the prefilter passes only until they ran)",
                     .writes = {render::kEnvironmentIrradianceResource, render::kEnvironmentSpecularResource,
-                               render::kEnvironmentBrdfResource},
+                               render::kEnvironmentBrdfResource, passes::kEnvironmentImageResource},
                     .declare = passes::addEnvironment});
+  registry.addPass({.name = "environment-background",
+                    .description = "the environment image behind everything, where nothing was drawn "
+                                   "(only when the scene names one; before alpha-blend, which blends over it)",
+                    .reads = {passes::kEnvironmentImageResource, "scene.hdr", "scene.depth"},
+                    .writes = {"scene.hdr"},
+                    .declare = [](FrameContext& ctx) {
+                      if (!ctx.inputs().scene.environment.present()) return;
+                      ctx.write("scene.hdr", passes::addEnvironmentBackground(ctx, ctx.read("scene.hdr"),
+                                                                              ctx.read("scene.depth")));
+                    }});
   registry.addPass({.name = "light-cull",
                     .description = "clustered light culling: which lights reach each screen tile and depth slice "
                                    "(only when the frame has more lights with a range than the threshold)",
@@ -252,8 +262,8 @@ void registerForwardPackage(plugin::Registry& registry) {
                     }});
   registry.addFrame({.name = "forward",
                      .passes = {{.pass = "skinning"}, {.pass = "z-prepass"}, {.pass = "object-pick"}, {.pass = "shadows"}, {.pass = "environment"}, {.pass = "light-cull"},
-                                {.pass = "forward-opaque"}, {.pass = "alpha-mask"}, {.pass = "alpha-blend"},
-                                {.pass = "exposure"}, {.pass = "bloom"}, {.pass = "tonemap"}}});
+                                {.pass = "forward-opaque"}, {.pass = "alpha-mask"}, {.pass = "environment-background"},
+                                {.pass = "alpha-blend"}, {.pass = "exposure"}, {.pass = "bloom"}, {.pass = "tonemap"}}});
 }
 
 }  // namespace sg::plugins

@@ -57,7 +57,7 @@ TEST(FrameCli, PassesListsEveryRegisteredPassWithItsResourcesAndTheFrames) {
   EXPECT_EQ(passes["tonemap"]["plugin"], "built-in");
   EXPECT_EQ(json["frames"]["forward"],
             nlohmann::json({"skinning", "z-prepass", "object-pick", "shadows", "environment", "light-cull", "forward-opaque",
-                            "alpha-mask", "alpha-blend", "exposure", "bloom", "tonemap"}));
+                            "alpha-mask", "environment-background", "alpha-blend", "exposure", "bloom", "tonemap"}));
   EXPECT_EQ(passes["object-pick"]["writes"], nlohmann::json({"view.pick"}));
   EXPECT_EQ(passes["skinning"]["writes"], nlohmann::json({"scene.vertices"}));
   const auto& plugged = json["frames"]["test-frame"];

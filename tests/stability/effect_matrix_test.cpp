@@ -27,11 +27,13 @@ using Names = std::set<std::string>;
 
 // Passes present only when the scene calls for them.
 const Names kEffectPasses = {"alpha-mask", "alpha-blend", "shadows", "environment-downsample", "environment-prefilter",
-                              "bloom", "light-cull"};
+                              "environment-background", "bloom", "light-cull"};
 // Graph resources that exist only for an effect (matched by name prefix).
 const Names kEffectResourcePrefixes = {"shadow", "environment", "bloom", "hdr (bloom)", "light grid"};
 const Names kPrefilterPasses = {"environment-downsample", "environment-prefilter"};
 const Names kEnvironmentMaps = {"environment brdf", "environment irradiance", "environment specular"};
+// Every frame of an environment scene draws the image behind everything, from the image itself.
+const Names kEnvironmentBackground = {"environment-background"};
 const Names kBloomResources = {"bloom level 1", "bloom level 2", "bloom level 3", "bloom level 4", "bloom level 5",
                                "hdr (bloom)"};
 
@@ -144,8 +146,9 @@ std::vector<Row> matrix() {
       // Bloom: a visible object emitting at least the bloom threshold (10 cd/m^2).
       {"Emissive", [] { return glowing(50.0f); }, {"bloom"}, {"bloom"}, kBloomResources},
       {"DimEmissive", [] { return glowing(5.0f); }, {}, {}, {}},
-      // Environment light: the first frame prefilters the image into the three maps.
-      {"Environment", environmentLit, kPrefilterPasses, kPrefilterPasses, with(kEnvironmentMaps, {"environment image"})},
+      // Environment light: the first frame prefilters the image into the three maps; every frame draws it behind.
+      {"Environment", environmentLit, with(kPrefilterPasses, kEnvironmentBackground),
+       with(kPrefilterPasses, kEnvironmentBackground), with(kEnvironmentMaps, {"environment image"})},
       {"AlphaBlend",
        [] {
          auto s = baseSet();
@@ -221,15 +224,15 @@ TEST_P(EffectMatrix, TheFrameHoldsExactlyTheEffectsTheSceneCallsFor) {
 }
 
 // The prefilter is one-time: after a frame has run it, the next frames hold
-// the maps (persistent) and no prefilter pass or image upload.
+// the maps (persistent) and no prefilter pass; the image stays for the background.
 TEST(EffectMatrixEnvironment, ThePrefilterRunsInTheFirstFrameOnly) {
   for (auto mode : {scene::ShadingMode::Forward, scene::ShadingMode::Decoupled}) {
     const char* what = mode == scene::ShadingMode::Forward ? "forward" : "decoupled";
     StabilitySession session(environmentLit(), mode);
     session.render(96, 64);
     const Effects got = effectsOf(nlohmann::json::parse(graph::toJson(session.plan(96, 64))));
-    EXPECT_EQ(got.passes, Names{}) << what << ": got " << joined(got.passes);
-    EXPECT_EQ(got.resources, kEnvironmentMaps) << what << ": got " << joined(got.resources);
+    EXPECT_EQ(got.passes, kEnvironmentBackground) << what << ": got " << joined(got.passes);
+    EXPECT_EQ(got.resources, with(kEnvironmentMaps, {"environment image"})) << what << ": got " << joined(got.resources);
   }
 }
 

@@ -236,6 +236,7 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   errors += mismatches("shadows", passes::shadowMapPipeline());
   errors += mismatches("skinning", passes::skinningPipeline());
   errors += mismatches("environment-prefilter", passes::environmentPrefilterPipeline());
+  errors += mismatches("environment-background", passes::environmentBackgroundPipeline());
   errors += mismatches("bloom", passes::bloomPipeline());
   errors += mismatches("light-cull", passes::lightCullPipeline());
   errors += mismatches("hi-z", passes::hiZPipeline());
