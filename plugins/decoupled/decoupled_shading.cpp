@@ -319,9 +319,9 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
   // Stable allocation: the chunk slots and free list, kept while the owned
   // entries and the storage capacity stay the same.
   if (hasObjects()) chunkSlots_.prepare(in.device, in.executor, storage_.capacityChunks());
-  const DecoupledParams params{bias_, settings_.sheetSizeLog2 - 6, storage_.widthChunks, storage_.chunksPerCounter,
-                               ownedEntryCount_, objectCount, storage_.capacityChunks(),
-                               storage_.counterCount, uint32_t(frames_), budget_ ? staleAge_.limit : 0u,
+  const DecoupledParams params{bias_,          settings_.sheetSizeLog2 - 6, storage_.widthChunks,
+                               ownedEntryCount_, objectCount,   storage_.capacityChunks(),
+                               uint32_t(frames_), budget_ ? staleAge_.limit : 0u,
                                keepShading ? 1u : 0u, staleAge_.fraction};
   params_[ring()].write(&params, sizeof params);
   graph::RenderGraph& graph = ctx.graph();
