@@ -35,10 +35,6 @@ struct DecoupledFrame {
   const gpu::Buffer& idMaps;
   uint32_t ownedEntryCount = 0;
   uint32_t objectCount = 0;
-  uint32_t capacityChunks = 0;  // physical chunks of shade storage
-  // Stable allocation: this frame empties every chunk slot and refills the free
-  // list first (new tables or another storage size: nothing stored survives).
-  bool resetSlots = false;
   // The composite filter (0 point, 1 bilinear, 2 trilinear), which is also
   // what shadel-mark marks: both pipelines get it only as filterDefine(filter).
   // Settled in the prepare step (the renderer's setting or composite's

@@ -1,8 +1,7 @@
 #version 460
 // Stable allocation (chunk_slots.glsl): a chunk keeps its storage for as long
-// as it stays marked. Three steps, a barrier apart (SG_PHASE):
-// 0 (only when the slots are reset: new tables, another storage size) every
-//   slot empty and every physical chunk on the free list;
+// as it stays marked. Two steps, a barrier apart (SG_PHASE; the host resets
+// the slots and free list when the tables or the storage size change):
 // 1 per owned entry, the slots of chunks no longer marked go back on the
 //   free list; those still marked are kept (no longer fresh);
 // 2 per owned entry, its newly marked chunks take slots from the free list
@@ -30,12 +29,6 @@ uint bitsSet(uint64_t bits) {
 
 void main() {
   uint i = gl_GlobalInvocationID.x;
-#if SG_PHASE == 0
-  if (i < params.ownedEntryCount * SG_CHUNKS_PER_ENTRY) chunkSlots[i] = kNoSlot;
-  if (i < params.ownedEntryCount) sgSetSlotMasks(i, uint64_t(0), uint64_t(0));
-  if (i < params.workCapacity) chunkSlots[sgFreeStackSlot(i)] = params.workCapacity - 1u - i;  // chunk 0 on top
-  if (i == 0u) chunkSlots[sgFreeCountSlot()] = params.workCapacity;
-#else
   if (i >= params.ownedEntryCount) return;
   SgOwnedEntry owned = ownedEntries[i];
   uint64_t occupancy = remap[owned.entryIndex].occupancy;
@@ -93,6 +86,5 @@ void main() {
     atomicAdd(work[sgObjectChunksSlot(owned.instanceId)], storedCount - reused);
     atomicAdd(counters.chunksShaded, storedCount - reused);
   }
-#endif
 #endif
 }

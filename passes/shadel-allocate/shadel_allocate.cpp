@@ -1,6 +1,5 @@
 #include "shadel_allocate.hpp"
 
-#include <algorithm>
 #include <array>
 #include <string>
 
@@ -9,13 +8,11 @@
 
 namespace sg::passes {
 namespace {
-constexpr std::array kResetBindings{kBindParams, kBindChunkSlots};
 constexpr std::array kFreeBindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindChunkSlots};
 constexpr std::array kTakeBindings{kBindParams, kBindObjects, kBindRemap,       kBindOwnedEntries,
                                    kBindCounters, kBindWork,   kBindChunkSlots, kBindShadeStamps};
 
 std::span<const uint32_t> phaseBindings(int phase) {
-  if (phase == 0) return kResetBindings;
   if (phase == 1) return kFreeBindings;
   return kTakeBindings;
 }
@@ -42,13 +39,6 @@ void addShadelAllocate(graph::RenderGraph& graph, DecoupledFrame& frame) {
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);
   frame.work = pass.write(frame.work, graph::Access::StorageReadWrite);
   pass.execute([frame](PassContext& ctx) {
-    if (frame.resetSlots) {
-      const auto& reset = ctx.device().pipeline("shadel-allocate-reset", [] { return shadelAllocatePipeline(0); });
-      bindDecoupled(ctx, reset, frame, kResetBindings);
-      const uint32_t n = std::max(frame.ownedEntryCount * 64, frame.capacityChunks);
-      vkCmdDispatch(ctx.cmd(), (n + 63) / 64, 1, 1);
-      computeToCompute(ctx.cmd());
-    }
     if (!frame.ownedEntryCount) return;
     const uint32_t groups = (frame.ownedEntryCount + 63) / 64;
     const auto& release = ctx.device().pipeline("shadel-allocate-free", [] { return shadelAllocatePipeline(1); });

@@ -8,7 +8,7 @@ namespace sg::passes {
 // those no longer marked free theirs, newly marked ones take free chunks;
 // overflow counted; the chunks that keep their shading counted apart.
 void addShadelAllocate(graph::RenderGraph& graph, DecoupledFrame& frame);
-// Its steps: 0 resets the slots and the free list, 1 frees, 2 allocates.
+// Its steps: 1 frees, 2 allocates (the host resets the slots: ChunkSlots).
 gpu::ComputePipelineDesc shadelAllocatePipeline(int phase = 2);
 
 }  // namespace sg::passes

@@ -21,7 +21,6 @@ void main() {
     work[sgObjectChunksSlot(i)] = 0u;
     work[sgObjectFillSlot(i)] = 0u;
   }
-  if (i < kStorageCounters) counters.allocated[i] = 0u;
   if (i < kMaxLevels) counters.levelChunks[i] = 0u;
   if (i < kStaleAgeBins) counters.staleAgeChunks[i] = 0u;
   if (i < kMaxPersistentLayers) {

@@ -52,9 +52,9 @@ std::vector<uint32_t> ChunkSlots::carriedOver(const std::vector<uint32_t>& old) 
   return slots;
 }
 
-bool ChunkSlots::prepare(gpu::Device& device, gpu::GraphExecutor& executor, uint32_t capacityChunks) {
+void ChunkSlots::prepare(gpu::Device& device, gpu::GraphExecutor& executor, uint32_t capacityChunks) {
   const uint64_t bytes = bufferWords(owned_.size(), capacityChunks) * sizeof(uint32_t);
-  if (valid_ && buffer_.size() == bytes && capacity_ == capacityChunks) return false;
+  if (valid_ && buffer_.size() == bytes && capacity_ == capacityChunks) return;
   executor.finish();  // a frame in flight may still use the old slots
   std::vector<uint32_t> carried;
   if (previous_ && buffer_ && capacity_ == capacityChunks) carried = carriedOver(read(device));
@@ -77,7 +77,6 @@ bool ChunkSlots::prepare(gpu::Device& device, gpu::GraphExecutor& executor, uint
   }
   write(device, carried);
   valid_ = true;
-  return false;
 }
 
 std::vector<uint32_t> ChunkSlots::read(gpu::Device& device) const {

@@ -22,11 +22,9 @@ class ChunkSlots {
  public:
   // New owned entries (uploadTables): the slots move with them at the next prepare.
   void setOwnedEntries(std::vector<shadel::OwnedEntry> owned);
-  // Before a frame that allocates: the buffer for `capacityChunks` of storage.
-  // Returns whether the frame must reset it on the GPU (no longer: resets are written here; always false).
-  bool prepare(gpu::Device& device, gpu::GraphExecutor& executor, uint32_t capacityChunks);
-  // The frame's shadel-allocate was declared (so a pending reset is done).
-  void allocated() { valid_ = true; }
+  // Before a frame that allocates: the buffer for `capacityChunks` of storage,
+  // its slots carried over or reset here on the host.
+  void prepare(gpu::Device& device, gpu::GraphExecutor& executor, uint32_t capacityChunks);
   const gpu::Buffer& buffer() const { return buffer_; }
   uint64_t bytes() const { return buffer_ ? buffer_.size() : 0; }
   // Entry index * 64 + chunk -> physical chunk, of every chunk with storage (after a completed frame).

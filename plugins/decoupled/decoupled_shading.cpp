@@ -318,10 +318,10 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
   const bool keepShading = rate > 1 || budget_.has_value();
   // Stable allocation: the chunk slots and free list, kept while the owned
   // entries and the storage capacity stay the same.
-  const bool resetSlots = hasObjects() && chunkSlots_.prepare(in.device, in.executor, storage_.capacityChunks());
-  const DecoupledParams params{bias_, settings_.sheetSizeLog2 - 6, storage_.widthChunks, storage_.chunksPerCounter,
-                               ownedEntryCount_, objectCount, storage_.capacityChunks(),
-                               storage_.counterCount, uint32_t(frames_), budget_ ? staleAge_.limit : 0u,
+  if (hasObjects()) chunkSlots_.prepare(in.device, in.executor, storage_.capacityChunks());
+  const DecoupledParams params{bias_,          settings_.sheetSizeLog2 - 6, storage_.widthChunks,
+                               ownedEntryCount_, objectCount,   storage_.capacityChunks(),
+                               uint32_t(frames_), budget_ ? staleAge_.limit : 0u,
                                keepShading ? 1u : 0u, staleAge_.fraction};
   params_[ring()].write(&params, sizeof params);
   graph::RenderGraph& graph = ctx.graph();
@@ -333,8 +333,6 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
                                         .params = params_[ring()], .objects = objects_[ring()], .shadelInstances = shadelInstances_,
                                         .levelRects = levelRects_, .ownedEntries = ownedEntries_, .idMaps = idMapBuffer_,
                                         .ownedEntryCount = ownedEntryCount_, .objectCount = objectCount,
-                                        .capacityChunks = storage_.capacityChunks(),
-                                        .resetSlots = resetSlots,
                                         .filter = settings_.filter,
                                         .baseline = settings_.baseline,
                                         .levelView = settings_.view == DebugView::Level});
@@ -347,8 +345,6 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
   frame.remap = declaredHistory_.remap;
   frame.slots = graph.importPersistentBuffer("chunk slots", {.size = chunkSlots_.bytes()}, kResting);
   in.executor.bindBuffer(frame.slots, chunkSlots_.buffer());
-  // shadel-allocate runs (and resets them) only while some object is shaded.
-  if (shading()) chunkSlots_.allocated();
   frame.counters = graph.createBuffer("shade counters", {.size = sizeof(ShadeCounters)});
   frame.work = graph.createBuffer("work", {.size = workBufferBytes(objectCount, storage_.capacityChunks())});
   // One VkDispatchIndirectCommand per object, then shade-reuse's.

@@ -42,7 +42,7 @@ SG_CONST uint kBindChunkSlots = 33u;
 SG_CONST uint kNoSlot = 0xFFFFFFFFu;
 SG_CONST uint kStaleAgeBins = 16u;  // SgShadeCounters.staleAgeChunks: ages 0..14, then 15 or more
 
-SG_CONST uint kStorageCounters = 16u;      // storage partitions, each with its allocation counter
+SG_CONST uint kStorageCounters = 16u;      // storage partitions (they round the storage's capacity)
 SG_CONST uint kMaxLevels = 16u;
 SG_CONST uint kMaxPersistentLayers = 8u;
 
@@ -73,7 +73,6 @@ struct SgDecoupledObject {
 
 // What the passes count, read back after the frame.
 struct SgShadeCounters {
-  uint allocated[kStorageCounters];  // unused since stable allocation (one free list); kept for the record's layout
   uint chunksMarked;
   uint chunksAllocated;
   uint overflowChunks;
@@ -95,11 +94,9 @@ struct SgDecoupledParams {
   float bias;                 // global fractional level bias (the adjuster's)
   uint entriesPerSideLog2;    // virtual sheet
   uint storageWidthChunks;    // layer image width in chunks
-  uint chunksPerCounter;      // storage partition size (unused since stable allocation)
   uint ownedEntryCount;
   uint objectCount;
   uint workCapacity;          // work items the work buffer holds
-  uint storageCounters;       // partitions (unused since stable allocation)
   uint frameNumber;           // this raster frame's number (shade stamps)
   // Budget mode (0: off): a reusable chunk older than this many raster frames
   // is shaded instead; one exactly this old is when a hash of its place falls

@@ -248,7 +248,7 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
     for (bool baseline : {false, true})
       errors += mismatches("shadel-mark filter=" + std::to_string(filter), passes::shadelMarkPipeline(filter, baseline));
   for (bool apply : {false, true}) errors += mismatches("support-expand", passes::supportExpandPipeline(apply));
-  for (int phase : {0, 1, 2}) errors += mismatches("shadel-allocate", passes::shadelAllocatePipeline(phase));
+  for (int phase : {1, 2}) errors += mismatches("shadel-allocate", passes::shadelAllocatePipeline(phase));
   errors += mismatches("work-offsets", passes::workOffsetsPipeline());
   errors += mismatches("work-fill", passes::workFillPipeline());
   errors += mismatches("shade-reuse", passes::shadeReusePipeline());
