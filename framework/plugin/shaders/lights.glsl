@@ -95,37 +95,41 @@ float sgShadowMapAt(int slot, vec3 position) {
 // Point: the cube face of the major axis. Directional: the cascade of the
 // position's view depth, blended into the next over the last kCascadeBlend of
 // it (the next cascade covers that band too), so the boundary does not pop.
+// At most two map lookups, each behind a loop that runs 0 or 1 times: lavapipe
+// runs an if's body under a lane mask even when no lane takes it, but skips a
+// loop that no lane enters (a lookup per cascade and light type cost the default
+// scene's forward-opaque 1.45x, 34% more shader instructions under callgrind).
 float sgShadowAt(Light light, vec3 position) {
   int first = int(light.cone.z) - 1;
-  if (first < 0) return 1.0;
-  uint type = uint(light.positionType.w);
-  // Far from the origin a float position is only good to its last bits, and so
-  // are the caster depths in the maps: the receiver steps 2 ulps of its largest
-  // coordinate towards the light (nothing near the origin: 1 um at 4 units).
-  vec3 a = abs(position);
-  float ulps = 2.0 * max(a.x, max(a.y, a.z)) * 1.1920929e-7;
-  vec3 towards = type == SG_LIGHT_DIRECTIONAL ? -light.directionRange.xyz : light.positionType.xyz - position;
-  position += ulps * towards / max(length(towards), 1e-30);
-  if (type == SG_LIGHT_SPOT) return sgShadowMapAt(first, position);
-  if (type == SG_LIGHT_POINT) {
-    vec3 d = position - light.positionType.xyz, a = abs(d);
-    int face = a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0 : 1) : (a.y >= a.z ? (d.y >= 0.0 ? 2 : 3) : (d.z >= 0.0 ? 4 : 5));
-    return sgShadowMapAt(first + face, position);
-  }
-  float depth = -(frame.view * vec4(position, 1.0)).z;
-  float start = 0.0;
-  for (int c = 0; c < int(kShadowCascades); ++c) {
-    float end = light.cascadeEnds[c];
-    if (depth <= end) {
-      float lit = sgShadowMapAt(first + c, position);
+  float lit = 1.0;
+  for (int shadowed = first >= 0 ? 1 : 0; shadowed > 0; --shadowed) {
+    uint type = uint(light.positionType.w);
+    // Far from the origin a float position is only good to its last bits, and so
+    // are the caster depths in the maps: the receiver steps 2 ulps of its largest
+    // coordinate towards the light (nothing near the origin: 1 um at 4 units).
+    vec3 a = abs(position);
+    float ulps = 2.0 * max(a.x, max(a.y, a.z)) * 1.1920929e-7;
+    vec3 towards = type == SG_LIGHT_DIRECTIONAL ? -light.directionRange.xyz : light.positionType.xyz - position;
+    vec3 p = position + ulps * towards / max(length(towards), 1e-30);
+    int slot = first, blendSlot = first;
+    float blend = 0.0;
+    if (type == SG_LIGHT_POINT) {
+      vec3 d = p - light.positionType.xyz, m = abs(d);
+      slot += m.x >= m.y && m.x >= m.z ? (d.x >= 0.0 ? 0 : 1) : (m.y >= m.z ? (d.y >= 0.0 ? 2 : 3) : (d.z >= 0.0 ? 4 : 5));
+    } else if (type == SG_LIGHT_DIRECTIONAL) {
+      float depth = -(frame.view * vec4(p, 1.0)).z;
+      vec4 ends = light.cascadeEnds;
+      int c = int(dot(vec4(greaterThan(vec4(depth), ends)), vec4(1.0)));  // cascades ending before it
+      float start = c == 0 ? 0.0 : ends[max(c - 1, 0)], end = ends[min(c, int(kShadowCascades) - 1)];
       float band = kCascadeBlend * (end - start);
-      if (c + 1 < int(kShadowCascades) && depth > end - band)
-        lit = mix(lit, sgShadowMapAt(first + c + 1, position), (depth - (end - band)) / band);
-      return lit;
+      slot = c < int(kShadowCascades) ? first + c : -1;  // -1: beyond the farthest visible object
+      blendSlot = slot + 1;
+      blend = c + 1 < int(kShadowCascades) ? clamp((depth - (end - band)) / band, 0.0, 1.0) : 0.0;
     }
-    start = end;
+    for (int inside = slot >= 0 ? 1 : 0; inside > 0; --inside) lit = sgShadowMapAt(slot, p);
+    for (int blended = blend > 0.0 ? 1 : 0; blended > 0; --blended) lit = mix(lit, sgShadowMapAt(blendSlot, p), blend);
   }
-  return 1.0;  // beyond the farthest visible object
+  return lit;
 }
 
 struct LightSample {
