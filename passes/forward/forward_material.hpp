@@ -23,9 +23,10 @@ void drawForward(PassContext& ctx, const render::SceneView& view, std::span<cons
 // these draws' materials read (MaterialLayer::frameInputs).
 void readFrameInputs(graph::Pass& pass, const render::SceneView& view, std::span<const uint32_t> draws);
 // Its pipeline, set 0 and push constants; the pass adds set 1 (the scene
-// material) and set 2 (the layers' textures) when it has them.
+// material) and set 2 (the layers' textures) when it has them. `plain`: the
+// variant for draws with DrawItem::plainSurface (position and normal varyings).
 gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& registry, const plugin::MaterialStack& material,
-                                                  bool blend);
+                                                  bool blend, bool plain = false);
 // Does the view hold a draw with this alpha mode?
 bool hasAlphaMode(const render::SceneView& view, scene::AlphaMode mode);
 

@@ -266,7 +266,9 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
         errors += mismatches("layer-shade of layer " + layer, passes::layerShadePipeline(registry_.layer(layer)));
     const auto& forward = registry_.materialFor(name, plugin::ShadingPath::Forward);
     for (bool blend : {false, true})
-      errors += mismatches("forward material " + forward.name, passes::forwardMaterialPipeline(registry_, forward, blend));
+      for (bool plain : {false, true})
+        errors += mismatches("forward material " + forward.name + (plain ? " (plain)" : ""),
+                             passes::forwardMaterialPipeline(registry_, forward, blend, plain));
   }
   EXPECT_EQ(errors, "");
   EXPECT_EQ(unused(), "");
