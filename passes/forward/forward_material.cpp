@@ -17,14 +17,16 @@ namespace {
 const gpu::Pipeline& forwardPipeline(PassContext& ctx, const render::SceneView& view,
                                      const plugin::MaterialStack& material, bool blend, bool plain) {
   const render::TextureSet* textures = view.layerTextures.forMaterial(material);
+  const bool shadowed = view.frameImages.count(render::kShadowMapsResource) != 0;
   const auto describe = [&] {
-    gpu::GraphicsPipelineDesc desc = forwardMaterialPipeline(view.materials, material, blend, plain);
+    gpu::GraphicsPipelineDesc desc = forwardMaterialPipeline(view.materials, material, blend, plain, shadowed);
     desc.layout.extraSets.push_back(view.scene.materialSetLayout());
     if (textures) desc.layout.extraSets.push_back(textures->layout());
     return desc;
   };
   try {
-    return ctx.device().pipeline(std::string(blend ? "forward/blend/" : "forward/") + (plain ? "plain/" : "") + material.name,
+    return ctx.device().pipeline(std::string(blend ? "forward/blend/" : "forward/") + (plain ? "plain/" : "") +
+                                     (shadowed ? "" : "unshadowed/") + material.name,
                                  describe);
   } catch (const gpu::ShaderCompileError& e) {
     throw render::layerCompileError(e, ctx.device().shaders(), "the forward variant of material '" + material.name + "'",
@@ -61,7 +63,7 @@ bool plainForward(const render::SceneView& view, uint32_t d) {
 }  // namespace
 
 gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& registry, const plugin::MaterialStack& material,
-                                                  bool blend, bool plain) {
+                                                  bool blend, bool plain, bool shadowed) {
   std::vector<gpu::DescriptorBinding> bindings{{shader::kBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
                                                render::shadowMapsBinding()};
   for (const auto& b : render::environmentBindings()) bindings.push_back(b);
@@ -70,8 +72,10 @@ gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& regist
     bindings.push_back({render::kBindLayerFrameInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
   gpu::ShaderRequest vertex{.path = "passes/forward/forward.vert"};
   if (plain) vertex.defines.push_back({"SG_FORWARD_PLAIN", "1"});
+  gpu::ShaderRequest fragment = forwardMaterialVariant(registry, material, plain);
+  if (!shadowed) fragment.defines.push_back({"SG_NO_SHADOW_MAPS", "1"});
   return {.vertex = vertex,
-          .fragment = forwardMaterialVariant(registry, material, plain),
+          .fragment = fragment,
           .layout = {.bindings = bindings, .pushConstantBytes = sizeof(render::ObjectConstants)},
           .vertexInput = render::sceneVertexInput(),
           .colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT},

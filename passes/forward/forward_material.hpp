@@ -24,9 +24,10 @@ void drawForward(PassContext& ctx, const render::SceneView& view, std::span<cons
 void readFrameInputs(graph::Pass& pass, const render::SceneView& view, std::span<const uint32_t> draws);
 // Its pipeline, set 0 and push constants; the pass adds set 1 (the scene
 // material) and set 2 (the layers' textures) when it has them. `plain`: the
-// variant for draws with DrawItem::plainSurface (position and normal varyings).
+// variant for draws with DrawItem::plainSurface (position and normal varyings);
+// `shadowed` false: for frames without shadow maps (no shadow code compiled in).
 gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& registry, const plugin::MaterialStack& material,
-                                                  bool blend, bool plain = false);
+                                                  bool blend, bool plain = false, bool shadowed = true);
 // Does the view hold a draw with this alpha mode?
 bool hasAlphaMode(const render::SceneView& view, scene::AlphaMode mode);
 

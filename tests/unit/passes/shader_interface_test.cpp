@@ -267,8 +267,9 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
     const auto& forward = registry_.materialFor(name, plugin::ShadingPath::Forward);
     for (bool blend : {false, true})
       for (bool plain : {false, true})
-        errors += mismatches("forward material " + forward.name + (plain ? " (plain)" : ""),
-                             passes::forwardMaterialPipeline(registry_, forward, blend, plain));
+        for (bool shadowed : {false, true})
+          errors += mismatches("forward material " + forward.name + (plain ? " (plain)" : "") + (shadowed ? "" : " (unshadowed)"),
+                               passes::forwardMaterialPipeline(registry_, forward, blend, plain, shadowed));
   }
   EXPECT_EQ(errors, "");
   EXPECT_EQ(unused(), "");
