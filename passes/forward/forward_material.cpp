@@ -17,16 +17,18 @@ namespace {
 const gpu::Pipeline& forwardPipeline(PassContext& ctx, const render::SceneView& view,
                                      const plugin::MaterialStack& material, bool blend, bool plain) {
   const render::TextureSet* textures = view.layerTextures.forMaterial(material);
-  const bool shadowed = view.frameImages.count(render::kShadowMapsResource) != 0;
+  const ForwardFrameFeatures frame{.shadowMaps = view.frameImages.count(render::kShadowMapsResource) != 0,
+                                   .lightGrid = view.frameImages.count(render::kLightGridResource) != 0,
+                                   .environmentMaps = view.frameImages.count(render::kEnvironmentSpecularResource) != 0};
   const auto describe = [&] {
-    gpu::GraphicsPipelineDesc desc = forwardMaterialPipeline(view.materials, material, blend, plain, shadowed);
+    gpu::GraphicsPipelineDesc desc = forwardMaterialPipeline(view.materials, material, blend, plain, frame);
     desc.layout.extraSets.push_back(view.scene.materialSetLayout());
     if (textures) desc.layout.extraSets.push_back(textures->layout());
     return desc;
   };
   try {
     return ctx.device().pipeline(std::string(blend ? "forward/blend/" : "forward/") + (plain ? "plain/" : "") +
-                                     (shadowed ? "" : "unshadowed/") + material.name,
+                                     frame.key() + material.name,
                                  describe);
   } catch (const gpu::ShaderCompileError& e) {
     throw render::layerCompileError(e, ctx.device().shaders(), "the forward variant of material '" + material.name + "'",
@@ -62,8 +64,12 @@ bool plainForward(const render::SceneView& view, uint32_t d) {
 
 }  // namespace
 
+std::string ForwardFrameFeatures::key() const {
+  return std::string(shadowMaps ? "" : "no-shadows/") + (lightGrid ? "" : "no-grid/") + (environmentMaps ? "" : "no-env/");
+}
+
 gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& registry, const plugin::MaterialStack& material,
-                                                  bool blend, bool plain, bool shadowed) {
+                                                  bool blend, bool plain, ForwardFrameFeatures frame) {
   std::vector<gpu::DescriptorBinding> bindings{{shader::kBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
                                                render::shadowMapsBinding()};
   for (const auto& b : render::environmentBindings()) bindings.push_back(b);
@@ -73,7 +79,9 @@ gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& regist
   gpu::ShaderRequest vertex{.path = "passes/forward/forward.vert"};
   if (plain) vertex.defines.push_back({"SG_FORWARD_PLAIN", "1"});
   gpu::ShaderRequest fragment = forwardMaterialVariant(registry, material, plain);
-  if (!shadowed) fragment.defines.push_back({"SG_NO_SHADOW_MAPS", "1"});
+  if (!frame.shadowMaps) fragment.defines.push_back({"SG_NO_SHADOW_MAPS", "1"});
+  if (!frame.lightGrid) fragment.defines.push_back({"SG_NO_LIGHT_GRID", "1"});
+  if (!frame.environmentMaps) fragment.defines.push_back({"SG_NO_ENVIRONMENT_MAPS", "1"});
   return {.vertex = vertex,
           .fragment = fragment,
           .layout = {.bindings = bindings, .pushConstantBytes = sizeof(render::ObjectConstants)},

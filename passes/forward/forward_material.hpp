@@ -3,6 +3,7 @@
 // generated from its layers (material_variant.hpp): shared by
 // forward-opaque, alpha-mask and alpha-blend.
 #include <span>
+#include <string>
 #include <vector>
 
 #include <shadelgraph/gpu/pass_context.hpp>
@@ -25,9 +26,15 @@ void readFrameInputs(graph::Pass& pass, const render::SceneView& view, std::span
 // Its pipeline, set 0 and push constants; the pass adds set 1 (the scene
 // material) and set 2 (the layers' textures) when it has them. `plain`: the
 // variant for draws with DrawItem::plainSurface (position and normal varyings);
-// `shadowed` false: for frames without shadow maps (no shadow code compiled in).
+// `frame`: what the frame provides; code for what it lacks is compiled out.
+struct ForwardFrameFeatures {
+  bool shadowMaps = true;       // else SG_NO_SHADOW_MAPS: every light unshadowed
+  bool lightGrid = true;        // else SG_NO_LIGHT_GRID: every light reaches every pixel
+  bool environmentMaps = true;  // else SG_NO_ENVIRONMENT_MAPS: the analytic sky
+  std::string key() const;      // part of the pipeline's name
+};
 gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& registry, const plugin::MaterialStack& material,
-                                                  bool blend, bool plain = false, bool shadowed = true);
+                                                  bool blend, bool plain = false, ForwardFrameFeatures frame = {});
 // Does the view hold a draw with this alpha mode?
 bool hasAlphaMode(const render::SceneView& view, scene::AlphaMode mode);
 

@@ -40,6 +40,9 @@ struct SgLightList {
 // result never depends on the grid, only its cost.
 SgLightList sgLightsAt(vec3 position) {
   SgLightList every = SgLightList(~0u, frame.counts.x);
+#ifdef SG_NO_LIGHT_GRID
+  return every;  // the frame built no grid (its stand-in says "every light" too)
+#endif
   uvec4 dims = sgLightGridHeader.dims;
   if (dims.w == 0u) return every;
   vec4 clip = frame.viewProjection * vec4(position, 1.0);

@@ -267,9 +267,11 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
     const auto& forward = registry_.materialFor(name, plugin::ShadingPath::Forward);
     for (bool blend : {false, true})
       for (bool plain : {false, true})
-        for (bool shadowed : {false, true})
-          errors += mismatches("forward material " + forward.name + (plain ? " (plain)" : "") + (shadowed ? "" : " (unshadowed)"),
-                               passes::forwardMaterialPipeline(registry_, forward, blend, plain, shadowed));
+        for (bool frameMaps : {false, true}) {
+          const passes::ForwardFrameFeatures frame{frameMaps, frameMaps, frameMaps};
+          errors += mismatches("forward material " + forward.name + (plain ? " (plain) " : " ") + frame.key(),
+                               passes::forwardMaterialPipeline(registry_, forward, blend, plain, frame));
+        }
   }
   EXPECT_EQ(errors, "");
   EXPECT_EQ(unused(), "");
