@@ -105,8 +105,11 @@ void GpuScene::uploadGeometry(gpu::Context& context, gpu::MemoryAllocator& memor
         for (size_t v = 0; v < primitive.positions.size(); ++v) vertices.push_back(toGpuVertex(primitive, v));
       }
       const auto& m = scene.materials[size_t(r.material)];
+      const bool textured = m.baseColorTexture.present() || m.metallicRoughnessTexture.present() ||
+                            m.normalTexture.present() || m.occlusionTexture.present() || m.emissiveTexture.present();
+      const bool plain = !textured && mesh.primitives[p].colors.empty();
       draws_.push_back({r.firstIndex, r.indexCount, r.vertexOffset, uint32_t(r.material), i, inst.world, m.alphaMode,
-                        m.doubleSided, inst.material.empty() ? plugin::kDefaultMaterial : inst.material});
+                        m.doubleSided, plain, inst.material.empty() ? plugin::kDefaultMaterial : inst.material});
     }
   }
   if (vertices.empty()) throw gpu::GpuError("the scene has no triangles to draw");

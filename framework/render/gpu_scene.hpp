@@ -40,6 +40,9 @@ struct DrawItem {
   glm::mat4 world{1.0f};
   scene::AlphaMode alphaMode = scene::AlphaMode::Opaque;
   bool doubleSided = false;
+  // Its material samples no texture and its mesh has no COLOR_0: a gltf-pbr
+  // forward draw then needs only position and normal interpolated.
+  bool plainSurface = false;
   std::string materialStack;  // the instance's layer stack ("gltf-pbr" unless the scene says otherwise)
 };
 

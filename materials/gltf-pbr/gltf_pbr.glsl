@@ -37,7 +37,9 @@ vec3 environmentRadiance(float y) {
 // scene's environment image when it has one, else the analytic sky gradient.
 // One source for every variant (forward, decoupled, the split-pbr layers).
 vec3 ambientDiffuse(vec3 N) {
+#ifndef SG_NO_ENVIRONMENT_MAPS  // the frame has no prefiltered maps: the sky only
   if (frame.environment.x > 0.0) return sgEnvironmentDiffuse(N);
+#endif
   return environmentRadiance(N.y);
 }
 
@@ -46,10 +48,12 @@ vec3 ambientDiffuse(vec3 N) {
 // lookup, or the analytic sky blurred towards its average with roughness,
 // scaled by Karis' analytic split-sum fit (UE4 mobile).
 vec3 ambientSpecular(vec3 R, float NdotV, float roughness, vec3 f0) {
+#ifndef SG_NO_ENVIRONMENT_MAPS
   if (frame.environment.x > 0.0) {
     vec2 ab = sgEnvironmentBrdf(NdotV, roughness);
     return sgEnvironmentSpecular(R, roughness) * (f0 * ab.x + ab.y);
   }
+#endif
   vec3 specularEnv = mix(environmentRadiance(R.y), environmentRadiance(0.3), roughness * roughness);
   vec4 c0 = vec4(-1.0, -0.0275, -0.572, 0.022), c1 = vec4(1.0, 0.0425, 1.04, -0.04);
   vec4 r = roughness * c0 + c1;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <set>
+#include <utility>
 
 #include <shadelgraph/render/light_binding.hpp>
 #include <shadelgraph/render/material_variants.hpp>
@@ -14,16 +15,21 @@ namespace sg::passes {
 namespace {
 
 const gpu::Pipeline& forwardPipeline(PassContext& ctx, const render::SceneView& view,
-                                     const plugin::MaterialStack& material, bool blend) {
+                                     const plugin::MaterialStack& material, bool blend, bool plain) {
   const render::TextureSet* textures = view.layerTextures.forMaterial(material);
+  const ForwardFrameFeatures frame{.shadowMaps = view.frameImages.count(render::kShadowMapsResource) != 0,
+                                   .lightGrid = view.frameImages.count(render::kLightGridResource) != 0,
+                                   .environmentMaps = view.frameImages.count(render::kEnvironmentSpecularResource) != 0};
   const auto describe = [&] {
-    gpu::GraphicsPipelineDesc desc = forwardMaterialPipeline(view.materials, material, blend);
+    gpu::GraphicsPipelineDesc desc = forwardMaterialPipeline(view.materials, material, blend, plain, frame);
     desc.layout.extraSets.push_back(view.scene.materialSetLayout());
     if (textures) desc.layout.extraSets.push_back(textures->layout());
     return desc;
   };
   try {
-    return ctx.device().pipeline((blend ? "forward/blend/" : "forward/") + material.name, describe);
+    return ctx.device().pipeline(std::string(blend ? "forward/blend/" : "forward/") + (plain ? "plain/" : "") +
+                                     frame.key() + material.name,
+                                 describe);
   } catch (const gpu::ShaderCompileError& e) {
     throw render::layerCompileError(e, ctx.device().shaders(), "the forward variant of material '" + material.name + "'",
                                     material.plugin);
@@ -49,18 +55,35 @@ std::vector<gpu::DescriptorWrite> forwardDescriptors(PassContext& ctx, const ren
   return writes;
 }
 
+// Draw `d` runs the plain variant: the glTF layer alone (it reads UVs, tangent
+// and colour only through textures and COLOR_0, which the draw has none of).
+bool plainForward(const render::SceneView& view, uint32_t d) {
+  const auto& layers = forwardMaterial(view, d).layers;
+  return view.scene.draws()[d].plainSurface && layers.size() == 1 && layers[0] == "gltf-pbr";
+}
+
 }  // namespace
 
+std::string ForwardFrameFeatures::key() const {
+  return std::string(shadowMaps ? "" : "no-shadows/") + (lightGrid ? "" : "no-grid/") + (environmentMaps ? "" : "no-env/");
+}
+
 gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& registry, const plugin::MaterialStack& material,
-                                                  bool blend) {
+                                                  bool blend, bool plain, ForwardFrameFeatures frame) {
   std::vector<gpu::DescriptorBinding> bindings{{shader::kBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
                                                render::shadowMapsBinding()};
   for (const auto& b : render::environmentBindings()) bindings.push_back(b);
   for (const auto& binding : render::lightBindings()) bindings.push_back(binding);
   for (uint32_t i = 0; i < render::forwardFrameInputs(registry, material).size(); ++i)
     bindings.push_back({render::kBindLayerFrameInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
-  return {.vertex = {.path = "passes/forward/forward.vert"},
-          .fragment = forwardMaterialVariant(registry, material),
+  gpu::ShaderRequest vertex{.path = "passes/forward/forward.vert"};
+  if (plain) vertex.defines.push_back({"SG_FORWARD_PLAIN", "1"});
+  gpu::ShaderRequest fragment = forwardMaterialVariant(registry, material, plain);
+  if (!frame.shadowMaps) fragment.defines.push_back({"SG_NO_SHADOW_MAPS", "1"});
+  if (!frame.lightGrid) fragment.defines.push_back({"SG_NO_LIGHT_GRID", "1"});
+  if (!frame.environmentMaps) fragment.defines.push_back({"SG_NO_ENVIRONMENT_MAPS", "1"});
+  return {.vertex = vertex,
+          .fragment = fragment,
           .layout = {.bindings = bindings, .pushConstantBytes = sizeof(render::ObjectConstants)},
           .vertexInput = render::sceneVertexInput(),
           .colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT},
@@ -94,7 +117,8 @@ std::vector<uint32_t> drawsWithAlphaMode(const render::SceneView& view, scene::A
   for (uint32_t d : view.draws)
     if (view.scene.draws()[d].alphaMode == mode) draws.push_back(d);
   std::stable_sort(draws.begin(), draws.end(), [&](uint32_t a, uint32_t b) {
-    return forwardMaterial(view, a).name < forwardMaterial(view, b).name;
+    return std::pair(forwardMaterial(view, a).name, plainForward(view, a)) <
+           std::pair(forwardMaterial(view, b).name, plainForward(view, b));
   });
   return draws;
 }
@@ -104,11 +128,13 @@ void drawForward(PassContext& ctx, const render::SceneView& view, std::span<cons
   // The pipeline (looked up by name) and its texture set change only with the
   // material, and the draws come grouped by material.
   const plugin::MaterialStack* boundMaterial = nullptr;
+  bool boundPlain = false;
   const gpu::Pipeline* pipeline = nullptr;
   for (uint32_t d : draws) {
     const auto& material = forwardMaterial(view, d);
-    if (&material != boundMaterial) {
-      pipeline = &forwardPipeline(ctx, view, material, blend);
+    const bool plain = plainForward(view, d);
+    if (&material != boundMaterial || plain != boundPlain) {
+      pipeline = &forwardPipeline(ctx, view, material, blend, plain);
       const auto writes = forwardDescriptors(ctx, view, material);
       ctx.bind(*pipeline, writes);
       if (const render::TextureSet* textures = view.layerTextures.forMaterial(material)) {
@@ -117,6 +143,7 @@ void drawForward(PassContext& ctx, const render::SceneView& view, std::span<cons
                                 1, &set, 0, nullptr);
       }
       boundMaterial = &material;
+      boundPlain = plain;
     }
     const auto& item = view.scene.draws()[d];
     VkDescriptorSet set = view.scene.materialSet(item.material);

@@ -3,6 +3,7 @@
 // generated from its layers (material_variant.hpp): shared by
 // forward-opaque, alpha-mask and alpha-blend.
 #include <span>
+#include <string>
 #include <vector>
 
 #include <shadelgraph/gpu/pass_context.hpp>
@@ -23,9 +24,17 @@ void drawForward(PassContext& ctx, const render::SceneView& view, std::span<cons
 // these draws' materials read (MaterialLayer::frameInputs).
 void readFrameInputs(graph::Pass& pass, const render::SceneView& view, std::span<const uint32_t> draws);
 // Its pipeline, set 0 and push constants; the pass adds set 1 (the scene
-// material) and set 2 (the layers' textures) when it has them.
+// material) and set 2 (the layers' textures) when it has them. `plain`: the
+// variant for draws with DrawItem::plainSurface (position and normal varyings);
+// `frame`: what the frame provides; code for what it lacks is compiled out.
+struct ForwardFrameFeatures {
+  bool shadowMaps = true;       // else SG_NO_SHADOW_MAPS: every light unshadowed
+  bool lightGrid = true;        // else SG_NO_LIGHT_GRID: every light reaches every pixel
+  bool environmentMaps = true;  // else SG_NO_ENVIRONMENT_MAPS: the analytic sky
+  std::string key() const;      // part of the pipeline's name
+};
 gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& registry, const plugin::MaterialStack& material,
-                                                  bool blend);
+                                                  bool blend, bool plain = false, ForwardFrameFeatures frame = {});
 // Does the view hold a draw with this alpha mode?
 bool hasAlphaMode(const render::SceneView& view, scene::AlphaMode mode);
 

@@ -11,10 +11,21 @@
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
+#ifdef SG_FORWARD_PLAIN
+// A draw without textures or vertex colours (DrawItem::plainSurface): the
+// other attributes are their defaults, not varyings. Lavapipe's per-triangle
+// setup and vertex emit cost grows with every varying, and on meshes of
+// sub-pixel triangles that cost is most of the frame.
+const vec4 inTangent = vec4(1.0, 0.0, 0.0, 1.0);
+const vec2 inUv0 = vec2(0.0);
+const vec2 inUv1 = vec2(0.0);
+const vec4 inColor = vec4(1.0);
+#else
 layout(location = 2) in vec4 inTangent;
 layout(location = 3) in vec2 inUv0;
 layout(location = 4) in vec2 inUv1;
 layout(location = 5) in vec4 inColor;
+#endif
 layout(location = 0) out vec4 outColor;
 
 // A forward pixel has no shadel level: the level a 1024-shadel chart would

@@ -8,6 +8,8 @@
 namespace sg::passes {
 
 // Every layer of `stack` must run forward (Registry::materialFor picks the fallback).
-gpu::ShaderRequest forwardMaterialVariant(const plugin::Registry& registry, const plugin::MaterialStack& stack);
+// `plain`: for draws with DrawItem::plainSurface (position and normal varyings only).
+gpu::ShaderRequest forwardMaterialVariant(const plugin::Registry& registry, const plugin::MaterialStack& stack,
+                                          bool plain = false);
 
 }  // namespace sg::passes

@@ -267,7 +267,12 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
         errors += mismatches("layer-shade of layer " + layer, passes::layerShadePipeline(registry_.layer(layer)));
     const auto& forward = registry_.materialFor(name, plugin::ShadingPath::Forward);
     for (bool blend : {false, true})
-      errors += mismatches("forward material " + forward.name, passes::forwardMaterialPipeline(registry_, forward, blend));
+      for (bool plain : {false, true})
+        for (bool frameMaps : {false, true}) {
+          const passes::ForwardFrameFeatures frame{frameMaps, frameMaps, frameMaps};
+          errors += mismatches("forward material " + forward.name + (plain ? " (plain) " : " ") + frame.key(),
+                               passes::forwardMaterialPipeline(registry_, forward, blend, plain, frame));
+        }
   }
   EXPECT_EQ(errors, "");
   EXPECT_EQ(unused(), "");
