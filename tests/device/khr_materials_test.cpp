@@ -154,7 +154,7 @@ INSTANTIATE_TEST_SUITE_P(
         Asset{"sheen", {"gltf-pbr", "gltf-pbr-sheen"}, [](scene::Material& m) { m.sheen.reset(); }},
         Asset{"specular", {"dielectric-specular", "gltf-pbr-specular"}, [](scene::Material& m) { m.specular.reset(); }},
         Asset{"ior", {"dielectric-specular", "gltf-pbr-specular"}, [](scene::Material& m) { m.ior.reset(); }}),
-    [](const ::testing::TestParamInfo<Asset>& info) { return std::string(info.param.name); });
+    [](const ::testing::TestParamInfo<Asset>& param) { return std::string(param.param.name); });
 
 }  // namespace
 }  // namespace sg::test

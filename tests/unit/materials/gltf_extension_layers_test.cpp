@@ -114,7 +114,9 @@ TEST(GltfExtensionLayers, EveryCombinationIsRegisteredInPhysicalOrder) {
           EXPECT_EQ(reads[0].layer, layers[i - 1]);
           EXPECT_EQ(reads[0].radius, 0u) << "a point read: the layer runs forward too";
         }
-        if (sheen) EXPECT_NE(std::find(layers.begin(), layers.end(), render::gltfMaterialStack({specular, true, false})), layers.end());
+        if (sheen) {
+          EXPECT_NE(std::find(layers.begin(), layers.end(), render::gltfMaterialStack({specular, true, false})), layers.end());
+        }
       }
   EXPECT_TRUE(registry.layer("dielectric-specular").viewIndependent()) << "a function of the surface's textures";
 }
@@ -178,8 +180,8 @@ INSTANTIATE_TEST_SUITE_P(
                  "KHR_materials_specular.specularColorFactor[1] must be a number >= 0"},
         BadValue{"MissingTexture", R"({"KHR_materials_clearcoat": {"clearcoatTexture": {"index": 3}}})",
                  "clearcoatTexture: texture 3 does not exist"},
-        BadValue{"NotAnObject", R"({"KHR_materials_sheen": 1})", "KHR_materials_sheen must be an object"}),
-    [](const ::testing::TestParamInfo<BadValue>& info) { return std::string(info.param.name); });
+        BadValue{"NotAnObject", R"({"KHR_materials_sheen": 1})", "/extensions/KHR_materials_sheen: expected an object"}),
+    [](const ::testing::TestParamInfo<BadValue>& param) { return std::string(param.param.name); });
 
 }  // namespace
 }  // namespace sg
