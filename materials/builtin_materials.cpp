@@ -1,11 +1,53 @@
 #include "builtin_materials.hpp"
 
+#include <shadelgraph/render/gltf_material_stack.hpp>
+
 namespace sg::materials {
 
 using plugin::LayerDependence;
 using plugin::LayerPaths;
 using plugin::MaterialLayer;
 using plugin::MaterialStack;
+
+namespace {
+
+// The glTF material extensions as layers on gltf-pbr: one material per
+// combination, named as render::gltfMaterialStack names them, which is what a
+// glTF material using them runs. Each extension layer is named after the
+// material it completes ("gltf-pbr-sheen" is the sheen over gltf-pbr) and
+// reads the layer under it, a parameter of its one GLSL source.
+void registerGltfExtensionMaterials(plugin::Registry& registry) {
+  // KHR_materials_ior / _specular: the dielectric Fresnel, an input under the base.
+  registry.addLayer({.name = "dielectric-specular", .source = "materials/khr/dielectric_specular.glsl",
+                     .function = "dielectricSpecular", .dependsOn = LayerDependence::Surface});
+  registry.addLayer({.name = "gltf-pbr-specular", .source = "materials/khr/gltf_pbr_specular.glsl",
+                     .function = "shadeGltfPbrSpecular", .reads = {{"dielectric-specular", 0}}});
+  for (const bool specular : {false, true})
+    for (const bool sheen : {false, true})
+      for (const bool clearcoat : {false, true}) {
+        if (!sheen && !clearcoat) {
+          if (specular) registry.addMaterial({.name = "gltf-pbr-specular", .layers = {"dielectric-specular", "gltf-pbr-specular"}});
+          continue;
+        }
+        std::vector<std::string> layers =
+            specular ? std::vector<std::string>{"dielectric-specular", "gltf-pbr-specular"} : std::vector<std::string>{"gltf-pbr"};
+        const auto stackOn = [&](const std::string& name, const char* source, const char* function, const char* base) {
+          if (!registry.hasLayer(name))
+            registry.addLayer({.name = name, .source = source, .function = function, .reads = {{layers.back(), 0}},
+                               .parameters = {{base, plugin::glslName(layers.back())}}});
+          layers.push_back(name);
+        };
+        if (sheen)
+          stackOn(render::gltfMaterialStack({.specular = specular, .sheen = true}), "materials/khr/sheen.glsl",
+                  "sheenLayer", "SHEEN_BASE");
+        if (clearcoat)
+          stackOn(render::gltfMaterialStack({.specular = specular, .sheen = sheen, .clearcoat = true}),
+                  "materials/khr/clearcoat.glsl", "clearcoatLayer", "CLEARCOAT_BASE");
+        registry.addMaterial({.name = render::gltfMaterialStack({specular, sheen, clearcoat}), .layers = layers});
+      }
+}
+
+}  // namespace
 
 void registerBuiltinMaterials(plugin::Registry& registry) {
   registry.beginPlugin("built-in");
@@ -54,6 +96,8 @@ void registerBuiltinMaterials(plugin::Registry& registry) {
   registry.addLayer({.name = "specular-light", .source = "materials/split-pbr/specular_light.glsl",
                      .function = "specularLight", .reads = {{"diffuse-light", 0}}});
   registry.addMaterial({.name = "split-pbr", .layers = {"diffuse-light", "specular-light"}});
+
+  registerGltfExtensionMaterials(registry);
 
   // Debug layers, each a material of its own.
   for (const auto& [name, source, function] :

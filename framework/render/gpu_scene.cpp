@@ -9,6 +9,7 @@
 #include <shadelgraph/gpu/error.hpp>
 #include <shadelgraph/plugin/material_stack.hpp>
 #include <shadelgraph/render/buffer_upload.hpp>
+#include <shadelgraph/render/gltf_material_stack.hpp>
 #include <shadelgraph/render/texture_upload.hpp>
 
 namespace sg::render {
@@ -18,12 +19,16 @@ namespace {
 struct GpuTextureSlot {
   glm::vec4 row0, row1;
 };
+constexpr uint32_t kTextureSlots = 12;  // the core five, then the material extensions' seven
 struct GpuMaterial {
   glm::vec4 baseColorFactor;
   glm::vec4 emissiveFactor;
   glm::vec4 params;
   glm::uvec4 flags;
-  GpuTextureSlot slots[5];
+  glm::vec4 clearcoat;  // factor, roughness, normal scale, -
+  glm::vec4 sheen;      // colour, roughness
+  glm::vec4 specular;   // colour factor x dielectric f0 from the ior, specular factor
+  GpuTextureSlot slots[kTextureSlots];
 };
 
 VkSamplerAddressMode toVk(scene::WrapMode m) {
@@ -109,7 +114,7 @@ void GpuScene::uploadGeometry(gpu::Context& context, gpu::MemoryAllocator& memor
                             m.normalTexture.present() || m.occlusionTexture.present() || m.emissiveTexture.present();
       const bool plain = !textured && mesh.primitives[p].colors.empty();
       draws_.push_back({r.firstIndex, r.indexCount, r.vertexOffset, uint32_t(r.material), i, inst.world, m.alphaMode,
-                        m.doubleSided, plain, inst.material.empty() ? plugin::kDefaultMaterial : inst.material});
+                        m.doubleSided, plain, inst.material.empty() ? gltfMaterialStack(m) : inst.material});
     }
   }
   if (vertices.empty()) throw gpu::GpuError("the scene has no triangles to draw");
@@ -153,7 +158,7 @@ void GpuScene::uploadTextures(gpu::Context& context, gpu::MemoryAllocator& memor
 
 void GpuScene::createMaterials(gpu::Context& context, gpu::MemoryAllocator& memory, const scene::Scene& scene) {
   std::vector<VkDescriptorSetLayoutBinding> bindings{{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_ALL, nullptr}};
-  for (uint32_t b = 1; b <= 5; ++b)
+  for (uint32_t b = 1; b <= kTextureSlots; ++b)
     bindings.push_back({b, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_ALL, nullptr});
   VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   layoutInfo.bindingCount = uint32_t(bindings.size());
@@ -164,7 +169,7 @@ void GpuScene::createMaterials(gpu::Context& context, gpu::MemoryAllocator& memo
   if (materials.empty()) materials.push_back({});
   const auto count = uint32_t(materials.size());
   VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, count},
-                                  {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, count * 5}};
+                                  {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, count * kTextureSlots}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = count;
   poolInfo.poolSizeCount = 2;
@@ -185,17 +190,23 @@ void GpuScene::createMaterials(gpu::Context& context, gpu::MemoryAllocator& memo
     g.baseColorFactor = m.baseColorFactor;
     g.emissiveFactor = glm::vec4(m.emissiveFactor * m.emissiveStrength, m.normalScale);
     g.params = {m.metallicFactor, m.roughnessFactor, m.occlusionStrength, m.alphaCutoff};
-    const scene::TextureRef* refs[5] = {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture,
-                                        &m.occlusionTexture, &m.emissiveTexture};
-    VkDescriptorImageInfo images[5];
+    const scene::Clearcoat coat = m.clearcoat.value_or(scene::Clearcoat{});
+    const scene::Sheen sheen = m.sheen.value_or(scene::Sheen{});
+    const scene::Specular specular = m.specular.value_or(scene::Specular{});
+    const float ior = m.ior.value_or(1.5f), iorF0 = (ior - 1.0f) * (ior - 1.0f) / ((ior + 1.0f) * (ior + 1.0f));
+    g.clearcoat = {coat.factor, coat.roughnessFactor, coat.normalScale, 0.0f};
+    g.sheen = glm::vec4(sheen.colorFactor, sheen.roughnessFactor);
+    g.specular = glm::vec4(specular.colorFactor * iorF0, specular.factor);
+    const auto refs = m.textureSlots();
+    VkDescriptorImageInfo images[kTextureSlots];
     uint32_t present = 0;
-    for (int slot = 0; slot < 5; ++slot) {
-      const auto& ref = *refs[slot];
+    for (uint32_t slot = 0; slot < kTextureSlots; ++slot) {
+      const auto& ref = refs[slot];
       const glm::mat3 t = ref.transform.matrix();
       // glm is column-major: row r of the affine is (t[0][r], t[1][r], t[2][r]).
       g.slots[slot].row0 = {t[0][0], t[1][0], t[2][0], 0.0f};
       g.slots[slot].row1 = {t[0][1], t[1][1], t[2][1], float(ref.texCoord)};
-      size_t texture = slot == 2 ? flatNormal : white;
+      size_t texture = slot == 2 || slot == 7 ? flatNormal : white;  // normalTexture, clearcoatNormalTexture
       VkSampler sampler = samplers_[0];
       if (ref.present()) {
         present |= 1u << slot;
@@ -217,7 +228,7 @@ void GpuScene::createMaterials(gpu::Context& context, gpu::MemoryAllocator& memo
     w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     w.pBufferInfo = &bufferInfo;
     writes.push_back(w);
-    for (uint32_t slot = 0; slot < 5; ++slot) {
+    for (uint32_t slot = 0; slot < kTextureSlots; ++slot) {
       w.dstBinding = slot + 1;
       w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
       w.pBufferInfo = nullptr;

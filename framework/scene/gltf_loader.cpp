@@ -21,8 +21,10 @@ namespace {
 using detail::capText;
 using detail::InvalidAsset;
 
-constexpr std::string_view kSupportedExtensions[] = {"KHR_texture_transform", "KHR_lights_punctual",
-                                                     "KHR_materials_unlit", "KHR_materials_emissive_strength"};
+// What a file may require (extensionsRequired); anything else is refused by name.
+constexpr std::string_view kSupportedExtensions[] = {
+    "KHR_texture_transform",   "KHR_lights_punctual",   "KHR_materials_unlit",    "KHR_materials_emissive_strength",
+    "KHR_materials_clearcoat", "KHR_materials_sheen",   "KHR_materials_specular", "KHR_materials_ior"};
 
 std::vector<uint8_t> readFile(const std::filesystem::path& file) {
   std::error_code error;

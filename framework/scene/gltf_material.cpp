@@ -1,3 +1,5 @@
+#include <cmath>
+#include <cstdio>
 #include <map>
 #include <utility>
 
@@ -70,12 +72,31 @@ class TextureBuilder {
   // `where` names the use, e.g. "material 0 'Red' baseColorTexture".
   TextureRef reference(int textureIndex, int texCoord, const tinygltf::ExtensionMap& extensions, bool srgb,
                        const std::string& where) {
+    const auto it = extensions.find("KHR_texture_transform");
+    return reference(textureIndex, texCoord, it != extensions.end() ? &it->second : nullptr, srgb, where);
+  }
+
+  // A textureInfo inside a material extension (tinygltf leaves those as JSON values).
+  TextureRef reference(const tinygltf::Value& info, bool srgb, const std::string& where) {
+    if (!info.IsObject()) return {};
+    const tinygltf::Value& index = info.Get("index");
+    const tinygltf::Value& texCoord = info.Get("texCoord");
+    const tinygltf::Value& extensions = info.Get("extensions");
+    const tinygltf::Value* transform =
+        extensions.IsObject() && extensions.Has("KHR_texture_transform") ? &extensions.Get("KHR_texture_transform") : nullptr;
+    if (!index.IsInt() || index.GetNumberAsInt() < 0) throw InvalidAsset(where + ": index must be an integer >= 0");
+    return reference(index.GetNumberAsInt(), texCoord.IsInt() ? texCoord.GetNumberAsInt() : 0, transform, srgb, where);
+  }
+
+ private:
+  TextureRef reference(int textureIndex, int texCoord, const tinygltf::Value* transformValue, bool srgb,
+                       const std::string& where) {
     TextureRef ref;
     if (textureIndex < 0) return ref;
     ref.texture = texture(textureIndex, srgb, where);
     ref.texCoord = texCoord;
-    if (const auto it = extensions.find("KHR_texture_transform"); it != extensions.end() && it->second.IsObject()) {
-      const tinygltf::Value& transform = it->second;
+    if (transformValue && transformValue->IsObject()) {
+      const tinygltf::Value& transform = *transformValue;
       ref.transform.offset = vec2(transform.Get("offset"), glm::vec2(0.0f));
       ref.transform.rotation = number(transform.Get("rotation"), 0.0f);
       ref.transform.scale = vec2(transform.Get("scale"), glm::vec2(1.0f));
@@ -89,7 +110,6 @@ class TextureBuilder {
     return ref;
   }
 
- private:
   int texture(int textureIndex, bool srgb, const std::string& where) {
     const tinygltf::Model& model = context_.model;
     if (static_cast<size_t>(textureIndex) >= model.textures.size())
@@ -176,6 +196,88 @@ float emissiveStrength(const tinygltf::Material& in, const std::string& name) {
   return static_cast<float>(strength);
 }
 
+std::string shortNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// A material extension's number: `fallback` when absent, else finite and within [low, high].
+float extensionNumber(const tinygltf::Value& extension, const char* key, float fallback, double low, double high,
+                      const std::string& where) {
+  if (!extension.Has(key)) return fallback;
+  const tinygltf::Value& value = extension.Get(key);
+  const double number = value.IsNumber() ? value.GetNumberAsDouble() : std::nan("");
+  if (!(number >= low && number <= high))
+    throw InvalidAsset(where + "." + key + " must be " +
+                       (low < -1e30 ? std::string("a finite number")
+                        : high > 1e30 ? "a finite number >= " + shortNumber(low)
+                                      : "a number from " + shortNumber(low) + " to " + shortNumber(high)));
+  return static_cast<float>(number);
+}
+
+glm::vec3 extensionColor(const tinygltf::Value& extension, const char* key, glm::vec3 fallback, double high,
+                         const std::string& where) {
+  if (!extension.Has(key)) return fallback;
+  const tinygltf::Value& value = extension.Get(key);
+  if (!value.IsArray() || value.ArrayLen() != 3) throw InvalidAsset(where + "." + key + " must be an array of 3 numbers");
+  glm::vec3 out;
+  for (int i = 0; i < 3; ++i) {
+    const tinygltf::Value& component = value.Get(i);
+    const double number = component.IsNumber() ? component.GetNumberAsDouble() : std::nan("");
+    if (!(number >= 0.0 && number <= high))
+      throw InvalidAsset(where + "." + key + "[" + std::to_string(i) + "] must be a number >= 0" +
+                         (high < 1e30 ? " and <= 1" : ""));
+    out[i] = static_cast<float>(number);
+  }
+  return out;
+}
+
+// The material extensions the layer stacks shade (materials/khr): each read
+// into its Material member, textures included.
+void convertLayerExtensions(const tinygltf::Material& in, const std::string& name, TextureBuilder& textures,
+                            Material& out) {
+  constexpr double kFinite = 3.0e38;
+  const auto extension = [&](const char* key) -> const tinygltf::Value* {
+    const auto it = in.extensions.find(key);
+    if (it == in.extensions.end()) return nullptr;
+    if (!it->second.IsObject()) throw InvalidAsset(name + ": " + key + " must be an object");
+    return &it->second;
+  };
+  if (const tinygltf::Value* e = extension("KHR_materials_ior"))
+    out.ior = extensionNumber(*e, "ior", 1.5f, 1.0, kFinite, name + ": KHR_materials_ior");
+  if (const tinygltf::Value* e = extension("KHR_materials_specular")) {
+    const std::string where = name + ": KHR_materials_specular";
+    Specular specular;
+    specular.factor = extensionNumber(*e, "specularFactor", 1.0f, 0.0, 1.0, where);
+    specular.colorFactor = extensionColor(*e, "specularColorFactor", glm::vec3(1.0f), kFinite, where);
+    specular.texture = textures.reference(e->Get("specularTexture"), false, where + ".specularTexture");
+    specular.colorTexture = textures.reference(e->Get("specularColorTexture"), true, where + ".specularColorTexture");
+    out.specular = specular;
+  }
+  if (const tinygltf::Value* e = extension("KHR_materials_sheen")) {
+    const std::string where = name + ": KHR_materials_sheen";
+    Sheen sheen;
+    sheen.colorFactor = extensionColor(*e, "sheenColorFactor", glm::vec3(0.0f), 1.0, where);
+    sheen.roughnessFactor = extensionNumber(*e, "sheenRoughnessFactor", 0.0f, 0.0, 1.0, where);
+    sheen.colorTexture = textures.reference(e->Get("sheenColorTexture"), true, where + ".sheenColorTexture");
+    sheen.roughnessTexture = textures.reference(e->Get("sheenRoughnessTexture"), false, where + ".sheenRoughnessTexture");
+    out.sheen = sheen;
+  }
+  if (const tinygltf::Value* e = extension("KHR_materials_clearcoat")) {
+    const std::string where = name + ": KHR_materials_clearcoat";
+    Clearcoat coat;
+    coat.factor = extensionNumber(*e, "clearcoatFactor", 0.0f, 0.0, 1.0, where);
+    coat.roughnessFactor = extensionNumber(*e, "clearcoatRoughnessFactor", 0.0f, 0.0, 1.0, where);
+    coat.texture = textures.reference(e->Get("clearcoatTexture"), false, where + ".clearcoatTexture");
+    coat.roughnessTexture = textures.reference(e->Get("clearcoatRoughnessTexture"), false, where + ".clearcoatRoughnessTexture");
+    const tinygltf::Value& normal = e->Get("clearcoatNormalTexture");
+    coat.normalTexture = textures.reference(normal, false, where + ".clearcoatNormalTexture");
+    if (normal.IsObject()) coat.normalScale = extensionNumber(normal, "scale", 1.0f, -kFinite, kFinite, where + ".clearcoatNormalTexture");
+    out.clearcoat = coat;
+  }
+}
+
 }  // namespace
 
 void convertMaterials(const GltfContext& context, Scene& scene) {
@@ -209,6 +311,7 @@ void convertMaterials(const GltfContext& context, Scene& scene) {
     out.doubleSided = in.doubleSided;
     out.unlit = in.extensions.count("KHR_materials_unlit") != 0;
     out.emissiveStrength = emissiveStrength(in, name);
+    convertLayerExtensions(in, name, textures, out);
     scene.materials.push_back(std::move(out));
   }
 }

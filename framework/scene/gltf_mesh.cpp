@@ -91,7 +91,7 @@ class PrimitiveBuilder {
     }
     if (!out.tangents.empty()) {
       normalize(out.tangents);
-    } else if (const TextureRef& normalMap = scene_.materials[static_cast<size_t>(out.material)].normalTexture;
+    } else if (const TextureRef normalMap = tangentSpaceMap(scene_.materials[static_cast<size_t>(out.material)]);
                normalMap.present()) {
       if (!out.uvs(normalMap.texCoord).empty()) {
         addTangents(out, normalMap.texCoord);
@@ -101,6 +101,12 @@ class PrimitiveBuilder {
     warnMissingTexCoords(out);
     for (const glm::vec3& p : out.positions) out.bounds.extend(p);
     return out;
+  }
+
+  // The normal map tangents are generated for: the base's, else the clear coat's (KHR_materials_clearcoat).
+  static TextureRef tangentSpaceMap(const Material& material) {
+    if (material.normalTexture.present() || !material.clearcoat) return material.normalTexture;
+    return material.clearcoat->normalTexture;
   }
 
   // One warning per kind of repair, not one per primitive.

@@ -36,9 +36,7 @@ void appendScene(Scene& into, Scene other, const glm::mat4& transform, const std
     into.meshes.push_back(std::move(mesh));
   }
   for (Material& material : other.materials) {
-    for (TextureRef* ref : {&material.baseColorTexture, &material.metallicRoughnessTexture, &material.normalTexture,
-                            &material.occlusionTexture, &material.emissiveTexture})
-      rebase(*ref, textureBase);
+    material.forEachTexture([&](TextureRef& ref) { rebase(ref, textureBase); });
     into.materials.push_back(std::move(material));
   }
   for (Texture& texture : other.textures) {

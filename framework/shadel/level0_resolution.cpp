@@ -28,8 +28,8 @@ MeshTextureDensity meshTextureDensity(const scene::Scene& scene, const scene::Me
   for (const scene::Primitive& primitive : mesh.primitives) {
     if (primitive.material < 0 || static_cast<size_t>(primitive.material) >= scene.materials.size()) continue;
     const scene::Material& material = scene.materials[static_cast<size_t>(primitive.material)];
-    for (const scene::TextureRef* ref : {&material.baseColorTexture, &material.metallicRoughnessTexture,
-                                         &material.normalTexture, &material.occlusionTexture, &material.emissiveTexture}) {
+    for (const scene::TextureRef& slot : material.textureSlots()) {
+      const scene::TextureRef* ref = &slot;
       if (!ref->present() || static_cast<size_t>(ref->texture) >= scene.textures.size()) continue;
       const scene::Texture& texture = scene.textures[static_cast<size_t>(ref->texture)];
       // KHR_texture_transform scales how many texels a UV unit spans.

@@ -15,15 +15,20 @@ vec4 materialBaseColor(Surface s) {
   return c;
 }
 
-vec3 shadingNormal(Surface s) {
-  if (!materialHas(SG_TEX_NORMAL)) return s.normal;
+// The surface normal perturbed by a tangent-space normal-map texel `texel` (0..1) at `scale`.
+vec3 tangentSpaceNormal(Surface s, vec3 texel, float scale) {
   vec3 t = s.tangent.xyz - s.normal * dot(s.normal, s.tangent.xyz);
   if (dot(t, t) < 1e-12) return s.normal;
   t = normalize(t);
   vec3 b = cross(s.normal, t) * s.tangent.w;
-  vec3 m = materialSample(normalTexture, SG_TEX_NORMAL, s).xyz * 2.0 - 1.0;
-  m.xy *= material.emissiveFactor.w;
+  vec3 m = texel * 2.0 - 1.0;
+  m.xy *= scale;
   return normalize(mat3(t, b, s.normal) * m);
+}
+
+vec3 shadingNormal(Surface s) {
+  if (!materialHas(SG_TEX_NORMAL)) return s.normal;
+  return tangentSpaceNormal(s, materialSample(normalTexture, SG_TEX_NORMAL, s).xyz, material.emissiveFactor.w);
 }
 
 // Radiance (cd/m^2) of the analytic sky seen in a direction with vertical component `y`:
@@ -47,11 +52,11 @@ vec3 ambientDiffuse(vec3 N) {
 // N.V, before occlusion: the prefiltered image times the split-sum BRDF
 // lookup, or the analytic sky blurred towards its average with roughness,
 // scaled by Karis' analytic split-sum fit (UE4 mobile).
-vec3 ambientSpecular(vec3 R, float NdotV, float roughness, vec3 f0) {
+vec3 ambientSpecular(vec3 R, float NdotV, float roughness, vec3 f0, float f90) {
 #ifndef SG_NO_ENVIRONMENT_MAPS
   if (frame.environment.x > 0.0) {
     vec2 ab = sgEnvironmentBrdf(NdotV, roughness);
-    return sgEnvironmentSpecular(R, roughness) * (f0 * ab.x + ab.y);
+    return sgEnvironmentSpecular(R, roughness) * (f0 * ab.x + f90 * ab.y);
   }
 #endif
   vec3 specularEnv = mix(environmentRadiance(R.y), environmentRadiance(0.3), roughness * roughness);
@@ -59,29 +64,52 @@ vec3 ambientSpecular(vec3 R, float NdotV, float roughness, vec3 f0) {
   vec4 r = roughness * c0 + c1;
   float a004 = min(r.x * r.x, exp2(-9.28 * NdotV)) * r.x + r.y;
   vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
-  return specularEnv * (f0 * ab.x + ab.y);
+  return specularEnv * (f0 * ab.x + f90 * ab.y);
 }
+
+vec3 ambientSpecular(vec3 R, float NdotV, float roughness, vec3 f0) { return ambientSpecular(R, NdotV, roughness, f0, 1.0); }
 
 // The glTF metallic-roughness model at a surface point for given inputs:
 // what shadeGltfPbr and layers with their own inputs (marble, bumps) share.
 // N: the shading normal. rgb = outgoing radiance towards the camera.
+// dielectricF0, dielectricF90: the dielectric Fresnel (0.04 and 1 unless KHR_materials_ior /
+// KHR_materials_specular say otherwise).
 vec3 shadeMetallicRoughness(Surface s, vec3 baseColor, float metallic, float roughness, float occlusion,
-                            vec3 emissive, vec3 N) {
+                            vec3 emissive, vec3 N, vec3 dielectricF0, float dielectricF90) {
   vec3 V = normalize(frame.cameraPosition.xyz - s.position);
   vec3 color = vec3(0.0);
   SgLightList lights = sgLightsAt(s.position);
   for (uint k = 0u; k < lights.count; ++k) {
     LightSample light = sgLightAt(sgLight(lights, k), s.position);
-    color += brdfGltf(baseColor, metallic, roughness, N, V, light.direction, light.radiance);
+    color += brdfGltf(baseColor, metallic, roughness, dielectricF0, dielectricF90, N, V, light.direction, light.radiance);
   }
   float NdotV = clamp(dot(N, V), 1e-4, 1.0);
-  vec3 f0 = mix(vec3(0.04), baseColor, metallic);
-  color += occlusion * (ambientDiffuse(N) * baseColor * (1.0 - metallic) + ambientSpecular(reflect(-V, N), NdotV, roughness, f0));
+  vec3 f0 = mix(dielectricF0, baseColor, metallic);
+  float f90 = mix(dielectricF90, 1.0, metallic);
+  color += occlusion * (ambientDiffuse(N) * baseColor * (1.0 - metallic) +
+                        ambientSpecular(reflect(-V, N), NdotV, roughness, f0, f90));
   return color + emissive;
 }
 
-// The glTF material layer: rgb = outgoing radiance towards the camera, a = alpha.
-vec4 shadeGltfPbr(Surface s) {
+vec3 shadeMetallicRoughness(Surface s, vec3 baseColor, float metallic, float roughness, float occlusion,
+                            vec3 emissive, vec3 N) {
+  return shadeMetallicRoughness(s, baseColor, metallic, roughness, occlusion, emissive, N, vec3(0.04), 1.0);
+}
+
+// The material's occlusion (1: none), what the layers on top of gltf-pbr also apply to their environment light.
+float materialOcclusion(Surface s) {
+  if (!materialHas(SG_TEX_OCCLUSION)) return 1.0;
+  return 1.0 + material.params.z * (materialSample(occlusionTexture, SG_TEX_OCCLUSION, s).r - 1.0);
+}
+
+vec3 materialEmissive(Surface s) {
+  vec3 emissive = material.emissiveFactor.rgb;
+  if (materialHas(SG_TEX_EMISSIVE)) emissive *= materialSample(emissiveTexture, SG_TEX_EMISSIVE, s).rgb;
+  return emissive;
+}
+
+// The glTF material with a given dielectric Fresnel: rgb = outgoing radiance towards the camera, a = alpha.
+vec4 shadeGltfPbrWithFresnel(Surface s, vec3 dielectricF0, float dielectricF90) {
   vec4 baseColor = materialBaseColor(s);
   if (material.flags.w != 0u) return baseColor;  // KHR_materials_unlit
   float metallic = material.params.x, roughness = material.params.y;
@@ -90,13 +118,12 @@ vec4 shadeGltfPbr(Surface s) {
     roughness *= mr.g;
     metallic *= mr.b;
   }
-  float occlusion = 1.0;
-  if (materialHas(SG_TEX_OCCLUSION))
-    occlusion = 1.0 + material.params.z * (materialSample(occlusionTexture, SG_TEX_OCCLUSION, s).r - 1.0);
-  vec3 emissive = material.emissiveFactor.rgb;
-  if (materialHas(SG_TEX_EMISSIVE)) emissive *= materialSample(emissiveTexture, SG_TEX_EMISSIVE, s).rgb;
-  vec3 color = shadeMetallicRoughness(s, baseColor.rgb, metallic, roughness, occlusion, emissive, shadingNormal(s));
+  vec3 color = shadeMetallicRoughness(s, baseColor.rgb, metallic, roughness, materialOcclusion(s), materialEmissive(s),
+                                      shadingNormal(s), dielectricF0, dielectricF90);
   return vec4(color, baseColor.a);
 }
+
+// The glTF material layer.
+vec4 shadeGltfPbr(Surface s) { return shadeGltfPbrWithFresnel(s, vec3(0.04), 1.0); }
 
 #endif

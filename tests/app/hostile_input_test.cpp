@@ -116,6 +116,11 @@ std::filesystem::path writeHostile(const TempDir& dir, const std::string& name) 
       dir.write("sky.hdr", std::string("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 100000 +X 200000\n") + std::string(64, '\x01'));
     return dir.write(name, R"({"objects": [{"gltf": "triangle.gltf"}], "environment": {"image": "sky.hdr"}})");
   }
+  // A material extension this renderer does not implement, required: refused by name, not rendered without it.
+  if (name == "requires-transmission.gltf") {
+    document["extensionsUsed"] = Json::array({"KHR_materials_transmission"});
+    document["extensionsRequired"] = Json::array({"KHR_materials_transmission"});
+  }
   if (name == "deep.json") return dir.write(name, "{\"objects\": " + std::string(16000, '[') + std::string(16000, ']') + "}");
   return dir.write(name, document.dump());
 }
@@ -133,6 +138,7 @@ const HostileFile kFiles[] = {
     {"translation-1e39.json", "/objects/0/translation/1: 1e+39 is outside the range of a 32-bit float"},
     {"orbit-1e39.json", "/cameraPaths/0/radius: 1e+39 is outside the range of a 32-bit float"},
     {"deep.json", "JSON nested deeper than 256 levels"},
+    {"requires-transmission.gltf", "requires the unsupported extension KHR_materials_transmission"},
     {"hdr-missing.json", "sky.hdr: cannot open the environment image"},
     {"hdr-not-radiance.json", "sky.hdr: not a Radiance .hdr image"},
     {"hdr-bad-format.json", "sky.hdr: cannot read the Radiance header"},

@@ -12,12 +12,20 @@
 #define SG_ALPHA_MASK 1u
 #define SG_ALPHA_BLEND 2u
 
-// Texture slots, in binding order 1..5.
+// Texture slots, in binding order 1..12: the core material's, then the
+// material extensions' (KHR_materials_clearcoat, _sheen, _specular).
 #define SG_TEX_BASE_COLOR 0
 #define SG_TEX_METALLIC_ROUGHNESS 1
 #define SG_TEX_NORMAL 2
 #define SG_TEX_OCCLUSION 3
 #define SG_TEX_EMISSIVE 4
+#define SG_TEX_CLEARCOAT 5
+#define SG_TEX_CLEARCOAT_ROUGHNESS 6
+#define SG_TEX_CLEARCOAT_NORMAL 7
+#define SG_TEX_SHEEN_COLOR 8
+#define SG_TEX_SHEEN_ROUGHNESS 9
+#define SG_TEX_SPECULAR 10
+#define SG_TEX_SPECULAR_COLOR 11
 
 struct TextureSlot {
   vec4 row0;   // KHR_texture_transform, first row of the 2x3 affine
@@ -29,7 +37,10 @@ layout(set = 1, binding = 0, std140) uniform MaterialBlock {
   vec4 emissiveFactor;  // rgb, w = normal scale
   vec4 params;          // x = metallic, y = roughness, z = occlusion strength, w = alpha cutoff
   uvec4 flags;          // x = alpha mode, y = double sided, z = bitmask of present textures, w = unlit
-  TextureSlot slots[5];
+  vec4 clearcoat;       // x = factor, y = roughness, z = clear-coat normal scale
+  vec4 sheen;           // rgb = colour, w = roughness
+  vec4 specular;        // rgb = specularColorFactor x ((ior - 1) / (ior + 1))^2, w = specularFactor
+  TextureSlot slots[12];
 } material;
 
 layout(set = 1, binding = 1) uniform sampler2D baseColorTexture;
@@ -37,6 +48,13 @@ layout(set = 1, binding = 2) uniform sampler2D metallicRoughnessTexture;
 layout(set = 1, binding = 3) uniform sampler2D normalTexture;
 layout(set = 1, binding = 4) uniform sampler2D occlusionTexture;
 layout(set = 1, binding = 5) uniform sampler2D emissiveTexture;
+layout(set = 1, binding = 6) uniform sampler2D clearcoatTexture;
+layout(set = 1, binding = 7) uniform sampler2D clearcoatRoughnessTexture;
+layout(set = 1, binding = 8) uniform sampler2D clearcoatNormalTexture;
+layout(set = 1, binding = 9) uniform sampler2D sheenColorTexture;
+layout(set = 1, binding = 10) uniform sampler2D sheenRoughnessTexture;
+layout(set = 1, binding = 11) uniform sampler2D specularTexture;
+layout(set = 1, binding = 12) uniform sampler2D specularColorTexture;
 
 bool materialHas(int slot) { return (material.flags.z & (1u << slot)) != 0u; }
 
