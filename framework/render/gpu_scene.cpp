@@ -106,7 +106,7 @@ void GpuScene::uploadGeometry(gpu::Context& context, gpu::MemoryAllocator& memor
       }
       const auto& m = scene.materials[size_t(r.material)];
       draws_.push_back({r.firstIndex, r.indexCount, r.vertexOffset, uint32_t(r.material), i, inst.world, m.alphaMode,
-                        m.doubleSided, inst.material.empty() ? plugin::kDefaultMaterial : inst.material});
+                        m.doubleSided, inst.material.empty() ? plugin::kDefaultMaterial : inst.material, uint32_t(p)});
     }
   }
   if (vertices.empty()) throw gpu::GpuError("the scene has no triangles to draw");

@@ -41,6 +41,7 @@ struct DrawItem {
   scene::AlphaMode alphaMode = scene::AlphaMode::Opaque;
   bool doubleSided = false;
   std::string materialStack;  // the instance's layer stack ("gltf-pbr" unless the scene says otherwise)
+  uint32_t primitive = 0;     // which primitive of the instance's mesh
 };
 
 // Push constants of object.glsl.
