@@ -84,7 +84,8 @@ void writeStats(const std::string& path, const AppSession& session, const render
                        {"draws", session.renderer->gpuScene().draws().size()},
                        {"transient_bytes", frame.transientBytes},
                        {"memory_bytes", memoryJson},
-                       {"objects_forward", session.scene.instances.size() - d.objects},
+                       // Decoupled objects are draws (one per primitive): the draws not decoupled this frame.
+                       {"objects_forward", session.renderer->gpuScene().draws().size() - d.objects},
                        {"objects_decoupled", d.objects},
                        {"objects", objects},
                        {"covered_pixels", d.counters.coveredPixels},
@@ -211,7 +212,7 @@ void runRender(const RenderArgs& args) {
   const auto d = session.decoupled->stats();
   std::printf("wrote %s (%ux%u, %zu triangles, %zu draws, %u objects decoupled, %zu forward)\n", args.output.c_str(),
               frame.image.width, frame.image.height, session.renderer->gpuScene().triangleCount(),
-              session.renderer->gpuScene().draws().size(), d.objects, session.scene.instances.size() - d.objects);
+              session.renderer->gpuScene().draws().size(), d.objects, session.renderer->gpuScene().draws().size() - d.objects);
   if (d.objects)
     std::printf("decoupled: bias %.2f, %u chunks marked, %u allocated of %u, %u overflowed, %u composite misses, "
                 "%.2f shadels per covered pixel\n",

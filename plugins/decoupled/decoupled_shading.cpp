@@ -127,10 +127,22 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
     const std::pair<int, uint32_t> key{in.scene.instances[draw.instance].mesh, draw.primitive};
     auto it = idMaps_.find(key);
     if (it == idMaps_.end()) {
+      if (noIdMapRoom_.contains(key)) {
+        slot.reason = "no room for its triangle-ID map";
+        continue;
+      }
       const scene::Mesh mesh = primitiveMesh(in.scene.meshes[size_t(key.first)], draw.primitive);
       const scene::ChartVerdict chart = scene::chooseShadingChart(mesh);
       const uint32_t level0 = shadel::chooseLevel0Size(mesh, chart, shadel::meshTextureDensity(in.scene, mesh));
       auto map = cache.loadOrBake(mesh, chart, {.level0Size = level0});
+      // All maps are one storage buffer, bound whole: past the device's limit
+      // the object stays forward (many-primitive scenes, e.g. 123 automatic charts).
+      const uint64_t limit = in.device.context().properties().limits.maxStorageBufferRange;
+      if ((idTexels_.size() + map.texels.size()) * sizeof(uint32_t) > limit) {
+        noIdMapRoom_.insert(key);
+        slot.reason = "no room for its triangle-ID map";
+        continue;
+      }
       const auto offset = uint32_t(idTexels_.size());
       idTexels_.insert(idTexels_.end(), map.texels.begin(), map.texels.end());
       it = idMaps_.emplace(key, std::pair{map.levels, offset}).first;

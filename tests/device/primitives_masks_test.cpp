@@ -20,9 +20,9 @@
 namespace sg::test {
 namespace {
 
-constexpr uint32_t kSize = 192;
+constexpr uint32_t kSize = 256;
 
-// The model from the front (frameBounds), from the upper left and from the
+// The model from the front (frameBounds), from above on the left and from the
 // lower right, at the same distance.
 std::vector<scene::Camera> cameras(const scene::Scene& scene) {
   const scene::Bounds bounds = scene::worldBounds(scene);
@@ -30,7 +30,7 @@ std::vector<scene::Camera> cameras(const scene::Scene& scene) {
   const glm::vec3 center = bounds.center();
   const float distance = glm::length(front.position() - center);
   std::vector<scene::Camera> all{front};
-  for (const glm::vec3 dir : {glm::vec3(-0.7f, 0.45f, 0.55f), glm::vec3(0.75f, -0.25f, 0.6f)}) {
+  for (const glm::vec3 dir : {glm::vec3(-0.5f, 0.8f, 0.5f), glm::vec3(0.75f, -0.25f, 0.6f)}) {
     scene::Camera c = front;
     c.world = scene::lookAtWorld(center + glm::normalize(dir) * distance, center);
     all.push_back(c);
