@@ -43,8 +43,9 @@ scene::ChartVerdict primitiveVerdict(scene::Scene& scene, scene::Mesh& mesh, siz
   mesh.primitives[p] = std::move(charted.mesh.primitives[0]);
   const std::string refused = verdict.reason;
   verdict = scene::chooseShadingChart(mesh.primitives[p]);
+  const std::string still = verdict.unique ? "" : ", not unique either: " + verdict.reason;  // what the chart check found
   verdict.reason = "automatic chart (" + std::to_string(charted.stats.charts) + " charts" +
-                   (uneven ? "; " + refused : "") + ")";
+                   (uneven ? "; " + refused : "") + still + ")";
   return verdict;
 }
 

@@ -22,6 +22,12 @@ namespace {
 
 constexpr uint32_t kSize = 256;
 
+// MorphPrimitivesTest's texture (a fine UV grid with text) has no mipmaps
+// (minFilter LINEAR): minified, forward aliases it where decoupled, shading at
+// shadel density, does not (29.6 dB at 256², from above). Closer to its
+// texture's resolution the comparison is about the shading again.
+uint32_t sizeFor(const std::string& name) { return name == "MorphPrimitivesTest" ? 512 : kSize; }
+
 // The model from the front (frameBounds), from above on the left and from the
 // lower right, at the same distance.
 std::vector<scene::Camera> cameras(const scene::Scene& scene) {
@@ -68,8 +74,8 @@ TEST_P(PrimitivesAndMasks, AllDecoupledAndAgreeWithForward) {
   EXPECT_GT(multiPrimitive + masked, 0u) << name << " has neither multi-primitive meshes nor alpha-mask materials";
   uint64_t misses = 0;
   for (size_t k = 0; k < views.size(); ++k) {
-    const gpu::HostImage forward = f.render(kSize, views[k]);
-    const gpu::HostImage decoupled = d.render(kSize, views[k]);
+    const gpu::HostImage forward = f.render(sizeFor(name), views[k]);
+    const gpu::HostImage decoupled = d.render(sizeFor(name), views[k]);
     const auto stats = d.stats();
     EXPECT_GT(stats.objects, 0u) << name << " camera " << k << ": nothing was shaded decoupled";
     misses += stats.counters.compositeMisses;
