@@ -66,4 +66,26 @@ void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const Decoup
   ctx.descriptors().bind(ctx.cmd(), pipeline, writes);
 }
 
+void drawDecoupled(PassContext& ctx, const DecoupledFrame& frame, std::span<const uint32_t> bindings, VkBuffer indirect,
+                   const std::function<const gpu::Pipeline&(bool alphaTest)>& pipeline) {
+  const auto& draws = frame.view.scene.draws();
+  for (const bool alphaTest : {false, true}) {
+    const gpu::Pipeline* bound = nullptr;
+    for (size_t i = 0; i < frame.view.draws.size(); ++i) {
+      const render::DrawItem& draw = draws[frame.view.draws[i]];
+      if ((draw.alphaMode == scene::AlphaMode::Mask) != alphaTest) continue;
+      if (!bound) {
+        bound = &pipeline(alphaTest);
+        bindDecoupled(ctx, *bound, frame, bindings);
+        frame.view.scene.bindGeometry(ctx.cmd());
+      }
+      if (alphaTest) {
+        const VkDescriptorSet set = frame.view.scene.materialSet(draw.material);
+        vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 1, 1, &set, 0, nullptr);
+      }
+      render::drawItem(ctx.cmd(), *bound, draw, frame.objectIds[i], indirect, frame.view.draws[i]);
+    }
+  }
+}
+
 }  // namespace sg::passes

@@ -5,6 +5,7 @@
 // passes hand to each other. The decoupled package (plugins/decoupled) fills
 // it. The binding numbers and records are the shared shader interface
 // (framework/shadel/shaders/decoupled_interface.h).
+#include <functional>
 #include <initializer_list>
 #include <span>
 
@@ -68,5 +69,12 @@ gpu::PipelineLayoutDesc decoupledLayout(std::span<const uint32_t> bindings, bool
 // pass's own `extra` ones.
 void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const DecoupledFrame& frame,
                    std::span<const uint32_t> bindings, std::span<const gpu::DescriptorWrite> extra = {});
+
+// Draws the frame's decoupled objects as their decoupled object ids (culled
+// by `indirect` when set): the opaque ones with pipeline(false), then the
+// alpha-mask ones with pipeline(true), their alpha-tested variant, whose set 1
+// is the draw's scene material. Set 0 is bound for each from `bindings`.
+void drawDecoupled(PassContext& ctx, const DecoupledFrame& frame, std::span<const uint32_t> bindings, VkBuffer indirect,
+                   const std::function<const gpu::Pipeline&(bool alphaTest)>& pipeline);
 
 }  // namespace sg::passes

@@ -62,10 +62,17 @@ void writeStats(const std::string& path, const AppSession& session, const render
   for (const auto& [category, bytes] : memory.bytesByCategory) memoryJson[category] = bytes;
   // Each object's shading and why (auto mode's choice, or why it cannot go decoupled).
   nlohmann::json objects = nlohmann::json::array();
-  for (const auto& choice : session.decoupled->choices())
-    objects.push_back({{"name", session.scene.instances[choice.instance].name},
-                       {"shading", choice.decoupled ? "decoupled" : "forward"},
-                       {"reason", choice.reason}});
+  for (const auto& choice : session.decoupled->choices()) {
+    nlohmann::json object{{"name", session.scene.instances[choice.instance].name},
+                          {"shading", choice.decoupled ? "decoupled" : "forward"},
+                          {"reason", choice.reason}};
+    // Each primitive is a decoupled object of its own (an alpha-blended one stays forward).
+    if (choice.primitives.size() > 1)
+      for (const auto& primitive : choice.primitives)
+        object["primitives"].push_back({{"shading", choice.decoupled && primitive.eligible ? "decoupled" : "forward"},
+                                        {"reason", primitive.reason}});
+    objects.push_back(std::move(object));
+  }
   nlohmann::json stats{{"frame_ms", frame.timings.frameMs},
                        {"gpu_ms", frame.timings.gpuMs},
                        // GPU time of each raster frame of --frames (first to last timestamp of
@@ -77,7 +84,8 @@ void writeStats(const std::string& path, const AppSession& session, const render
                        {"draws", session.renderer->gpuScene().draws().size()},
                        {"transient_bytes", frame.transientBytes},
                        {"memory_bytes", memoryJson},
-                       {"objects_forward", session.scene.instances.size() - d.objects},
+                       // Decoupled objects are draws (one per primitive): the draws not decoupled this frame.
+                       {"objects_forward", session.renderer->gpuScene().draws().size() - d.objects},
                        {"objects_decoupled", d.objects},
                        {"objects", objects},
                        {"covered_pixels", d.counters.coveredPixels},
@@ -160,9 +168,15 @@ void runRender(const RenderArgs& args) {
   const plugins::DecoupledSettings decoupled = decoupledSettings(args);
   AppSession session(args.scene, args.mode, decoupled, args.materials, args.frameGraph);
   if (args.camera) checkCameraIndex(session, *args.camera);
-  for (const auto& choice : session.decoupled->choices())
-    if (!choice.decoupled && args.mode == "decoupled")
-      std::printf("forward: %s (%s)\n", session.scene.instances[choice.instance].name.c_str(), choice.reason.c_str());
+  for (const auto& choice : session.decoupled->choices()) {
+    if (args.mode != "decoupled") break;
+    const char* name = session.scene.instances[choice.instance].name.c_str();
+    if (!choice.decoupled) std::printf("forward: %s (%s)\n", name, choice.reason.c_str());
+    else
+      for (size_t p = 0; p < choice.primitives.size(); ++p)
+        if (!choice.primitives[p].eligible)
+          std::printf("forward: %s primitive %zu (%s)\n", name, p, choice.primitives[p].reason.c_str());
+  }
   if (args.frame) settings.cameraOverride = pathCamera(session, args.path, *args.frame);
   AnimationPlayer animations(session.scene, args.animation);
   // A scene without cameras is framed once, around all its playback: a framing that followed the pose would zoom.
@@ -198,7 +212,7 @@ void runRender(const RenderArgs& args) {
   const auto d = session.decoupled->stats();
   std::printf("wrote %s (%ux%u, %zu triangles, %zu draws, %u objects decoupled, %zu forward)\n", args.output.c_str(),
               frame.image.width, frame.image.height, session.renderer->gpuScene().triangleCount(),
-              session.renderer->gpuScene().draws().size(), d.objects, session.scene.instances.size() - d.objects);
+              session.renderer->gpuScene().draws().size(), d.objects, session.renderer->gpuScene().draws().size() - d.objects);
   if (d.objects)
     std::printf("decoupled: bias %.2f, %u chunks marked, %u allocated of %u, %u overflowed, %u composite misses, "
                 "%.2f shadels per covered pixel\n",

@@ -114,7 +114,7 @@ void GpuScene::uploadGeometry(gpu::Context& context, gpu::MemoryAllocator& memor
                             m.normalTexture.present() || m.occlusionTexture.present() || m.emissiveTexture.present();
       const bool plain = !textured && mesh.primitives[p].colors.empty();
       draws_.push_back({r.firstIndex, r.indexCount, r.vertexOffset, uint32_t(r.material), i, inst.world, m.alphaMode,
-                        m.doubleSided, plain, inst.material.empty() ? gltfMaterialStack(m) : inst.material});
+                        m.doubleSided, plain, inst.material.empty() ? gltfMaterialStack(m) : inst.material, uint32_t(p)});
     }
   }
   if (vertices.empty()) throw gpu::GpuError("the scene has no triangles to draw");

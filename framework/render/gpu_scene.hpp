@@ -44,6 +44,7 @@ struct DrawItem {
   // forward draw then needs only position and normal interpolated.
   bool plainSurface = false;
   std::string materialStack;  // the instance's layer stack ("gltf-pbr" unless the scene says otherwise)
+  uint32_t primitive = 0;     // which primitive of the instance's mesh
 };
 
 // Push constants of object.glsl.

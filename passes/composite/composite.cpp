@@ -14,12 +14,18 @@ constexpr std::array kBindings{kBindFrame, kBindParams, kBindObjects,  kBindShad
                                kBindLevelRects, kBindRemap, kBindChunkSlots, kBindCounters, kBindLayerImage};
 }  // namespace
 
-gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView) {
+gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView, bool alphaTest, VkDescriptorSetLayout materialSet) {
   std::vector<std::pair<std::string, std::string>> defines{filterDefine(filter)};
   if (levelView) defines.emplace_back("SG_VIEW_LEVEL", "1");
-  return {.vertex = {.path = "passes/composite/composite.vert"},
+  std::vector<std::pair<std::string, std::string>> vertexDefines;
+  if (alphaTest) {
+    defines.emplace_back("SG_ALPHA_TEST", "1");
+    vertexDefines.emplace_back("SG_ALPHA_TEST", "1");
+  }
+  return {.vertex = {.path = "passes/composite/composite.vert", .defines = vertexDefines},
           .fragment = {.path = "passes/composite/composite.frag", .defines = defines},
-          .layout = decoupledLayout(kBindings, false, sizeof(render::ObjectConstants)),
+          .layout = alphaTest ? decoupledLayout(kBindings, false, sizeof(render::ObjectConstants), {materialSet})
+                              : decoupledLayout(kBindings, false, sizeof(render::ObjectConstants)),
           .vertexInput = render::sceneVertexInput(),
           .colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT},
           .depthFormat = VK_FORMAT_D32_SFLOAT,
@@ -47,16 +53,14 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
   color = pass.write(color, graph::Access::ColorAttachment);
   // Culled draws (instance count 0 in the frame's draw commands) are skipped.
   pass.execute([indirect = render::readDrawCommands(pass, frame.view).indirect, frame, color, depth](PassContext& ctx) {
-    const std::string variant = std::to_string(frame.filter) + (frame.levelView ? "/level" : "");
-    const auto& pipeline =
-        ctx.device().pipeline("composite/" + variant, [&] { return compositePipeline(frame.filter, frame.levelView); });
     ctx.beginRendering({ColorTarget{color}}, DepthTarget{depth, {}, true}, true);
-    bindDecoupled(ctx, pipeline, frame, kBindings);
-    frame.view.scene.bindGeometry(ctx.cmd());
-    const auto& draws = frame.view.scene.draws();
-    for (size_t i = 0; i < frame.view.draws.size(); ++i)
-      render::drawItem(ctx.cmd(), pipeline, draws[frame.view.draws[i]], frame.objectIds[i], indirect,
-                       frame.view.draws[i]);
+    drawDecoupled(ctx, frame, kBindings, indirect, [&](bool alphaTest) -> const gpu::Pipeline& {
+      const std::string variant =
+          std::to_string(frame.filter) + (frame.levelView ? "/level" : "") + (alphaTest ? "/alpha-test" : "");
+      return ctx.device().pipeline("composite/" + variant, [&] {
+        return compositePipeline(frame.filter, frame.levelView, alphaTest, frame.view.scene.materialSetLayout());
+      });
+    });
     ctx.endRendering();
   });
   return color;

@@ -13,6 +13,15 @@ layout(set = 0, binding = kBindLayerImage) uniform sampler2D layerImage;  // tex
 layout(location = 0) in vec2 inShadingUv;
 layout(location = 0) out vec4 outColor;
 
+#ifdef SG_ALPHA_TEST
+// Alpha-mask objects: the pixels their alpha test cuts away (the z-prepass
+// gave them no depth there) neither mark nor composite.
+#include <passes/alpha-mask/alpha_test.glsl>
+layout(location = 1) in vec2 inUv0;
+layout(location = 2) in vec2 inUv1;
+layout(location = 3) in float inColorAlpha;
+#endif
+
 // SG_FILTER (shadel_level.glsl's SG_FILTER_*): the filter, the same define
 // shadel-mark is compiled with, so composite reads only what mark marked.
 #ifndef SG_FILTER
@@ -41,12 +50,15 @@ vec4 filterLevel(uint level) {
 }
 
 void main() {
-  atomicAdd(counters.coveredPixels, 1u);
   SgShadelInstance instance = shadelInstances[object.objectId];
   float size0 = float(instance.level0Size);
   SgLevelSelection sel =
       sgSelectFilterLevel(SG_FILTER, dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0, params.bias,
                           instance.levelCount);
+#ifdef SG_ALPHA_TEST
+  if (sgMaskedOut(inUv0, inUv1, inColorAlpha)) discard;  // after the derivatives: uniform control flow for them
+#endif
+  atomicAdd(counters.coveredPixels, 1u);
 #ifdef SG_VIEW_LEVEL
   // --view level: the detail level the pixel reads (fractional: fine + blend), shaded lightly.
   vec4 shaded = filterLevel(sel.fine);

@@ -8,6 +8,7 @@
 #include <framework/render/shaders/frame.glsl>
 #include <framework/render/shaders/object.glsl>
 #include <framework/plugin/shaders/material.glsl>
+#include <passes/alpha-mask/alpha_test.glsl>
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
@@ -61,9 +62,11 @@ bool sgPrevious(out vec4 value) {
 }
 
 // The stack's result as the pass wants it: alpha-tested, premultiplied for blending.
+// The alpha test is the one decoupled objects get in shadel-mark and composite
+// (alpha_test.glsl: the base colour's alpha), so both paths keep the same pixels.
 void sgWriteForward(vec4 shaded) {
   shaded.rgb = min(shaded.rgb, vec3(65504.0));  // the HDR target's half-float maximum, not Inf
-  if (material.flags.x == SG_ALPHA_MASK && shaded.a < material.params.w) discard;
+  if (sgMaskedOut(inUv0, inUv1, inColor.a)) discard;
   if (material.flags.x == SG_ALPHA_BLEND)
     outColor = vec4(shaded.rgb * shaded.a, shaded.a);  // premultiplied
   else

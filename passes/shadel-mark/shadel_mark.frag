@@ -16,6 +16,15 @@
 layout(early_fragment_tests) in;
 layout(location = 0) in vec2 inShadingUv;
 
+#ifdef SG_ALPHA_TEST
+// Alpha-mask objects: the pixels their alpha test cuts away (the z-prepass
+// gave them no depth there) neither mark nor composite.
+#include <passes/alpha-mask/alpha_test.glsl>
+layout(location = 1) in vec2 inUv0;
+layout(location = 2) in vec2 inUv1;
+layout(location = 3) in float inColorAlpha;
+#endif
+
 #ifdef SG_MARK_BASELINE
 // The mark before issue 14 (bench --baseline only): the trilinear footprint
 // whatever the filter, one remap read per tap. It marks the levels composite
@@ -54,6 +63,9 @@ void main() {
   SgLevelSelection sel =
       sgSelectFilterLevel(SG_FILTER, dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0, params.bias,
                           instance.levelCount);
+#ifdef SG_ALPHA_TEST
+  if (sgMaskedOut(inUv0, inUv1, inColorAlpha)) return;  // after the derivatives: uniform control flow for them
+#endif
   markLevel(sel.fine);
   if (kMarkCoarse && sel.coarse != sel.fine) markLevel(sel.coarse);
 }

@@ -9,7 +9,9 @@ namespace sg::passes {
 // frame.filter (recorded in frame.markedFilter).
 void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle depth);
 // filter: 0 point, 1 bilinear, 2 trilinear (what composite filters with);
-// baseline: the mark before issue 14 (bench --baseline).
-gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline = false);
+// baseline: the mark before issue 14 (bench --baseline); alphaTest: the
+// variant for alpha-mask objects, `materialSet` (the scene material) its set 1.
+gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline = false, bool alphaTest = false,
+                                             VkDescriptorSetLayout materialSet = VK_NULL_HANDLE);
 
 }  // namespace sg::passes

@@ -7,6 +7,11 @@
 #include <framework/shadel/shaders/decoupled.glsl>
 
 layout(location = 0) out vec2 outShadingUv;
+#ifdef SG_ALPHA_TEST  // alpha-mask objects: what alpha_test.glsl reads
+layout(location = 1) out vec2 outUv0;
+layout(location = 2) out vec2 outUv1;
+layout(location = 3) out float outColorAlpha;
+#endif
 
 void main() {
   SgDecoupledObject o = objects[object.objectId];
@@ -14,4 +19,9 @@ void main() {
   precise vec4 world = object.model * vec4(inPosition, 1.0);
   precise vec4 clip = frame.viewProjection * world;
   gl_Position = clip;
+#ifdef SG_ALPHA_TEST
+  outUv0 = inUv0;
+  outUv1 = inUv1;
+  outColorAlpha = inColor.a;
+#endif
 }

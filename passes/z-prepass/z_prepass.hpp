@@ -1,18 +1,26 @@
 #pragma once
+#include <vector>
+
 #include <shadelgraph/gpu/pipeline.hpp>
 #include <shadelgraph/graph/render_graph.hpp>
 #include <shadelgraph/render/scene_view.hpp>
 
 namespace sg::passes {
 
-// Depth of every opaque object (graphics), clearing it first; of those the
+// Depth of every opaque object (graphics), clearing it first, and of the
+// `alphaTested` draws (decoupled alpha-mask objects: shadel-mark and composite
+// test against their depth) where their alpha test keeps them; of those the
 // frame's draw commands keep when the view has them (see readDrawCommands).
 // Returns the depth version it writes.
-graph::ResourceHandle addZPrepass(graph::RenderGraph& graph, const render::SceneView& view, graph::ResourceHandle depth);
-// Adds to the depth the opaque draws of `view` that `late` (indirect draw
-// commands by draw index, from occlusion-cull) keeps.
+graph::ResourceHandle addZPrepass(graph::RenderGraph& graph, const render::SceneView& view, graph::ResourceHandle depth,
+                                  std::vector<uint32_t> alphaTested = {});
+// Adds to the depth the opaque (and `alphaTested`) draws of `view` that `late`
+// (indirect draw commands by draw index, from occlusion-cull) keeps.
 graph::ResourceHandle addZPrepassLate(graph::RenderGraph& graph, const render::SceneView& view,
-                                      graph::ResourceHandle depth, graph::ResourceHandle late);
+                                      graph::ResourceHandle depth, graph::ResourceHandle late,
+                                      std::vector<uint32_t> alphaTested = {});
 gpu::GraphicsPipelineDesc zPrepassPipeline();
+// The alpha-tested variant: the scene material is set 1.
+gpu::GraphicsPipelineDesc zPrepassAlphaTestPipeline(VkDescriptorSetLayout materialSet);
 
 }  // namespace sg::passes

@@ -89,12 +89,14 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
   for (uint32_t d = 0; d < draws.size(); ++d) {
     const auto& draw = draws[d];
     const ShadingChoice& choice = choices_[draw.instance];
+    const PrimitiveChoice& primitive = choice.primitives[draw.primitive];
     ObjectSlot& slot = slots_[d];
     slot.instance = draw.instance;
     const plugin::MaterialStack& material = materials.material(draw.materialStack);
     const bool wanted = in.objectModes[draw.instance] != scene::ShadingMode::Forward;
     slot.reason = !wanted                ? "forward by request"
                   : !choice.eligible     ? choice.reason
+                  : !primitive.eligible  ? primitive.reason  // alpha-blended
                   : !materials.runsIn(material, plugin::ShadingPath::Decoupled)
                       ? "material '" + material.name + "' has forward-only layers"
                       : "";
@@ -120,16 +122,30 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
       --allocatedObjects_;
       continue;
     }
-    const int meshIndex = in.scene.instances[draw.instance].mesh;
-    auto it = idMaps_.find(meshIndex);
+    // Each primitive is an object of its own: its own triangle-ID map (triangle
+    // IDs count from its first index) and shadel space.
+    const std::pair<int, uint32_t> key{in.scene.instances[draw.instance].mesh, draw.primitive};
+    auto it = idMaps_.find(key);
     if (it == idMaps_.end()) {
-      const scene::Mesh& mesh = in.scene.meshes[size_t(meshIndex)];
+      if (noIdMapRoom_.contains(key)) {
+        slot.reason = "no room for its triangle-ID map";
+        continue;
+      }
+      const scene::Mesh mesh = primitiveMesh(in.scene.meshes[size_t(key.first)], draw.primitive);
       const scene::ChartVerdict chart = scene::chooseShadingChart(mesh);
       const uint32_t level0 = shadel::chooseLevel0Size(mesh, chart, shadel::meshTextureDensity(in.scene, mesh));
       auto map = cache.loadOrBake(mesh, chart, {.level0Size = level0});
+      // All maps are one storage buffer, bound whole: past the device's limit
+      // the object stays forward (many-primitive scenes, e.g. 123 automatic charts).
+      const uint64_t limit = in.device.context().properties().limits.maxStorageBufferRange;
+      if ((idTexels_.size() + map.texels.size()) * sizeof(uint32_t) > limit) {
+        noIdMapRoom_.insert(key);
+        slot.reason = "no room for its triangle-ID map";
+        continue;
+      }
       const auto offset = uint32_t(idTexels_.size());
       idTexels_.insert(idTexels_.end(), map.texels.begin(), map.texels.end());
-      it = idMaps_.emplace(meshIndex, std::pair{map.levels, offset}).first;
+      it = idMaps_.emplace(key, std::pair{map.levels, offset}).first;
     }
     const auto& [levels, offset] = it->second;
     const auto result = space_->allocate(d, levels);
@@ -144,7 +160,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
     slot.reshadedWhole = reshadedWhole(materials, material);
     ++allocatedObjects_;
     slot.record = {draw.world, draw.firstIndex, draw.vertexOffset, draw.indexCount / 3, draw.material, offset,
-                   uint32_t(choice.uvSet), choice.tileOffset, supportRadius(materials, material) > 0 ? 1u : 0u, 0u, 0u, 0u};
+                   uint32_t(primitive.uvSet), primitive.tileOffset, supportRadius(materials, material) > 0 ? 1u : 0u, 0u, 0u, 0u};
   }
 }
 

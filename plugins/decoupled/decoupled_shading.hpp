@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <vector>
 
 #include <shadelgraph/gpu/buffer.hpp>
@@ -189,7 +190,8 @@ class DecoupledShading {
   std::vector<bool> lastShadowed_;       // per light: it had shadow maps last frame
   uint32_t allocatedObjects_ = 0;
   std::vector<uint32_t> identity_;  // draw index -> object index (the same)
-  std::map<int, std::pair<shadel::DetailLevels, uint32_t>> idMaps_;  // by mesh: its levels and ID-map offset
+  std::map<std::pair<int, uint32_t>, std::pair<shadel::DetailLevels, uint32_t>> idMaps_;  // by mesh and primitive: levels, ID-map offset
+  std::set<std::pair<int, uint32_t>> noIdMapRoom_;  // primitives whose map would not fit the ID-map buffer
   std::vector<uint32_t> idTexels_;
   bool tablesDirty_ = true;
   // This frame: the objects shaded decoupled (draws = ids, materials).

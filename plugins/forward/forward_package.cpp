@@ -40,6 +40,16 @@ graph::ResourceHandle depthTarget(FrameContext& ctx) {
                                 : ctx.graph().createImage("depth", {.format = graph::Format::D32F});
 }
 
+// Decoupled alpha-mask draws of the frame: the z-prepass gives them depth
+// where their alpha test keeps them (shadel-mark and composite test against it).
+std::vector<uint32_t> alphaTestedDraws(FrameContext& ctx) {
+  std::vector<uint32_t> tested;
+  const auto& draws = ctx.gpuScene().draws();
+  for (const uint32_t d : ctx.draws().decoupled)
+    if (draws[d].alphaMode == scene::AlphaMode::Mask) tested.push_back(d);
+  return tested;
+}
+
 // The depth pre-pass, occlusion-culled: the draws visible last frame first,
 // then every draw tested against that depth, then the draws found visible
 // that were not drawn yet. The passes after it draw only the visible ones.
@@ -54,11 +64,12 @@ graph::ResourceHandle culledZPrepass(FrameContext& ctx, render::DrawCulling& cul
   commands.buffer = culling.commands().handle();
   in.executor.bindBuffer(commands.handle, culling.commands());
   const auto view = ctx.view(ctx.visibleDraws());
-  auto depth = passes::addZPrepass(ctx.graph(), view, depthTarget(ctx));
+  const auto tested = alphaTestedDraws(ctx);
+  auto depth = passes::addZPrepass(ctx.graph(), view, depthTarget(ctx), tested);
   const auto cull = passes::addOcclusionCull(ctx.graph(), culling, in.viewProjection, in.width, in.height, depth,
                                              commands.handle);
   commands.handle = cull.commands;
-  return passes::addZPrepassLate(ctx.graph(), view, depth, cull.late);
+  return passes::addZPrepassLate(ctx.graph(), view, depth, cull.late, tested);
 }
 
 passes::ForwardTargets targets(FrameContext& ctx) { return {ctx.read("scene.hdr"), ctx.read("scene.depth")}; }
@@ -129,7 +140,7 @@ void registerForwardPackage(plugin::Registry& registry) {
                     .writes = {render::kSceneVerticesResource},
                     .declare = declareSkinning});
   registry.addPass({.name = "z-prepass",
-                    .description = "depth of every visible opaque object, forward or decoupled",
+                    .description = "depth of every visible opaque object, forward or decoupled, and of decoupled alpha-mask objects (alpha-tested)",
                     .reads = {plugin::kForwardDrawsResource},
                     .writes = {"scene.depth"},
                     .declare = [](FrameContext& ctx) {
@@ -139,7 +150,8 @@ void registerForwardPackage(plugin::Registry& registry) {
                         return;
                       }
                       ctx.write("scene.depth",
-                                passes::addZPrepass(ctx.graph(), ctx.view(ctx.visibleDraws()), depthTarget(ctx)));
+                                passes::addZPrepass(ctx.graph(), ctx.view(ctx.visibleDraws()), depthTarget(ctx),
+                                                    alphaTestedDraws(ctx)));
                     }});
   registry.addPass({.name = "object-pick",
                     .description = "the object under a pixel, read back (only in a frame with a pick pending: "

@@ -59,10 +59,15 @@ scene::Camera playbackCamera(const scene::Scene& scene) {
   return scene::frameBounds(bounds, float(kWidth) / float(kHeight));
 }
 
-gpu::HostImage renderAt(Session& session, scene::Scene& posed, const scene::Camera& camera, float t) {
+gpu::HostImage renderAt(Session& session, scene::Scene& posed, const scene::Camera& camera, float t, uint32_t scale = 1) {
   poseAt(posed, session.renderer(), t);
-  return session.renderer().render({.width = kWidth, .height = kHeight, .cameraOverride = camera}).image;
+  return session.renderer().render({.width = kWidth * scale, .height = kHeight * scale, .cameraOverride = camera}).image;
 }
+
+// MorphPrimitivesTest's texture (a fine UV grid with text) has no mipmaps
+// (minFilter LINEAR): at 160x90 forward aliases it and decoupled, shading at
+// shadel density, does not (29.6 dB). Twice the size keeps the comparison about the shading.
+uint32_t renderScale(const std::string& name) { return name == "MorphPrimitivesTest" ? 2 : 1; }
 
 void save(const std::string& name, const gpu::HostImage& image) {
   image::writePng(std::filesystem::temp_directory_path() / ("sg-animated-" + name + ".png"), image.width, image.height,
@@ -86,18 +91,16 @@ TEST_P(AnimatedModels, TwoTimesInBothPathsAgree) {
   {
     Session f(loaded, scene::ShadingMode::Forward);
     scene::Scene posed = loaded;
-    for (int k = 0; k < 2; ++k) forward[k] = renderAt(f, posed, camera, times[k]);
+    for (int k = 0; k < 2; ++k) forward[k] = renderAt(f, posed, camera, times[k], renderScale(name));
   }
   {
     Session d(loaded, scene::ShadingMode::Decoupled, {.storageChunks = 16384});
     scene::Scene posed = loaded;
     for (int k = 0; k < 2; ++k) {
-      decoupled[k] = renderAt(d, posed, camera, times[k]);
-      // Multi-primitive meshes (MorphPrimitivesTest) are still shaded forward, with the reason printed.
-      const bool eligible = std::any_of(d.choices().begin(), d.choices().end(), [](const auto& c) { return c.decoupled; });
-      if (eligible) {
-        EXPECT_GT(d.stats().objects, 0u) << name << ": nothing was shaded decoupled";
-      }
+      decoupled[k] = renderAt(d, posed, camera, times[k], renderScale(name));
+      // Every object is decoupled, multi-primitive ones (MorphPrimitivesTest) too: one object per primitive.
+      for (const auto& c : d.choices()) EXPECT_TRUE(c.decoupled) << name << " object " << c.instance << ": " << c.reason;
+      EXPECT_GT(d.stats().objects, 0u) << name << ": nothing was shaded decoupled";
       if (k == 0)
         for (const auto& c : d.choices())
           std::printf("%-20s object %u: %s (%s)\n", name.c_str(), c.instance, c.decoupled ? "decoupled" : "forward",

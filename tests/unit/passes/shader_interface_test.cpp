@@ -232,6 +232,7 @@ class ShaderInterface : public ::testing::Test {
 TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   std::string errors;
   errors += mismatches("z-prepass", passes::zPrepassPipeline());
+  errors += mismatches("z-prepass alpha-test", passes::zPrepassAlphaTestPipeline(VK_NULL_HANDLE));
   errors += mismatches("exposure", passes::exposurePipeline());
   errors += mismatches("shadows", passes::shadowMapPipeline());
   errors += mismatches("skinning", passes::skinningPipeline());
@@ -246,7 +247,9 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   errors += mismatches("shadel-clear", passes::shadelClearPipeline());
   for (int filter : {0, 1, 2})
     for (bool baseline : {false, true})
-      errors += mismatches("shadel-mark filter=" + std::to_string(filter), passes::shadelMarkPipeline(filter, baseline));
+      for (bool alphaTest : {false, true})
+        errors += mismatches("shadel-mark filter=" + std::to_string(filter) + (alphaTest ? " alpha-test" : ""),
+                             passes::shadelMarkPipeline(filter, baseline, alphaTest));
   for (bool apply : {false, true}) errors += mismatches("support-expand", passes::supportExpandPipeline(apply));
   for (int phase : {1, 2}) errors += mismatches("shadel-allocate", passes::shadelAllocatePipeline(phase));
   errors += mismatches("work-offsets", passes::workOffsetsPipeline());
@@ -257,7 +260,9 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   errors += mismatches("work-fill SG_SHADE_ALL", passes::shadeFrameFillPipeline());
   for (int filter : {0, 1, 2})
     for (bool levelView : {false, true})
-      errors += mismatches("composite filter=" + std::to_string(filter), passes::compositePipeline(filter, levelView));
+      for (bool alphaTest : {false, true})
+        errors += mismatches("composite filter=" + std::to_string(filter) + (alphaTest ? " alpha-test" : ""),
+                             passes::compositePipeline(filter, levelView, alphaTest));
   errors += mismatches("debug-occupancy", passes::occupancyViewPipeline());
   errors += mismatches("debug-sheet", passes::sheetViewPipeline());
   for (const auto& name : registry_.materialNames()) {
