@@ -178,7 +178,7 @@ TEST(EnvironmentBackground, IsTheImageInTheViewDirection) {
             glm::translate(glm::mat4(1.0f), centre));
   s.lights.push_back({.name = "off", .type = scene::LightType::Directional, .intensity = 0.0f});
   TempDir dir;
-  writeProceduralSky(dir.path() / "sky.hdr", 256, 128, 500.0f);
+  bench::writeProceduralSky(dir.path() / "sky.hdr", 256, 128, 500.0f);
   s.environment = scene::loadEnvironment(dir.path() / "sky.hdr", 2.0f);
   const uint32_t w = 160, h = 96;
   const scene::Camera camera = cameraAt(eye, eye + kSkySunDirection);
