@@ -26,6 +26,7 @@
 #include <forward/forward_material.hpp>
 #include <layer-shade/layer_shade.hpp>
 #include <light-cull/light_cull.hpp>
+#include <object-pick/object_pick.hpp>
 #include <shadel-allocate/shadel_allocate.hpp>
 #include <shadel-clear/shadel_clear.hpp>
 #include <shade-frame/shade_frame_work.hpp>
@@ -242,6 +243,7 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   errors += mismatches("light-cull", passes::lightCullPipeline());
   errors += mismatches("hi-z", passes::hiZPipeline());
   errors += mismatches("occlusion-cull", passes::occlusionCullPipeline());
+  errors += mismatches("object-pick", passes::objectPickPipeline());
   for (bool passthrough : {false, true})
     errors += mismatches("tonemap", passes::tonemapPipeline(VK_FORMAT_R8G8B8A8_SRGB, passthrough));
   errors += mismatches("shadel-clear", passes::shadelClearPipeline());
