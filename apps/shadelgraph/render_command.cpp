@@ -73,6 +73,10 @@ void writeStats(const std::string& path, const AppSession& session, const render
                                         {"reason", primitive.reason}});
     objects.push_back(std::move(object));
   }
+  // Draws the choices took that stay forward all the same (e.g. no room for their triangle-ID map).
+  nlohmann::json runTime = nlohmann::json::array();
+  for (const auto& f : session.decoupled->runTimeForward())
+    runTime.push_back({{"name", session.scene.instances[f.instance].name}, {"primitive", f.primitive}, {"reason", f.reason}});
   nlohmann::json stats{{"frame_ms", frame.timings.frameMs},
                        {"gpu_ms", frame.timings.gpuMs},
                        // GPU time of each raster frame of --frames (first to last timestamp of
@@ -88,6 +92,7 @@ void writeStats(const std::string& path, const AppSession& session, const render
                        {"objects_forward", session.renderer->gpuScene().draws().size() - d.objects},
                        {"objects_decoupled", d.objects},
                        {"objects", objects},
+                       {"forward_at_run_time", runTime},
                        {"covered_pixels", d.counters.coveredPixels},
                        {"shadels_marked", uint64_t(d.counters.chunksMarked) * 64},
                        {"shadels_allocated", uint64_t(d.counters.chunksAllocated) * 64},
@@ -206,6 +211,10 @@ void runRender(const RenderArgs& args) {
       if (traced.size() > kTracedFrames) traced.erase(traced.begin());
     }
   }
+  if (args.mode == "decoupled")
+    for (const auto& f : session.decoupled->runTimeForward())
+      std::printf("forward: %s primitive %u (%s)\n", session.scene.instances[f.instance].name.c_str(), f.primitive,
+                  f.reason.c_str());
   image::writePng(args.output, frame.image.width, frame.image.height, frame.image.rgba8.data());
   const auto memory = session.device->memory().totals();
   printTable(frame.timings, frame.transientBytes, memory);

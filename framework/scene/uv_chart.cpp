@@ -66,7 +66,34 @@ double intersectionArea(const Triangle& a, Triangle b) {
 struct Part {
   std::span<const glm::vec2> uvs;
   std::span<const uint32_t> indices;
+  // Empty when the shape may change (skinned or morphed): then no triangle counts as degenerate.
+  std::span<const glm::vec3> positions;
 };
+
+// Triangles of zero surface area cover no pixel (CAD meshes are full of
+// them): the chart need not hold them. Zero relative to the part's size.
+std::vector<bool> degenerateTriangles(const Part& part, double relativeEpsilon) {
+  std::vector<bool> degenerate(part.indices.size() / 3, false);
+  if (part.positions.empty()) return degenerate;
+  glm::dvec3 lo(INFINITY), hi(-INFINITY);
+  for (const uint32_t index : part.indices) {
+    lo = glm::min(lo, glm::dvec3(part.positions[index]));
+    hi = glm::max(hi, glm::dvec3(part.positions[index]));
+  }
+  const glm::dvec3 extent = hi - lo;
+  const double scale = glm::dot(extent, extent);  // squared diagonal
+  for (size_t t = 0; t < degenerate.size(); ++t) {
+    const glm::dvec3 a(part.positions[part.indices[3 * t]]), b(part.positions[part.indices[3 * t + 1]]),
+        c(part.positions[part.indices[3 * t + 2]]);
+    degenerate[t] = 0.5 * glm::length(glm::cross(b - a, c - a)) <= relativeEpsilon * scale;
+  }
+  return degenerate;
+}
+
+std::span<const glm::vec3> fixedPositions(const Primitive& primitive) {
+  if (primitive.skinned() || primitive.morphed()) return {};
+  return primitive.positions;
+}
 
 const char* setName(int uvSet) { return uvSet == 1 ? "TEXCOORD_1" : "TEXCOORD_0"; }
 
@@ -82,7 +109,13 @@ ChartVerdict analyze(std::span<const Part> parts, int uvSet, const UvChartOption
       lo = glm::min(lo, glm::dvec2(part.uvs[index]));
       hi = glm::max(hi, glm::dvec2(part.uvs[index]));
     }
-  for (const Part& part : parts) verdict.triangles += part.indices.size() / 3;
+  std::vector<std::vector<bool>> degenerate;
+  for (const Part& part : parts) {
+    degenerate.push_back(degenerateTriangles(part, options.zeroSurfaceAreaEpsilon));
+    verdict.degenerateTriangles += size_t(std::count(degenerate.back().begin(), degenerate.back().end(), true));
+    verdict.triangles += part.indices.size() / 3;
+  }
+  verdict.triangles -= verdict.degenerateTriangles;
   if (verdict.triangles == 0) {
     verdict.reason = name + ": no triangles";
     return verdict;
@@ -94,7 +127,8 @@ ChartVerdict analyze(std::span<const Part> parts, int uvSet, const UvChartOption
   std::vector<Triangle> triangles;
   triangles.reserve(verdict.triangles);
   double chartArea = 0.0;
-  for (const Part& part : parts) {
+  for (size_t p = 0; p < parts.size(); ++p) {
+    const Part& part = parts[p];
     std::vector<bool> seen(part.uvs.size(), false);
     for (uint32_t index : part.indices) {
       if (seen[index]) continue;
@@ -105,6 +139,7 @@ ChartVerdict analyze(std::span<const Part> parts, int uvSet, const UvChartOption
         ++verdict.outOfRangeUvs;
     }
     for (size_t corner = 0; corner + 2 < part.indices.size(); corner += 3) {
+      if (degenerate[p][corner / 3]) continue;  // covers no pixel
       Triangle t;
       for (size_t k = 0; k < 3; ++k) t[k] = glm::dvec2(part.uvs[part.indices[corner + k]]) - tile;
       const double area = std::abs(signedArea(t));
@@ -181,6 +216,8 @@ ChartVerdict analyze(std::span<const Part> parts, int uvSet, const UvChartOption
   if (verdict.unique) {
     verdict.reason = name + ": unique chart";
     if (verdict.zeroAreaTriangles) verdict.reason += ", " + std::to_string(verdict.zeroAreaTriangles) + " zero-area triangles";
+    if (verdict.degenerateTriangles)
+      verdict.reason += ", " + std::to_string(verdict.degenerateTriangles) + " triangles of zero surface area ignored";
     if (tile != glm::dvec2(0.0))
       verdict.reason += ", in tile (" + std::to_string(static_cast<int>(tile.x)) + ", " +
                         std::to_string(static_cast<int>(tile.y)) + ")";
@@ -220,7 +257,7 @@ ChartVerdict choose(Analyze analyzeSet, Has hasSet, const std::string& what) {
 
 ChartVerdict analyzeUvSet(const Primitive& primitive, int uvSet, const UvChartOptions& options) {
   if (primitive.uvs(uvSet).empty()) return missing(uvSet, "the primitive");
-  const Part part{primitive.uvs(uvSet), primitive.indices};
+  const Part part{primitive.uvs(uvSet), primitive.indices, fixedPositions(primitive)};
   return analyze({&part, 1}, uvSet, options);
 }
 
@@ -229,7 +266,7 @@ ChartVerdict analyzeUvSet(const Mesh& mesh, int uvSet, const UvChartOptions& opt
   for (size_t p = 0; p < mesh.primitives.size(); ++p) {
     const Primitive& primitive = mesh.primitives[p];
     if (primitive.uvs(uvSet).empty()) return missing(uvSet, "primitive " + std::to_string(p));
-    parts.push_back({primitive.uvs(uvSet), primitive.indices});
+    parts.push_back({primitive.uvs(uvSet), primitive.indices, fixedPositions(primitive)});
   }
   return analyze(parts, uvSet, options);
 }

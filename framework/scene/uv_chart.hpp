@@ -14,6 +14,11 @@
 // - at most maxZeroAreaFraction of its triangles have zero UV area (area <=
 //   zeroAreaEpsilon): a few are harmless (DamagedHelmet has 10), a set of all
 //   zeros is no chart. They are skipped by the overlap test.
+// Triangles of zero surface area (3D area <= zeroSurfaceAreaEpsilon times the
+// squared diagonal of the primitive's bounds) cover no pixel and are left out
+// of every check and count but degenerateTriangles (CAD meshes, e.g.
+// 2CylinderEngine, have many). Not for skinned or morphed primitives, whose
+// triangles may open up when posed.
 #include <cstddef>
 #include <string>
 
@@ -28,6 +33,7 @@ struct UvChartOptions {
   double zeroAreaEpsilon = 1e-10;     // in UV units²: ~1/400 of a texel at 8K²
   double overlapAreaEpsilon = 1e-10;  // in UV units²
   double maxZeroAreaFraction = 0.01;
+  double zeroSurfaceAreaEpsilon = 1e-12;  // relative to the squared diagonal of the bounds
   // Counting stops here: a chart this broken needs no exact numbers, and
   // fully stacked UVs would otherwise cost O(n²).
   size_t maxOverlappingPairs = 1'000'000;
@@ -37,7 +43,8 @@ struct ChartVerdict {
   int uvSet = -1;               // the set the counts describe (0 or 1); -1: there are no UVs
   bool unique = false;          // uvSet is usable as the shading chart
   glm::vec2 tileOffset{0.0f};   // integral; shading UV = uv - tileOffset lies in [0,1]²
-  size_t triangles = 0;
+  size_t triangles = 0;             // not counting degenerate ones
+  size_t degenerateTriangles = 0;   // zero surface area: ignored
   size_t overlappingPairs = 0;      // pairs of triangles whose interiors overlap
   size_t overlappingTriangles = 0;  // triangles in at least one such pair
   size_t outOfRangeUvs = 0;         // vertices outside the tile

@@ -124,7 +124,7 @@ class Parameterizer {
     if (!(extent > 0.0)) return false;
     scene::Primitive flat;
     for (const glm::dvec2& c : corners) flat.uv0.push_back(glm::vec2((c - lo) / extent));
-    flat.positions.resize(flat.uv0.size());
+    // No positions: none counts as degenerate in 3D (a flattened one has no UV area anyway).
     flat.indices.resize(flat.uv0.size());
     std::iota(flat.indices.begin(), flat.indices.end(), 0u);
     scene::UvChartOptions options;

@@ -15,6 +15,7 @@
 
 #include "layer-shade/layer_shade.hpp"
 #include "shade-frame/shade_frame_work.hpp"
+#include "id_map_budget.hpp"
 #include "layer_rate.hpp"
 #include "shade-reuse/shade_reuse.hpp"
 
@@ -86,12 +87,14 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
     for (uint32_t d = 0; d < draws.size(); ++d) identity_[d] = d;
   }
   shadel::IdMapCache cache;
+  std::vector<uint32_t> toAllocate;  // draws that now ask for decoupled
   for (uint32_t d = 0; d < draws.size(); ++d) {
     const auto& draw = draws[d];
     const ShadingChoice& choice = choices_[draw.instance];
     const PrimitiveChoice& primitive = choice.primitives[draw.primitive];
     ObjectSlot& slot = slots_[d];
     slot.instance = draw.instance;
+    slot.primitive = draw.primitive;
     const plugin::MaterialStack& material = materials.material(draw.materialStack);
     const bool wanted = in.objectModes[draw.instance] != scene::ShadingMode::Forward;
     slot.reason = !wanted                ? "forward by request"
@@ -122,8 +125,41 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
       --allocatedObjects_;
       continue;
     }
-    // Each primitive is an object of its own: its own triangle-ID map (triangle
-    // IDs count from its first index) and shadel space.
+    toAllocate.push_back(d);
+  }
+
+  // Each primitive is an object of its own: its own triangle-ID map (triangle
+  // IDs count from its first index) and shadel space. The maps not baked yet
+  // are sized together, so that all fit the one buffer (id_map_budget.hpp).
+  const uint64_t limit = in.device.context().properties().limits.maxStorageBufferRange;
+  struct NewMap {
+    scene::Mesh mesh;
+    scene::ChartVerdict chart;
+    uint32_t level0 = 0;
+  };
+  std::map<std::pair<int, uint32_t>, NewMap> newMaps;
+  for (const uint32_t d : toAllocate) {
+    const std::pair<int, uint32_t> key{in.scene.instances[draws[d].instance].mesh, draws[d].primitive};
+    if (idMaps_.contains(key) || noIdMapRoom_.contains(key) || newMaps.contains(key)) continue;
+    NewMap map{primitiveMesh(in.scene.meshes[size_t(key.first)], key.second), {}, 0};
+    map.chart = scene::chooseShadingChart(map.mesh);
+    map.level0 = shadel::chooseLevel0Size(map.mesh, map.chart, shadel::meshTextureDensity(in.scene, map.mesh));
+    newMaps.emplace(key, std::move(map));
+  }
+  if (!newMaps.empty()) {
+    std::vector<uint32_t> sizes;
+    for (const auto& [key, map] : newMaps) sizes.push_back(map.level0);
+    const uint64_t budget = limit / sizeof(uint32_t) - std::min<uint64_t>(idTexels_.size(), limit / sizeof(uint32_t));
+    sizes = fitIdMapSizes(std::move(sizes), budget, shadel::IdMapOptions{}.minLevelSize, shadel::Level0Options{}.minSize);
+    size_t i = 0;
+    for (auto& [key, map] : newMaps) map.level0 = sizes[i++];
+  }
+
+  for (const uint32_t d : toAllocate) {
+    const auto& draw = draws[d];
+    const PrimitiveChoice& primitive = choices_[draw.instance].primitives[draw.primitive];
+    ObjectSlot& slot = slots_[d];
+    const plugin::MaterialStack& material = materials.material(draw.materialStack);
     const std::pair<int, uint32_t> key{in.scene.instances[draw.instance].mesh, draw.primitive};
     auto it = idMaps_.find(key);
     if (it == idMaps_.end()) {
@@ -131,13 +167,9 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
         slot.reason = "no room for its triangle-ID map";
         continue;
       }
-      const scene::Mesh mesh = primitiveMesh(in.scene.meshes[size_t(key.first)], draw.primitive);
-      const scene::ChartVerdict chart = scene::chooseShadingChart(mesh);
-      const uint32_t level0 = shadel::chooseLevel0Size(mesh, chart, shadel::meshTextureDensity(in.scene, mesh));
-      auto map = cache.loadOrBake(mesh, chart, {.level0Size = level0});
-      // All maps are one storage buffer, bound whole: past the device's limit
-      // the object stays forward (many-primitive scenes, e.g. 123 automatic charts).
-      const uint64_t limit = in.device.context().properties().limits.maxStorageBufferRange;
+      const NewMap& planned = newMaps.at(key);
+      auto map = cache.loadOrBake(planned.mesh, planned.chart, {.level0Size = planned.level0});
+      // Still too big (every map at the smallest level 0): the object stays forward.
       if ((idTexels_.size() + map.texels.size()) * sizeof(uint32_t) > limit) {
         noIdMapRoom_.insert(key);
         slot.reason = "no room for its triangle-ID map";
@@ -162,6 +194,17 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
     slot.record = {draw.world, draw.firstIndex, draw.vertexOffset, draw.indexCount / 3, draw.material, offset,
                    uint32_t(primitive.uvSet), primitive.tileOffset, supportRadius(materials, material) > 0 ? 1u : 0u, 0u, 0u, 0u};
   }
+}
+
+std::vector<DecoupledShading::RunTimeForward> DecoupledShading::runTimeForward() const {
+  std::vector<RunTimeForward> forward;
+  for (const auto& slot : slots_) {
+    const ShadingChoice& choice = choices_[slot.instance];
+    // Objects and primitives the choices refused say why at load already.
+    if (slot.allocated || !choice.decoupled || !choice.primitives[slot.primitive].eligible) continue;
+    if (!slot.reason.empty()) forward.push_back({slot.instance, slot.primitive, slot.reason});
+  }
+  return forward;
 }
 
 void DecoupledShading::uploadTables(gpu::Device& device) {

@@ -139,6 +139,15 @@ class DecoupledShading {
   // entry index * 64 + chunk; reads the GPU's chunk slots (call after the frame completed).
   std::map<uint64_t, uint32_t> chunkAddresses(gpu::Device& device) const;
   const std::vector<ShadingChoice>& choices() const { return choices_; }
+  // Draws of objects the choices took that still stay forward, and why: what
+  // only running finds out (no room for the triangle-ID map, no shadel space,
+  // forward-only material layers). Valid after a frame.
+  struct RunTimeForward {
+    uint32_t instance = 0;
+    uint32_t primitive = 0;
+    std::string reason;
+  };
+  std::vector<RunTimeForward> runTimeForward() const;
 
  private:
   void createTables(gpu::Device& device);
@@ -174,6 +183,7 @@ class DecoupledShading {
   // tables, while its object is decoupled.
   struct ObjectSlot {
     uint32_t instance = 0;
+    uint32_t primitive = 0;
     bool allocated = false;
     std::string reason;  // why not, when it asked to be
     DecoupledObject record{};

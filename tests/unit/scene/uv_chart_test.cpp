@@ -9,10 +9,10 @@
 namespace sg::scene {
 namespace {
 
-// A primitive whose UV set 0 is exactly `uvs` (positions are irrelevant here).
+// A primitive whose UV set 0 is exactly `uvs`, laid flat in 3D (z = 0).
 Primitive withUvs(std::vector<glm::vec2> uvs, std::vector<uint32_t> indices) {
   Primitive p;
-  p.positions.assign(uvs.size(), glm::vec3(0.0f));
+  for (const glm::vec2 uv : uvs) p.positions.emplace_back(uv, 0.0f);
   p.normals.assign(uvs.size(), glm::vec3(0, 0, 1));
   p.uv0 = std::move(uvs);
   p.indices = std::move(indices);
@@ -96,11 +96,11 @@ TEST(UvChart, ChartInAnotherTileIsShifted) {
 
 TEST(UvChart, ZeroAreaTriangles) {
   Primitive p = grid(10);  // 200 triangles
-  // Add one degenerate triangle (three collinear UVs) on the chart's edge.
+  // Add one degenerate triangle (three collinear UVs) on the chart's edge, of non-zero surface area.
   const auto base = static_cast<uint32_t>(p.uv0.size());
   for (glm::vec2 uv : {glm::vec2(0, 0), glm::vec2(0.5f, 0), glm::vec2(1, 0)}) {
     p.uv0.push_back(uv);
-    p.positions.emplace_back(0.0f);
+    p.positions.emplace_back(uv.x, uv.y, uv.x * uv.x);  // on a parabola: not collinear
     p.normals.emplace_back(0, 0, 1);
   }
   p.indices.insert(p.indices.end(), {base, base + 1, base + 2});
@@ -113,6 +113,42 @@ TEST(UvChart, ZeroAreaTriangles) {
   const ChartVerdict degenerate = analyzeUvSet(zeros, 0);
   EXPECT_FALSE(degenerate.unique);
   EXPECT_EQ(degenerate.zeroAreaTriangles, degenerate.triangles);
+}
+
+TEST(UvChart, TrianglesOfZeroSurfaceAreaAreIgnored) {
+  // A CAD-style mesh: more than 1% of its triangles are degenerate in 3D
+  // (two coincident corners) and in UV, and one stacks over the chart.
+  Primitive p = grid(10);  // 200 triangles
+  const auto base = static_cast<uint32_t>(p.uv0.size());
+  for (int t = 0; t < 5; ++t) {
+    const glm::vec2 uv(0.1f * float(t) + 0.05f, 0.5f);
+    for (glm::vec2 corner : {uv, uv, uv + glm::vec2(0.02f, 0.0f)}) {
+      p.uv0.push_back(corner);
+      p.positions.emplace_back(corner, 0.0f);
+      p.normals.emplace_back(0, 0, 1);
+    }
+  }
+  // Collinear in 3D but with UV area: it overlaps the grid's triangles.
+  for (glm::vec2 uv : {glm::vec2(0.2f, 0.2f), glm::vec2(0.6f, 0.2f), glm::vec2(0.4f, 0.6f)}) {
+    p.uv0.push_back(uv);
+    p.positions.emplace_back(uv.x, 0.0f, 0.0f);
+    p.normals.emplace_back(0, 0, 1);
+  }
+  for (uint32_t v = 0; v < 18; ++v) p.indices.push_back(base + v);
+  const ChartVerdict verdict = analyzeUvSet(p, 0);
+  EXPECT_TRUE(verdict.unique) << verdict.reason;
+  EXPECT_EQ(verdict.degenerateTriangles, 6u);
+  EXPECT_EQ(verdict.triangles, 200u);
+  EXPECT_EQ(verdict.zeroAreaTriangles, 0u);
+  EXPECT_EQ(verdict.overlappingPairs, 0u);
+  // Skinned, the same triangles may open up when posed: they count.
+  p.joints0.assign(p.positions.size(), glm::uvec4(0));
+  p.weights0.assign(p.positions.size(), glm::vec4(1, 0, 0, 0));
+  const ChartVerdict skinned = analyzeUvSet(p, 0);
+  EXPECT_FALSE(skinned.unique);
+  EXPECT_EQ(skinned.degenerateTriangles, 0u);
+  EXPECT_EQ(skinned.zeroAreaTriangles, 5u);
+  EXPECT_GT(skinned.overlappingPairs, 0u);
 }
 
 TEST(UvChart, PrefersTexcoord1) {
