@@ -168,7 +168,7 @@ std::vector<Row> matrix() {
                    at(-1.2f, 0.25f, 0.5f));
          return s;
        },
-       {"alpha-mask"}, {"alpha-mask"}, {}},
+       {"alpha-mask"}, {}, {}},  // decoupled: shadel-mark and composite alpha-test it, no pass of its own
   };
 }
 
