@@ -40,18 +40,4 @@ vec3 brdfGltf(vec3 baseColor, float metallic, float roughness, vec3 dielectricF0
   return (diffuse + specular) * light * NdotL;
 }
 
-vec3 brdfGltf(vec3 baseColor, float metallic, float roughness, vec3 N, vec3 V, vec3 L, vec3 light) {
-  vec3 H = normalize(V + L);
-  float NdotL = clamp(dot(N, L), 0.0, 1.0);
-  float NdotV = clamp(abs(dot(N, V)), 1e-4, 1.0);
-  float NdotH = clamp(dot(N, H), 0.0, 1.0);
-  float VdotH = clamp(dot(V, H), 0.0, 1.0);
-  float alpha = max(roughness * roughness, 1e-3);
-  vec3 f0 = mix(vec3(0.04), baseColor, metallic);
-  vec3 F = fresnelSchlick(f0, VdotH);
-  vec3 diffuse = (1.0 - F) * (1.0 - metallic) * baseColor / kPi;
-  vec3 specular = F * distributionGgx(NdotH, alpha) * visibilitySmithGgx(NdotL, NdotV, alpha);
-  return (diffuse + specular) * light * NdotL;
-}
-
 #endif
