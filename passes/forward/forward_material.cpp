@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <set>
+#include <tuple>
 #include <utility>
 
 #include <shadelgraph/render/light_binding.hpp>
@@ -113,13 +114,22 @@ const plugin::MaterialStack& forwardMaterial(const render::SceneView& view, uint
 }
 
 std::vector<uint32_t> drawsWithAlphaMode(const render::SceneView& view, scene::AlphaMode mode) {
-  std::vector<uint32_t> draws;
+  // Grouped by (material, variant) so that drawForward binds each pipeline once;
+  // the keys are looked up once per draw, not per comparison.
+  struct Keyed {
+    const std::string* material;
+    bool plain;
+    uint32_t draw;
+  };
+  std::vector<Keyed> keyed;
   for (uint32_t d : view.draws)
-    if (view.scene.draws()[d].alphaMode == mode) draws.push_back(d);
-  std::stable_sort(draws.begin(), draws.end(), [&](uint32_t a, uint32_t b) {
-    return std::pair(forwardMaterial(view, a).name, plainForward(view, a)) <
-           std::pair(forwardMaterial(view, b).name, plainForward(view, b));
+    if (view.scene.draws()[d].alphaMode == mode) keyed.push_back({&forwardMaterial(view, d).name, plainForward(view, d), d});
+  std::stable_sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) {
+    return std::tie(*a.material, a.plain) < std::tie(*b.material, b.plain);
   });
+  std::vector<uint32_t> draws;
+  draws.reserve(keyed.size());
+  for (const auto& k : keyed) draws.push_back(k.draw);
   return draws;
 }
 

@@ -149,7 +149,9 @@ TEST(PhysicalExposure, WithBloomStaysFiniteAndSettles) {
       EXPECT_GE(f.exposure.ev100, f.exposure.targetEv100 - 1e-4f) << what << " frame " << i << ": overshoot";
       EXPECT_LE(f.exposure.ev100, before + 1e-4f) << what << " frame " << i << ": moved away from the metering";
       before = f.exposure.ev100;
-      if (i == 11) EXPECT_NEAR(f.exposure.ev100, f.exposure.targetEv100, 0.05f) << what << ": settled";
+      if (i == 11) {
+        EXPECT_NEAR(f.exposure.ev100, f.exposure.targetEv100, 0.05f) << what << ": settled";
+      }
     }
     std::printf("%s: EV100 %.2f at the glow, %.2f after 12 frames wide; HDR max after bloom %.0f\n", what,
                 double(glare.exposure.ev100), double(before), double(maxValue));
