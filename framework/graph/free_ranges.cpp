@@ -3,11 +3,6 @@
 #include <algorithm>
 
 namespace sg::graph {
-uint64_t alignUp(uint64_t value, uint64_t alignment) {
-  if (alignment <= 1) return value;
-  if ((alignment & (alignment - 1)) == 0) return (value + alignment - 1) & ~(alignment - 1);  // Vulkan's case
-  return (value + alignment - 1) / alignment * alignment;
-}
 
 void FreeRanges::clear(QueueMask queues) {
   fragments_.clear();
@@ -18,37 +13,32 @@ uint64_t FreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask queue
                               std::vector<uint32_t>& previous) {
   const QueueMask taker = queueCount(queue) == 1 ? queue : QueueMask::None;
   // One walk over runs of adjacent fragments `taker` may take, the best fitting kept.
-  constexpr uint64_t kNoRun = ~uint64_t{0};  // runEnd while not in a run: no fragment begins there
-  std::size_t best = 0, bestEnd = 0;          // fragments of the best run: [best, bestEnd)
-  uint64_t bestBegin = 0, bestLength = kNoRun;
-  uint64_t runBegin = 0, runEnd = kNoRun;
-  std::size_t runFirst = 0;
-  const auto closeRun = [&](std::size_t runLast) {
+  std::size_t best = 0, bestEnd = 0;  // fragments of the best run: [best, bestEnd)
+  uint64_t bestBegin = 0, bestLength = ~uint64_t{0};
+  bool found = false;
+  uint64_t runBegin = 0, runEnd = 0;  // the last run seen
+  std::size_t runFirst = 0, runLast = 0;
+  const Fragment* const fragments = fragments_.data();
+  const std::size_t n = fragments_.size();
+  for (std::size_t i = 0; i < n;) {
+    if (!any(fragments[i].queues & taker)) {
+      ++i;
+      continue;
+    }
+    runFirst = i;
+    runBegin = fragments[i].begin;
+    runEnd = fragments[i].end;
+    for (++i; i < n && fragments[i].begin == runEnd && any(fragments[i].queues & taker); ++i) runEnd = fragments[i].end;
+    runLast = i;
     const uint64_t length = runEnd - runBegin;
-    if (runEnd == kNoRun || length < size || length >= bestLength || alignUp(runBegin, alignment) + size > runEnd) return;
+    if (length < size || length >= bestLength || alignUp(runBegin, alignment) + size > runEnd) continue;
     best = runFirst;
     bestEnd = runLast;
     bestBegin = runBegin;
     bestLength = length;
-  };
-  const std::size_t n = fragments_.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Fragment& f = fragments_[i];
-    if (!any(f.queues & taker)) {
-      closeRun(i);
-      runEnd = kNoRun;
-    } else {
-      if (f.begin != runEnd) {
-        closeRun(i);
-        runFirst = i;
-        runBegin = f.begin;
-      }
-      runEnd = f.end;
-    }
+    found = true;
   }
-  closeRun(n);
-  const bool found = bestLength != kNoRun;
-  const bool inRun = runEnd != kNoRun;
+  const bool inRun = runLast == n && n != 0;  // the last fragment ends a run `taker` may take
 
   uint64_t offset = 0;
   if (found) {

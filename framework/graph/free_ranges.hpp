@@ -9,8 +9,13 @@
 
 namespace sg::graph {
 
-// `value` rounded up to a multiple of `alignment` (1 or 0: unchanged).
-uint64_t alignUp(uint64_t value, uint64_t alignment);
+// `value` rounded up to a multiple of `alignment` (1 or 0: unchanged). Inline:
+// the best-fit walk calls it for every run.
+inline uint64_t alignUp(uint64_t value, uint64_t alignment) {
+  if (alignment <= 1) return value;
+  if ((alignment & (alignment - 1)) == 0) return (value + alignment - 1) & ~(alignment - 1);  // Vulkan's case
+  return (value + alignment - 1) / alignment * alignment;
+}
 
 // Free ranges as fragments by offset, one per last user (never merged across
 // users: each must be reported when taken over). A fragment also holds the

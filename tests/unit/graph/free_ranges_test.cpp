@@ -100,6 +100,22 @@ TEST(FreeRanges, GrowsFromAFreeRangeAtTheTopAndAlignsWithFreePadding) {
   EXPECT_EQ(ranges.rangesFor(QueueClass::AsyncCompute), (std::vector<Span>{{250, 256}}));
 }
 
+// The walk jumps from run to run: a run ending at the top counts only if its
+// last fragment is one the queue may take.
+TEST(FreeRanges, GrowsFromTheTopOnlyThroughARangeTheQueueMayTake) {
+  uint64_t heap = 0;
+  FreeRanges ranges = filled(3, 100, heap);
+  ranges.release(100, 100, 1, kGraphics);
+  ranges.release(200, 100, 2, kCompute);  // the top: async compute's only
+  std::vector<uint32_t> previous;
+  EXPECT_EQ(ranges.allocate(150, 1, kGraphics, heap, previous), 300u) << "graphics may not extend [200, 300)";
+  EXPECT_TRUE(previous.empty());
+  EXPECT_EQ(heap, 450u);
+  ranges.allow(200, 100, 2, kGraphics);  // now [100, 300) is one range for graphics, but not at the top
+  EXPECT_EQ(ranges.allocate(200, 1, kGraphics, heap, previous), 100u);
+  EXPECT_EQ(previous, (std::vector<uint32_t>{1, 2}));
+}
+
 TEST(FreeRanges, AlignmentDecidesWhichRangeFits) {
   uint64_t heap = 0;
   FreeRanges ranges = filled(4, 100, heap);
