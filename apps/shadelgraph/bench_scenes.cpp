@@ -1,14 +1,10 @@
 #include "bench_scenes.hpp"
 
 #include <cstdio>
-#include <map>
-#include <memory>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
-#include <builtin_plugins.hpp>
-#include <decoupled/decoupled_package.hpp>
 #include <shadelgraph/render/renderer.hpp>
 
 #include "bench_materials.hpp"

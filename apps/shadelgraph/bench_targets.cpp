@@ -306,7 +306,7 @@ void measureCoverage(gpu::Device& device, const Scenes& scenes, const std::vecto
   for (const auto& model : scenes.sampleModels()) candidates.push_back(model);
   for (const auto& named : kCoverageNamed)
     if (std::find(candidates.begin(), candidates.end(), named) == candidates.end()) candidates.push_back(named);
-  std::vector<std::string> forwardOnly;
+  std::vector<std::string> forwardOnly, unloadable;
   for (const auto& name : candidates) {
     const bool named = std::find(kCoverageNamed.begin(), kCoverageNamed.end(), name) != kCoverageNamed.end();
     std::string why;
@@ -320,9 +320,21 @@ void measureCoverage(gpu::Device& device, const Scenes& scenes, const std::vecto
       continue;
     }
     std::fprintf(stderr, "[bench] targets: %s in auto mode\n", name.c_str());
-    const auto loaded = loadSceneArgument(*path);
+    LoadedScene loaded;
     auto session = std::make_unique<BenchSession>();
-    session->make(device, loaded.scene, std::nullopt);
+    try {
+      loaded = loadSceneArgument(*path);
+      session->make(device, loaded.scene, std::nullopt);
+    } catch (const std::exception& e) {  // one model that does not load does not end the run
+      std::fprintf(stderr, "[bench] targets: %s skipped: %s\n", name.c_str(), e.what());
+      unloadable.push_back(name + " (" + e.what() + ")");
+      for (const auto& size : sizes)
+        if (named) {
+          rows.shadels.figures.push_back(missing(name, size.text, "", std::string("skipped: ") + e.what()));
+          if (name != "default") rows.psnr.figures.push_back(missing(name, size.text, "", std::string("skipped: ") + e.what()));
+        }
+      continue;
+    }
     // A named scene that auto mode shades forward is measured in mode decoupled (automatic chart), as the issue did.
     std::string detail;
     std::unique_ptr<BenchSession> forward;
@@ -371,11 +383,17 @@ void measureCoverage(gpu::Device& device, const Scenes& scenes, const std::vecto
       rows.psnr.figures.push_back(f);
     }
   }
-  if (!forwardOnly.empty()) {
+  const auto join = [](const std::vector<std::string>& names) {
     std::string list;
-    for (const auto& name : forwardOnly) list += (list.empty() ? "" : ", ") + name;
-    rows.shadels.note = "forward in auto mode, so not listed: " + list;
-    rows.psnr.note += "; forward in auto mode, so not listed: " + list;
+    for (const auto& name : names) list += (list.empty() ? "" : ", ") + name;
+    return list;
+  };
+  std::string note;
+  if (!forwardOnly.empty()) note += "forward in auto mode, so not listed: " + join(forwardOnly);
+  if (!unloadable.empty()) note += std::string(note.empty() ? "" : "; ") + "not loaded: " + join(unloadable);
+  if (!note.empty()) {
+    rows.shadels.note = note;
+    rows.psnr.note += "; " + note;
   }
 }
 
