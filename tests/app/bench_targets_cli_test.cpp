@@ -98,6 +98,30 @@ TEST(BenchTargetsCli, WritesEveryRowOfTheTable) {
     if (f["scene"] == "Duck") EXPECT_EQ(f["detail"], "mode decoupled (auto: forward)");
 }
 
+// A model absent from --assets is skipped with the path it was looked for at, and the run goes on.
+TEST(BenchTargetsCli, AnAbsentModelIsSkippedWithItsPath) {
+  const sg::test::TempDir dir;
+  const auto assets = dir.path() / "no-assets";
+  const auto out = dir.path() / "out";
+  const auto r = sg::test::runCli("bench --out " + out.string() + " targets --sizes 32x18 --repetitions 1 --scenes Duck"
+                                  " --assets " + assets.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("Duck skipped: " + (assets / "Duck" / "glTF" / "Duck.gltf").string() + " not found"),
+            std::string::npos)
+      << r.output;
+  std::ifstream in(out / "targets.json");
+  const auto json = nlohmann::json::parse(in);
+  size_t duckFigures = 0;
+  for (const auto& row : json["rows"])
+    for (const auto& f : row["figures"])
+      if (f["scene"] == "Duck") {
+        ++duckFigures;
+        EXPECT_TRUE(f["value"].is_null());
+        EXPECT_NE(f["note"].get<std::string>().find("not found"), std::string::npos) << f.dump();
+      }
+  EXPECT_EQ(duckFigures, 2u);  // shadels per pixel and PSNR
+}
+
 TEST(BenchTargetsCli, BadOptionsFailWithOneLine) {
   const sg::test::TempDir dir;
   const auto bad = sg::test::runCli("bench --out " + dir.path().string() + " targets --repetitions 0");
