@@ -30,7 +30,9 @@
 #include "bench_graph.hpp"
 #include "bench_materials.hpp"
 #include "bench_scenes.hpp"
+#include "bench_sessions.hpp"
 #include "bench_shade_rate.hpp"
+#include "bench_targets.hpp"
 #include "command_options.hpp"
 #include "commands.hpp"
 #include "option_checks.hpp"
@@ -150,12 +152,6 @@ scene::Camera pathCamera(scene::Camera camera, const scene::Scene& s, uint32_t h
   return camera;
 }
 
-struct Session {
-  scene::Scene scene;
-  std::shared_ptr<plugins::DecoupledShading> decoupled;
-  std::unique_ptr<render::Renderer> renderer;
-};
-
 // The shimmer case: the default scene's rippled gold sphere filling most of
 // the view, where a normal pattern finer than a pixel aliases under motion.
 scene::Camera shimmerCamera() {
@@ -171,20 +167,15 @@ nlohmann::json benchScene(gpu::Device& device, const std::string& scenePath, uin
   std::string sceneName = scenePath.empty() ? "default" : std::filesystem::path(scenePath).stem().string();
   if (!runName.empty()) sceneName = runName;
   const auto configs = sweep(args);
-  std::vector<Session> sessions(configs.size());
+  std::vector<BenchSession> sessions(configs.size());
   for (size_t c = 0; c < configs.size(); ++c) {
-    auto& s = sessions[c];
-    s.scene = loaded.scene;
     const auto mode = configs[c].decoupled ? scene::ShadingMode::Decoupled : scene::ShadingMode::Forward;
     // A fixed bias below zero asks for up to 4x more shadels per level: give
     // it the storage, so the sweep measures shading, not overflow.
     const double storage = 2.0 * std::pow(4.0, std::max(0.0, -double(configs[c].bias.value_or(0.0f)))) * 1.5;
-    auto made = plugins::makeDecoupledRenderer(
-        device, s.scene, plugins::builtinRegistry(), mode,
-        plugins::DecoupledSettings{.storageFactor = storage, .filter = configs[c].filter,
-                                   .baseline = configs[c].baseline, .fixedBias = configs[c].bias});
-    s.decoupled = std::move(made.shading);
-    s.renderer = std::move(made.renderer);
+    sessions[c].make(device, loaded.scene, mode,
+                     plugins::DecoupledSettings{.storageFactor = storage, .filter = configs[c].filter,
+                                                .baseline = configs[c].baseline, .fixedBias = configs[c].bias});
   }
   const scene::Camera camera =
       cameraOverride ? *cameraOverride : sessions[0].renderer->camera({.width = width, .height = height});
@@ -205,22 +196,17 @@ nlohmann::json benchScene(gpu::Device& device, const std::string& scenePath, uin
                   referencePath[0].pixels.data());
 
   // Timing: configurations alternate inside each repetition, after a warm-up frame each.
-  std::vector<std::vector<double>> frameMs(configs.size());
-  std::vector<std::map<std::string, std::vector<double>>> passMs(configs.size());
-  std::vector<render::FrameResult> lastFrame(configs.size());
-  for (int rep = -1; rep < args.repetitions; ++rep)
-    for (size_t c = 0; c < configs.size(); ++c) {
-      auto frame = sessions[c].renderer->render({.width = width, .height = height, .cameraOverride = camera});
-      if (rep < 0) continue;  // warm-up: pipelines, adjuster
-      frameMs[c].push_back(frame.timings.gpuMs);
-      for (const auto& p : frame.timings.passes) passMs[c][p.name].push_back(p.gpuMs);
-      lastFrame[c] = std::move(frame);
-    }
+  std::vector<BenchSession*> timed;
+  for (auto& s : sessions) {
+    s.view = {.width = width, .height = height, .cameraOverride = camera};
+    timed.push_back(&s);
+  }
+  alternateFrames(timed, args.repetitions);
 
   nlohmann::json results = nlohmann::json::array();
   for (size_t c = 0; c < configs.size(); ++c) {
     std::fprintf(stderr, "[bench] %s %ux%u: %s\n", sceneName.c_str(), width, height, configs[c].name.c_str());
-    const auto test = toImage(lastFrame[c].image);
+    const auto test = toImage(sessions[c].last.image);
     const auto flip = image::flipLdr(referencePath[0], test);
     const auto diff = image::compareRgba8(referencePath[0].pixels, test.pixels);
     std::vector<image::Rgba8Image> path;
@@ -231,7 +217,7 @@ nlohmann::json benchScene(gpu::Device& device, const std::string& scenePath, uin
                                  .image));
     const auto flicker = image::flicker(path, referencePath);
     const auto stats = sessions[c].decoupled->stats();
-    const nlohmann::json passes = medians(passMs[c]);
+    const nlohmann::json passes = sessions[c].passMedians();
     const std::string file = sceneName + "-" + std::to_string(width) + "-" + configs[c].name + ".png";
     image::writePng(out / file, test.width, test.height, test.pixels.data());
     image::writePng(out / ("flip-" + file), width, height, image::flipHeatmap(flip).pixels.data());
@@ -239,12 +225,10 @@ nlohmann::json benchScene(gpu::Device& device, const std::string& scenePath, uin
                        {"decoupled", configs[c].decoupled},
                        {"filter", configs[c].filter},
                        {"bias", configs[c].bias ? nlohmann::json(*configs[c].bias) : nlohmann::json(nullptr)},
-                       {"frame_ms_median", median(frameMs[c])},
-                       {"frame_ms_samples", frameMs[c]},
+                       {"frame_ms_median", sessions[c].frameMedian()},
+                       {"frame_ms_samples", sessions[c].frameMs},
                        {"pass_ms_median", passes},
-                       {"shadels_per_pixel", stats.counters.coveredPixels
-                                                 ? 64.0 * stats.counters.chunksAllocated / stats.counters.coveredPixels
-                                                 : 0.0},
+                       {"shadels_per_pixel", shadelsPerPixel(stats)},
                        {"shade_memory_bytes", configs[c].decoupled ? stats.storageBytes + stats.remapBytes + stats.idMapBytes : 0},
                        {"overflow_chunks", stats.counters.overflowChunks},
                        {"composite_misses", stats.counters.compositeMisses},
@@ -362,13 +346,16 @@ void addBenchCommand(CLI::App& app) {
   static BenchArgs args;
   auto* cmd = app.add_subcommand("bench", "Measure what accuracy costs in time: configurations side by side");
   static GraphBenchArgs graphArgs;
+  static TargetsBenchArgs targetsArgs;
   auto* graph = addBenchOptions(*cmd, args, graphArgs);
+  auto* targets = addBenchTargetsOptions(*cmd, targetsArgs);
   cmd->callback([cmd] {
-    if (cmd->got_subcommand("graph")) return;
+    if (cmd->got_subcommand("graph") || cmd->got_subcommand("targets")) return;
     runBench(args);
   });
 
   graph->callback([] { runGraphBench(graphArgs, args.out); });
+  targets->callback([] { runTargetsBench(targetsArgs, args.out); });
 }
 
 }  // namespace sg::app

@@ -73,12 +73,11 @@ const nlohmann::json* findSize(const nlohmann::json& sizes, uint32_t passes) {
 
 }  // namespace
 
-void runGraphBench(const GraphBenchArgs& args, const std::filesystem::path& out) {
+nlohmann::json measureGraphCompile(const GraphBenchArgs& args) {
   if (args.passes.empty() || args.graphs == 0 || args.repetitions == 0)
     throw std::invalid_argument("bench graph: --passes, --graphs and --repetitions must not be empty or 0");
   for (const uint32_t p : args.passes)
     if (p < 2) throw std::invalid_argument("bench graph: a synthetic graph has at least 2 passes");
-  std::filesystem::create_directories(out);
   const graph::CompileOptions options = graph::syntheticCompileOptions();
 
   std::vector<SizeRun> runs(args.passes.size());
@@ -126,6 +125,14 @@ void runGraphBench(const GraphBenchArgs& args, const std::filesystem::path& out)
                           sizes[s - 1][modeName(mode)]["median_us"].get<double>();
     ratios.push_back(r);
   }
+  return {{"sizes", sizes}, {"ratios", ratios}};
+}
+
+void runGraphBench(const GraphBenchArgs& args, const std::filesystem::path& out) {
+  const nlohmann::json measured = measureGraphCompile(args);
+  std::filesystem::create_directories(out);
+  const nlohmann::json& sizes = measured["sizes"];
+  const nlohmann::json& ratios = measured["ratios"];
   // Each target judged per mode: {"fresh": {"value", "met"}, "reused": {...}}.
   nlohmann::json targets = nlohmann::json::object();
   const auto judge = [&](const char* name, auto value, auto met) {

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 namespace sg::app {
 
 struct GraphBenchArgs {
@@ -12,6 +14,11 @@ struct GraphBenchArgs {
   uint32_t graphs = 8;        // distinct graphs per size
   uint32_t repetitions = 40;  // timed rounds; each compiles every graph of every size once per mode
 };
+
+// The measurement alone: {"sizes": [{passes, kept_passes_mean, samples,
+// fresh: {median_us, p10_us, p90_us, per_pass_ns}, reused: {...}}],
+// "ratios": [{passes, over, fresh, reused}]}; throws on empty or too small sizes.
+nlohmann::json measureGraphCompile(const GraphBenchArgs& args);
 
 // Writes graph.json and graph.csv into `out` and prints medians and ratios.
 void runGraphBench(const GraphBenchArgs& args, const std::filesystem::path& out);

@@ -21,6 +21,7 @@
 #include <shadelgraph/image/metrics.hpp>
 #include <shadelgraph/render/renderer.hpp>
 
+#include "bench_sessions.hpp"
 #include "output_file.hpp"
 #include "scene_source.hpp"
 
@@ -197,9 +198,7 @@ nlohmann::json benchMaterials(gpu::Device& device, const std::string& scenePath,
            {"history_bytes", stats.historyBytes},
            {"transient_bytes", lastFrame[c].transientBytes},
            {"shade_memory_bytes", config.decoupled ? stats.storageBytes + stats.remapBytes + stats.idMapBytes : 0},
-           {"shadels_per_pixel", stats.counters.coveredPixels
-                                     ? 64.0 * stats.counters.chunksAllocated / stats.counters.coveredPixels
-                                     : 0.0},
+           {"shadels_per_pixel", shadelsPerPixel(stats)},
            {"support_chunks", stats.counters.supportChunks},
            {"overflow_chunks", stats.counters.overflowChunks},
            {"composite_misses", stats.counters.compositeMisses},

@@ -1,17 +1,14 @@
 #include "bench_scenes.hpp"
 
 #include <cstdio>
-#include <map>
-#include <memory>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
-#include <builtin_plugins.hpp>
-#include <decoupled/decoupled_package.hpp>
 #include <shadelgraph/render/renderer.hpp>
 
 #include "bench_materials.hpp"
+#include "bench_sessions.hpp"
 #include "command_options.hpp"
 #include "option_checks.hpp"
 #include "output_file.hpp"
@@ -31,14 +28,6 @@ const std::vector<RatioConfig> kConfigs{{"forward", false, false},
                                         {"forward as before", false, true},
                                         {"decoupled as before", true, true}};
 
-struct Session {
-  scene::Scene scene;
-  std::shared_ptr<plugins::DecoupledShading> decoupled;
-  std::unique_ptr<render::Renderer> renderer;
-  std::vector<double> frameMs;
-  std::map<std::string, std::vector<double>> passMs;
-};
-
 // The first scene's camera: its first camera path at time 0 when it has one
 // (framed for that scene's bounds), else the renderer's default view.
 scene::Camera baselineCamera(const LoadedScene& loaded, const render::Renderer& renderer, uint32_t width,
@@ -48,47 +37,42 @@ scene::Camera baselineCamera(const LoadedScene& loaded, const render::Renderer& 
   return scene::poseCamera(pose, scene::worldBounds(loaded.scene));
 }
 
-nlohmann::json benchSize(gpu::Device& device, const std::vector<LoadedScene>& loaded,
-                         const std::vector<std::string>& names, uint32_t width, uint32_t height, int repetitions) {
+}  // namespace
+
+nlohmann::json measureSceneRatios(gpu::Device& device, const std::vector<LoadedScene>& loaded,
+                                  const std::vector<std::string>& names, uint32_t width, uint32_t height,
+                                  int repetitions, bool withBefore) {
+  // configs[0, 1]: forward and decoupled now; [2, 3]: the same as before issue 14.
+  const size_t configs = withBefore ? kConfigs.size() : 2;
   // sessions[s * configs + c]
-  std::vector<Session> sessions(loaded.size() * kConfigs.size());
+  std::vector<BenchSession> sessions(loaded.size() * configs);
   for (size_t s = 0; s < loaded.size(); ++s)
-    for (size_t c = 0; c < kConfigs.size(); ++c) {
-      auto& session = sessions[s * kConfigs.size() + c];
-      session.scene = loaded[s].scene;
-      auto made = plugins::makeDecoupledRenderer(
-          device, session.scene, plugins::builtinRegistry(),
-          kConfigs[c].decoupled ? scene::ShadingMode::Decoupled : scene::ShadingMode::Forward, {});
-      session.decoupled = std::move(made.shading);
-      session.renderer = std::move(made.renderer);
-    }
+    for (size_t c = 0; c < configs; ++c)
+      sessions[s * configs + c].make(device, loaded[s].scene,
+                                     kConfigs[c].decoupled ? scene::ShadingMode::Decoupled : scene::ShadingMode::Forward);
   // With camera paths in the first scene, every scene is seen from there (what
   // a scene adds does not move the view); else each through its own default view.
-  std::vector<scene::Camera> cameras;
-  for (size_t s = 0; s < loaded.size(); ++s)
-    cameras.push_back(loaded[0].cameraPaths.empty()
-                          ? sessions[s * kConfigs.size()].renderer->camera({.width = width, .height = height})
-                          : baselineCamera(loaded[0], *sessions[0].renderer, width, height));
+  std::vector<BenchSession*> timed;
+  for (size_t i = 0; i < sessions.size(); ++i) {
+    const size_t s = i / configs;
+    sessions[i].view = {.width = width, .height = height,
+                        .cameraOverride = loaded[0].cameraPaths.empty()
+                                              ? sessions[s * configs].renderer->camera({.width = width, .height = height})
+                                              : baselineCamera(loaded[0], *sessions[0].renderer, width, height),
+                        .occlusionCulling = !kConfigs[i % configs].asBefore};
+    timed.push_back(&sessions[i]);
+  }
   std::fprintf(stderr, "[bench] scene ratios %ux%u: %zu sessions, %d rounds\n", width, height, sessions.size(),
                repetitions);
-  for (int rep = -1; rep < repetitions; ++rep)
-    for (size_t i = 0; i < sessions.size(); ++i) {
-      auto& session = sessions[i];
-      const auto frame = session.renderer->render({.width = width, .height = height,
-                                                   .cameraOverride = cameras[i / kConfigs.size()],
-                                                   .occlusionCulling = !kConfigs[i % kConfigs.size()].asBefore});
-      if (rep < 0) continue;  // warm-up: pipelines, the adjuster, last frame's visibility
-      session.frameMs.push_back(frame.timings.gpuMs);
-      for (const auto& p : frame.timings.passes) session.passMs[p.name].push_back(p.gpuMs);
-    }
+  alternateFrames(timed, repetitions);
   nlohmann::json results = nlohmann::json::array();
   for (size_t s = 0; s < loaded.size(); ++s)
-    for (size_t c = 0; c < kConfigs.size(); ++c) {
-      const auto& session = sessions[s * kConfigs.size() + c];
-      const double ms = median(session.frameMs);
-      const double baseline = median(sessions[c].frameMs);
+    for (size_t c = 0; c < configs; ++c) {
+      const auto& session = sessions[s * configs + c];
+      const double ms = session.frameMedian();
+      const double baseline = sessions[c].frameMedian();
       // This scene and path as before issue 14 (configs 2, 3: the same paths as 0, 1).
-      const double before = median(sessions[s * kConfigs.size() + c % 2 + 2].frameMs);
+      const double before = withBefore ? sessions[s * configs + c % 2 + 2].frameMedian() : 0.0;
       const auto stats = session.decoupled->stats();
       results.push_back({{"scene", names[s]},
                          {"config", kConfigs[c].name},
@@ -98,14 +82,12 @@ nlohmann::json benchSize(gpu::Device& device, const std::vector<LoadedScene>& lo
                          {"frame_ms_median", ms},
                          {"frame_ms_samples", session.frameMs},
                          {"ratio_to_first", baseline > 0.0 ? ms / baseline : 0.0},
-                         {"ratio_to_before", before > 0.0 ? ms / before : 0.0},
-                         {"pass_ms_median", medians(session.passMs)},
+                         {"ratio_to_before", withBefore ? nlohmann::json(before > 0.0 ? ms / before : 0.0) : nlohmann::json(nullptr)},
+                         {"pass_ms_median", session.passMedians()},
                          {"composite_misses", stats.counters.compositeMisses}});
     }
   return {{"width", width}, {"height", height}, {"repetitions", repetitions}, {"configs", results}};
 }
-
-}  // namespace
 
 void runSceneRatioBench(gpu::Context& context, gpu::Device& device, const SceneRatioArgs& args,
                         const std::filesystem::path& out) {
@@ -121,7 +103,7 @@ void runSceneRatioBench(gpu::Context& context, gpu::Device& device, const SceneR
   for (const auto& size : args.sizes) {
     uint32_t w = 0, h = 0;
     parseSize("--sizes", size, w, h);
-    runs.push_back(benchSize(device, loaded, names, w, h, args.repetitions));
+    runs.push_back(measureSceneRatios(device, loaded, names, w, h, args.repetitions));
   }
   writeTextFile(out / "scene-ratios.json", "results",
                 nlohmann::json{{"machine", machineJson(context)}, {"runs", runs}}.dump(2) + "\n");

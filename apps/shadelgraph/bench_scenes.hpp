@@ -16,6 +16,10 @@
 #include <shadelgraph/gpu/context.hpp>
 #include <shadelgraph/gpu/device.hpp>
 
+#include <nlohmann/json.hpp>
+
+#include "scene_source.hpp"
+
 namespace sg::app {
 
 struct SceneRatioArgs {
@@ -23,6 +27,13 @@ struct SceneRatioArgs {
   std::vector<std::string> sizes;
   int repetitions = 5;
 };
+
+// One size of that bench: the run's JSON (width, height, repetitions and per
+// scene and configuration the medians and ratios). withBefore false: only
+// forward and decoupled as now (ratio_to_before null).
+nlohmann::json measureSceneRatios(gpu::Device& device, const std::vector<LoadedScene>& loaded,
+                                  const std::vector<std::string>& names, uint32_t width, uint32_t height,
+                                  int repetitions, bool withBefore = true);
 
 void runSceneRatioBench(gpu::Context& context, gpu::Device& device, const SceneRatioArgs& args,
                         const std::filesystem::path& out);

@@ -261,4 +261,39 @@ void checkBenchArgs(const BenchArgs& args) {
   }
 }
 
+CLI::App* addBenchTargetsOptions(CLI::App& bench, TargetsBenchArgs& args) {
+  auto* targets = bench.add_subcommand(
+      "targets",
+      "Instead: issue 14's targets, every row measured in one run (configurations alternated, medians), each "
+      "figure against its target; writes targets.json and targets.md into --out");
+  targets->add_option("--sizes", args.sizes,
+                      "output sizes of every row, e.g. 160x90 (default: 1280x720; shadels per pixel and PSNR also "
+                      "640x360)");
+  targets->add_option("--scenes", args.scenes,
+                      "measure only these scenes (comma-separated): default, a sample model's name (e.g. "
+                      "DamagedHelmet), cull (the hidden and off-screen objects scenes); the rest are reported as "
+                      "not measured")
+      ->delimiter(',');
+  targets->add_option("--repetitions", args.repetitions, "timed rounds, 1 or more")->capture_default_str();
+  targets->add_option("--assets", args.assets, "the glTF sample models' directory (<dir>/<model>/glTF/<model>.gltf)")
+      ->capture_default_str();
+  targets->add_option("--scene-files", args.sceneFiles, "the directory of cull-base.json, cull-hidden.json and cull-offscreen.json")
+      ->capture_default_str();
+  targets->add_option("--baseline-json", args.baselineJson,
+                      "an earlier targets.json (e.g. docs/results/targets-before-issue-14.json): every figure's "
+                      "before, and the rows whose target is relative to it");
+  targets->fallthrough();  // --out belongs to bench
+  return targets;
+}
+
+void checkBenchTargetsArgs(const TargetsBenchArgs& args) {
+  requireInRange("--repetitions", args.repetitions, 1, 100000);
+  for (const auto& size : args.sizes) {
+    uint32_t w = 0, h = 0;
+    parseSize("--sizes", size, w, h);
+  }
+  for (const auto& scene : args.scenes)
+    if (scene.empty()) throw std::invalid_argument("--scenes: expected scene names, got an empty one");
+}
+
 }  // namespace sg::app

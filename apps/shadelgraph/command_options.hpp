@@ -113,4 +113,17 @@ CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& gr
 // Every option's value, before the device starts: no empty sweep, no reference beyond the size limit.
 void checkBenchArgs(const BenchArgs& args);
 
+// bench targets: issue 14's table of targets measured in one run (bench_targets.cpp).
+struct TargetsBenchArgs {
+  std::vector<std::string> sizes;   // empty: each row's own (1280x720; shadels per pixel and PSNR also 640x360)
+  std::vector<std::string> scenes;  // empty: every row's scenes; else only these (default, a sample model, cull)
+  int repetitions = 5;              // timed rounds
+  std::string assets = "../shared/assets/gltf";  // the sample models, one directory each
+  std::string sceneFiles = "benchmarks/scenes";  // cull-base.json, cull-hidden.json, cull-offscreen.json
+  std::string baselineJson;  // an earlier targets.json: each figure's "before"
+};
+// bench's subcommand "targets" (returned); --out stays bench's.
+CLI::App* addBenchTargetsOptions(CLI::App& bench, TargetsBenchArgs& args);
+void checkBenchTargetsArgs(const TargetsBenchArgs& args);
+
 }  // namespace sg::app

@@ -80,8 +80,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   sg::app::GraphBenchArgs graphBench;
   auto* benchCommand = app.add_subcommand("bench");
   sg::app::addBenchOptions(*benchCommand, bench, graphBench);
+  sg::app::TargetsBenchArgs targetsBench;
+  auto* targetsCommand = sg::app::addBenchTargetsOptions(*benchCommand, targetsBench);
+  targetsCommand->callback([&] { sg::app::checkBenchTargetsArgs(targetsBench); });
   benchCommand->callback([&] {
-    if (!benchCommand->got_subcommand("graph")) sg::app::checkBenchArgs(bench);
+    if (!benchCommand->got_subcommand("graph") && !benchCommand->got_subcommand("targets"))
+      sg::app::checkBenchArgs(bench);
   });
   try {
     app.parse(static_cast<int>(argv.size()), argv.data());
