@@ -25,8 +25,7 @@ struct SgVertex {  // render::GpuVertex
   vec3 position;
   vec3 normal;
   vec4 tangent;
-  vec2 uv0;
-  vec2 uv1;
+  vec4 uv01;  // uv0 and uv1: one read of four components (lavapipe loops over the lanes once per read, not per component)
   vec4 color;
 };
 layout(set = 0, binding = kBindIdMaps, std430) readonly buffer IdMaps { uint idMaps[]; };
@@ -136,7 +135,7 @@ SgChunkSetup sgChunkSetup() {
   return c;
 }
 
-vec2 sgShadingUv(SgVertex v, SgChunkSetup c) { return (c.shadingUvSet == 1u ? v.uv1 : v.uv0) - c.tileOffset; }
+vec2 sgShadingUv(SgVertex v, SgChunkSetup c) { return (c.shadingUvSet == 1u ? v.uv01.zw : v.uv01.xy) - c.tileOffset; }
 
 // Finds this invocation's shadel (sgShadel) and, if it lies on the object,
 // its surface point. False: write nothing meaningful (the layer gets vec4(0)).
@@ -179,13 +178,13 @@ bool sgBeginShadel(out Surface s) {
   vec4 t = v0.tangent * b.x + v1.tangent * b.y + v2.tangent * b.z;
   // A mirroring world matrix flips cross(normal, tangent): flip the handedness with it (as forward.vert).
   s.tangent = vec4(mat3(c.world) * t.xyz, determinant(mat3(c.world)) < 0.0 ? -v0.tangent.w : v0.tangent.w);
-  s.uv0 = v0.uv0 * b.x + v1.uv0 * b.y + v2.uv0 * b.z;
-  s.uv1 = v0.uv1 * b.x + v1.uv1 * b.y + v2.uv1 * b.z;
+  s.uv0 = v0.uv01.xy * b.x + v1.uv01.xy * b.y + v2.uv01.xy * b.z;
+  s.uv1 = v0.uv01.zw * b.x + v1.uv01.zw * b.y + v2.uv01.zw * b.z;
   s.color = v0.color * b.x + v1.color * b.y + v2.color * b.z;
-  s.uv0Dx = v0.uv0 * bDx.x + v1.uv0 * bDx.y + v2.uv0 * bDx.z;
-  s.uv0Dy = v0.uv0 * bDy.x + v1.uv0 * bDy.y + v2.uv0 * bDy.z;
-  s.uv1Dx = v0.uv1 * bDx.x + v1.uv1 * bDx.y + v2.uv1 * bDx.z;
-  s.uv1Dy = v0.uv1 * bDy.x + v1.uv1 * bDy.y + v2.uv1 * bDy.z;
+  s.uv0Dx = v0.uv01.xy * bDx.x + v1.uv01.xy * bDx.y + v2.uv01.xy * bDx.z;
+  s.uv0Dy = v0.uv01.xy * bDy.x + v1.uv01.xy * bDy.y + v2.uv01.xy * bDy.z;
+  s.uv1Dx = v0.uv01.zw * bDx.x + v1.uv01.zw * bDx.y + v2.uv01.zw * bDx.z;
+  s.uv1Dy = v0.uv01.zw * bDy.x + v1.uv01.zw * bDy.y + v2.uv01.zw * bDy.z;
   s.positionDx = mat3(c.world) * (v0.position * bDx.x + v1.position * bDx.y + v2.position * bDx.z);
   s.positionDy = mat3(c.world) * (v0.position * bDy.x + v1.position * bDy.y + v2.position * bDy.z);
   // Double-sided surfaces seen from behind: shade the side facing the camera.
