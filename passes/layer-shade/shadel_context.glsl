@@ -30,7 +30,9 @@ struct SgVertex {  // render::GpuVertex
 };
 layout(set = 0, binding = kBindIdMaps, std430) readonly buffer IdMaps { uint idMaps[]; };
 layout(set = 0, binding = kBindVertices, scalar) readonly buffer Vertices { SgVertex vertices[]; };
-layout(set = 0, binding = kBindIndices, std430) readonly buffer Indices { uint indices[]; };
+// The scene's indices as triangles: every primitive starts at a multiple of 3
+// (render::GpuScene), so a triangle is one read of three components.
+layout(set = 0, binding = kBindIndices, scalar) readonly buffer Indices { uvec3 triangles[]; };
 layout(push_constant, scalar) uniform Push { SgLayerShadePush sgPush; };
 
 const uint SG_NO_TRIANGLE = 0xFFFFFFFFu;
@@ -157,10 +159,8 @@ bool sgBeginShadel(out Surface s) {
   sgShadel.triangle = sgTriangleAt(sgShadel.local);
   if (sgShadel.triangle == SG_NO_TRIANGLE) return false;
 
-  uint i0 = indices[c.firstIndex + 3u * sgShadel.triangle] + uint(c.vertexOffset);
-  uint i1 = indices[c.firstIndex + 3u * sgShadel.triangle + 1u] + uint(c.vertexOffset);
-  uint i2 = indices[c.firstIndex + 3u * sgShadel.triangle + 2u] + uint(c.vertexOffset);
-  SgVertex v0 = vertices[i0], v1 = vertices[i1], v2 = vertices[i2];
+  uvec3 i = triangles[c.firstIndex / 3u + sgShadel.triangle] + uint(c.vertexOffset);
+  SgVertex v0 = vertices[i.x], v1 = vertices[i.y], v2 = vertices[i.z];
   vec2 s0 = sgShadingUv(v0, c), s1 = sgShadingUv(v1, c), s2 = sgShadingUv(v2, c);
 
   float step = 1.0 / float(sgShadel.rect.size);
