@@ -82,6 +82,12 @@ scene::Camera awayCamera(scene::Camera camera, const scene::Scene& s) {
   return camera;
 }
 
+// The median of all layer-shade passes ÷ the shadels they shaded (64 per chunk
+// shaded: every invocation of the chunk's workgroup, on the object or not), in ns.
+double layerShadeNsPerShadel(double layerShadeMs, uint64_t shadels) {
+  return shadels ? layerShadeMs * 1e6 / double(shadels) : 0.0;
+}
+
 double passMedian(const nlohmann::json& config, const char* pass) {
   const auto& passes = config["pass_ms_median"];
   return passes.contains(pass) ? passes[pass].get<double>() : 0.0;
@@ -193,6 +199,10 @@ nlohmann::json benchMaterials(gpu::Device& device, const std::string& scenePath,
            {"gpu_ms_samples", timed[c].gpuMs},
            {"pass_ms_median", timed[c].passMedians()},
            {"layer_shade_ms_median", median(timed[c].layerShadeMs)},
+           {"shadels_shaded", config.decoupled ? 64ull * stats.counters.chunksShaded : 0ull},
+           {"layer_shade_ns_per_shadel",
+            config.decoupled ? layerShadeNsPerShadel(median(timed[c].layerShadeMs), 64ull * stats.counters.chunksShaded)
+                             : 0.0},
            {"layer_dispatches", stats.layerDispatches},
            {"layer_reuse", timed[c].reuseMedians()},
            {"history_bytes", stats.historyBytes},
@@ -216,7 +226,8 @@ void writeCsv(const std::filesystem::path& file, const nlohmann::json& runs) {
   std::ostringstream csv;
   csv << "scene,width,height,material,path,material_run,frame_ms_median,gpu_ms_median,layer_shade_ms,"
          "layer_shade_2_ms,layer_shade_3_ms,support_expand_ms,layer_dispatches,history_bytes,transient_bytes,"
-         "shade_memory_bytes,flip_mean,psnr,first_frame_layer_shade_ms,cold_layer_shade_ms,steady_layer_shade_ms\n";
+         "shade_memory_bytes,flip_mean,psnr,first_frame_layer_shade_ms,cold_layer_shade_ms,steady_layer_shade_ms,"
+         "shadels_shaded,layer_shade_ns_per_shadel\n";
   for (const auto& run : runs)
     for (const auto& c : run["configs"]) {
       const auto& p = c["persistent"];
@@ -229,16 +240,17 @@ void writeCsv(const std::filesystem::path& file, const nlohmann::json& runs) {
           << c["shade_memory_bytes"] << ',' << c["flip_mean"] << ',' << c["psnr"] << ','
           << (p.is_null() ? "" : p["first_frame"]["layer_shade_ms"].dump()) << ','
           << (p.is_null() ? "" : p["cold"]["layer_shade_ms_median"].dump()) << ','
-          << (p.is_null() ? "" : p["steady"]["layer_shade_ms_median"].dump()) << '\n';
+          << (p.is_null() ? "" : p["steady"]["layer_shade_ms_median"].dump()) << ',' << c["shadels_shaded"] << ','
+          << c["layer_shade_ns_per_shadel"] << '\n';
     }
   writeTextFile(file, "results", csv.str());
 }
 
 void printTable(const nlohmann::json& runs) {
   constexpr double MiB = 1 << 20;
-  std::printf("%-8s %-8s %-9s %-9s %8s %8s %7s %8s %8s %8s %7s %4s %7s %7s %7s %6s\n", "scene", "size", "material",
-              "path", "GPU ms", "frame ms", "dec/fwd", "shade#1", "shade#2", "shade#3", "expand", "disp", "histMiB",
-              "tranMiB", "FLIP", "PSNR");
+  std::printf("%-8s %-8s %-9s %-9s %8s %8s %7s %8s %8s %8s %7s %9s %4s %7s %7s %7s %6s\n", "scene", "size",
+              "material", "path", "GPU ms", "frame ms", "dec/fwd", "shade#1", "shade#2", "shade#3", "expand",
+              "ns/shadel", "disp", "histMiB", "tranMiB", "FLIP", "PSNR");
   for (const auto& run : runs) {
     const auto& configs = run["configs"];
     for (size_t i = 0; i < configs.size(); ++i) {
@@ -246,12 +258,13 @@ void printTable(const nlohmann::json& runs) {
       const bool decoupled = c["path"] == "decoupled";
       // configs alternate forward, decoupled per material
       const double ratio = decoupled ? c["gpu_ms_median"].get<double>() / configs[i - 1]["gpu_ms_median"].get<double>() : 1.0;
-      std::printf("%-8s %4dx%-3d %-9s %-9s %8.2f %8.2f %7.2f %8.2f %8.2f %8.2f %7.2f %4d %7.2f %7.2f %7.4f %6.2f\n",
+      std::printf("%-8s %4dx%-3d %-9s %-9s %8.2f %8.2f %7.2f %8.2f %8.2f %8.2f %7.2f %9.1f %4d %7.2f %7.2f %7.4f %6.2f\n",
                   run["scene"].get<std::string>().c_str(), run["width"].get<int>(), run["height"].get<int>(),
                   c["material"].get<std::string>().c_str(), c["path"].get<std::string>().c_str(),
                   c["gpu_ms_median"].get<double>(), c["frame_ms_median"].get<double>(), ratio,
                   passMedian(c, "layer-shade"), passMedian(c, "layer-shade #2"), passMedian(c, "layer-shade #3"),
-                  passMedian(c, "support-expand"), c["layer_dispatches"].get<int>(),
+                  passMedian(c, "support-expand"), c["layer_shade_ns_per_shadel"].get<double>(),
+                  c["layer_dispatches"].get<int>(),
                   c["history_bytes"].get<double>() / MiB, c["transient_bytes"].get<double>() / MiB,
                   c["flip_mean"].get<double>(), c["psnr"].is_number() ? c["psnr"].get<double>() : 0.0);
     }

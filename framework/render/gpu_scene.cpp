@@ -93,6 +93,8 @@ void GpuScene::uploadGeometry(gpu::Context& context, gpu::MemoryAllocator& memor
       ranges.push_back({uint32_t(indices.size()), uint32_t(p.indices.size()), int32_t(vertices.size()), p.material});
       for (size_t i = 0; i < p.positions.size(); ++i) vertices.push_back(toGpuVertex(p, i));
       indices.insert(indices.end(), p.indices.begin(), p.indices.end());
+      // Every primitive starts at a multiple of 3: layer-shade reads a triangle's indices as one uvec3.
+      indices.resize((indices.size() + 2) / 3 * 3, 0u);
     }
   }
   std::vector<DeformedPrimitive> deformed;

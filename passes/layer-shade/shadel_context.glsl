@@ -13,6 +13,7 @@
 #define SG_SHADEL_CONTEXT_GLSL
 
 #extension GL_EXT_scalar_block_layout : require
+#extension GL_KHR_shader_subgroup_ballot : require
 #include <framework/render/shaders/frame.glsl>
 #include <framework/shadel/shaders/decoupled.glsl>
 #include <framework/shadel/shaders/work.glsl>
@@ -24,13 +25,14 @@ struct SgVertex {  // render::GpuVertex
   vec3 position;
   vec3 normal;
   vec4 tangent;
-  vec2 uv0;
-  vec2 uv1;
+  vec4 uv01;  // uv0 and uv1: one read of four components (lavapipe loops over the lanes once per read, not per component)
   vec4 color;
 };
 layout(set = 0, binding = kBindIdMaps, std430) readonly buffer IdMaps { uint idMaps[]; };
 layout(set = 0, binding = kBindVertices, scalar) readonly buffer Vertices { SgVertex vertices[]; };
-layout(set = 0, binding = kBindIndices, std430) readonly buffer Indices { uint indices[]; };
+// The scene's indices as triangles: every primitive starts at a multiple of 3
+// (render::GpuScene), so a triangle is one read of three components.
+layout(set = 0, binding = kBindIndices, scalar) readonly buffer Indices { uvec3 triangles[]; };
 layout(push_constant, scalar) uniform Push { SgLayerShadePush sgPush; };
 
 const uint SG_NO_TRIANGLE = 0xFFFFFFFFu;
@@ -45,6 +47,7 @@ struct SgShadelContext {
   uint level;
   uint triangle;       // SG_NO_TRIANGLE: nothing to shade (outside the chart or past the level's edge)
   uint levelOffset;    // of its level in the object's ID map
+  uint idMapLevel;     // the first texel of its level in the ID-map buffer
 };
 SgShadelContext sgShadel;
 
@@ -52,10 +55,7 @@ SgShadelContext sgShadel;
 float sgDetailLevel() { return float(sgShadel.level); }
 uint sgTriangleId() { return sgShadel.triangle; }
 
-uint sgTriangleAt(uvec2 local) {
-  SgDecoupledObject o = objects[sgPush.objectIndex];
-  return idMaps[o.idMapOffset + sgShadel.levelOffset + local.y * sgShadel.rect.size + local.x];
-}
+uint sgTriangleAt(uvec2 local) { return idMaps[sgShadel.idMapLevel + local.y * sgShadel.rect.size + local.x]; }
 
 vec3 sgBarycentrics(vec2 p, vec2 a, vec2 b, vec2 c) {
   vec2 v0 = b - a, v1 = c - a, v2 = p - a;
@@ -65,42 +65,103 @@ vec3 sgBarycentrics(vec2 p, vec2 a, vec2 b, vec2 c) {
   return vec3(1.0 - v - w, v, w);
 }
 
-vec2 sgShadingUv(SgVertex v, SgDecoupledObject o) { return (o.shadingUvSet == 1u ? v.uv1 : v.uv0) - o.tileOffset; }
-
 // This workgroup's place in the object's work list (one chunk each): dispatches
 // run in rows of up to 65,535 groups (work_offsets.comp), so the last row may
 // reach past the list's end; those groups do nothing (sgWorkGroupInList).
 uint sgWorkGroupIndex() { return gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x; }
-bool sgWorkGroupInList() { return sgWorkGroupIndex() < work[sgObjectChunksSlot(sgPush.objectIndex)]; }
+bool sgWorkGroupInList() {
+  uint lead = subgroupBroadcastFirst(gl_SubgroupInvocationID), chunks = 0u;
+  if (gl_SubgroupInvocationID == lead) chunks = work[sgObjectChunksSlot(sgPush.objectIndex)];  // one read (sgChunkSetup)
+  return sgWorkGroupIndex() < subgroupBroadcast(chunks, lead);
+}
+
+// What every shadel of a workgroup shares: its chunk's work item, the
+// object's record and the level's rectangle. One lane of each subgroup reads
+// them and broadcasts: on CPU devices (lavapipe) every lane's buffer read is a
+// scalar load and a bounds check of its own, however uniform the address, and
+// these reads cost as much as the shadel's own (ID map, indices, vertices).
+struct SgChunkSetup {
+  uint entryIndex, chunkIndex, level, physical;
+  SgLevelRect rect;
+  uint idMapLevel;    // the first texel of the level in the ID-map buffer
+  uint levelOffset;   // of the level in the object's ID map
+  uint firstIndex;
+  int vertexOffset;
+  uint shadingUvSet;
+  vec2 tileOffset;
+  mat4 world;
+};
+
+SgChunkSetup sgReadChunkSetup() {
+  SgChunkSetup c;
+  SgDecoupledObject o = objects[sgPush.objectIndex];
+  uint item = sgWorkItemSlot(work[sgObjectOffsetSlot(sgPush.objectIndex)] + sgWorkGroupIndex());
+  c.entryIndex = work[item];
+  c.chunkIndex = work[item + 1u];
+  c.level = work[item + 2u];
+  c.physical = work[item + 3u];
+  SgShadelInstance instance = shadelInstances[sgPush.objectIndex];
+  c.rect = levelRects[sgLevelRectIndex(instance, c.level)];
+  c.levelOffset = 0u;
+  for (uint l = 0u; l < c.level; ++l) c.levelOffset += (instance.level0Size >> l) * (instance.level0Size >> l);
+  c.idMapLevel = o.idMapOffset + c.levelOffset;
+  c.firstIndex = o.firstIndex;
+  c.vertexOffset = o.vertexOffset;
+  c.shadingUvSet = o.shadingUvSet;
+  c.tileOffset = o.tileOffset;
+  c.world = o.world;
+  return c;
+}
+
+// Every lane gets the first active lane's setup. subgroupBroadcast from an
+// index found once: lavapipe finds the first active lane by a loop over the
+// lanes for every subgroupBroadcastFirst, and reads a given lane directly.
+SgChunkSetup sgChunkSetup() {
+  uint lead = subgroupBroadcastFirst(gl_SubgroupInvocationID);
+  SgChunkSetup c;
+  if (gl_SubgroupInvocationID == lead) c = sgReadChunkSetup();
+  c.entryIndex = subgroupBroadcast(c.entryIndex, lead);
+  c.chunkIndex = subgroupBroadcast(c.chunkIndex, lead);
+  c.level = subgroupBroadcast(c.level, lead);
+  c.physical = subgroupBroadcast(c.physical, lead);
+  c.rect.origin = subgroupBroadcast(c.rect.origin, lead);
+  c.rect.size = subgroupBroadcast(c.rect.size, lead);
+  c.rect.allocatedSize = subgroupBroadcast(c.rect.allocatedSize, lead);
+  c.idMapLevel = subgroupBroadcast(c.idMapLevel, lead);
+  c.levelOffset = subgroupBroadcast(c.levelOffset, lead);
+  c.firstIndex = subgroupBroadcast(c.firstIndex, lead);
+  c.vertexOffset = subgroupBroadcast(c.vertexOffset, lead);
+  c.shadingUvSet = subgroupBroadcast(c.shadingUvSet, lead);
+  c.tileOffset = subgroupBroadcast(c.tileOffset, lead);
+  for (int k = 0; k < 4; ++k) c.world[k] = subgroupBroadcast(c.world[k], lead);
+  return c;
+}
+
+vec2 sgShadingUv(SgVertex v, SgChunkSetup c) { return (c.shadingUvSet == 1u ? v.uv01.zw : v.uv01.xy) - c.tileOffset; }
 
 // Finds this invocation's shadel (sgShadel) and, if it lies on the object,
 // its surface point. False: write nothing meaningful (the layer gets vec4(0)).
 bool sgBeginShadel(out Surface s) {
-  SgDecoupledObject o = objects[sgPush.objectIndex];
-  uint item = sgWorkItemSlot(work[sgObjectOffsetSlot(sgPush.objectIndex)] + sgWorkGroupIndex());
-  uint entryIndex = work[item], chunkIndex = work[item + 1u], level = work[item + 2u], physical = work[item + 3u];
+  SgChunkSetup c = sgChunkSetup();
   uint texelIndex = gl_LocalInvocationID.y * SG_CHUNK_SIZE + gl_LocalInvocationID.x;
-  sgShadel.target = ivec2(sgStorageTexel(physical, texelIndex, params.storageWidthChunks));
-  sgShadel.shadel = sgVirtualShadel(SgShadelAddress(entryIndex, chunkIndex, texelIndex), params.entriesPerSideLog2);
-  sgShadel.rect = sgLevelRect(sgPush.objectIndex, level);
-  sgShadel.level = level;
+  sgShadel.target = ivec2(sgStorageTexel(c.physical, texelIndex, params.storageWidthChunks));
+  sgShadel.shadel = sgVirtualShadel(SgShadelAddress(c.entryIndex, c.chunkIndex, texelIndex), params.entriesPerSideLog2);
+  sgShadel.rect = c.rect;
+  sgShadel.level = c.level;
   sgShadel.local = sgShadel.shadel - sgShadel.rect.origin;
   sgShadel.triangle = SG_NO_TRIANGLE;
+  sgShadel.levelOffset = c.levelOffset;
+  sgShadel.idMapLevel = c.idMapLevel;
   s = Surface(vec3(0.0), vec3(0.0, 0.0, 1.0), vec4(1.0, 0.0, 0.0, 1.0), vec2(0.0), vec2(0.0), vec4(0.0), vec2(0.0),
               vec2(0.0), vec2(0.0), vec2(0.0), vec3(0.0), vec3(0.0));
   // Chunks of levels smaller than a chunk, and texels past the level's edge.
   if (sgShadel.local.x >= sgShadel.rect.size || sgShadel.local.y >= sgShadel.rect.size) return false;
-  uint size0 = shadelInstances[sgPush.objectIndex].level0Size;
-  sgShadel.levelOffset = 0u;
-  for (uint l = 0u; l < level; ++l) sgShadel.levelOffset += (size0 >> l) * (size0 >> l);
   sgShadel.triangle = sgTriangleAt(sgShadel.local);
   if (sgShadel.triangle == SG_NO_TRIANGLE) return false;
 
-  uint i0 = indices[o.firstIndex + 3u * sgShadel.triangle] + uint(o.vertexOffset);
-  uint i1 = indices[o.firstIndex + 3u * sgShadel.triangle + 1u] + uint(o.vertexOffset);
-  uint i2 = indices[o.firstIndex + 3u * sgShadel.triangle + 2u] + uint(o.vertexOffset);
-  SgVertex v0 = vertices[i0], v1 = vertices[i1], v2 = vertices[i2];
-  vec2 s0 = sgShadingUv(v0, o), s1 = sgShadingUv(v1, o), s2 = sgShadingUv(v2, o);
+  uvec3 i = triangles[c.firstIndex / 3u + sgShadel.triangle] + uint(c.vertexOffset);
+  SgVertex v0 = vertices[i.x], v1 = vertices[i.y], v2 = vertices[i.z];
+  vec2 s0 = sgShadingUv(v0, c), s1 = sgShadingUv(v1, c), s2 = sgShadingUv(v2, c);
 
   float step = 1.0 / float(sgShadel.rect.size);
   vec2 uv = (vec2(sgShadel.local) + 0.5) * step;
@@ -111,21 +172,21 @@ bool sgBeginShadel(out Surface s) {
   vec3 bDx = sgBarycentrics(uv + vec2(step, 0.0), s0, s1, s2) - sgBarycentrics(uv, s0, s1, s2);
   vec3 bDy = sgBarycentrics(uv + vec2(0.0, step), s0, s1, s2) - sgBarycentrics(uv, s0, s1, s2);
 
-  mat3 normalMatrix = transpose(inverse(mat3(o.world)));
-  s.position = (o.world * vec4(v0.position * b.x + v1.position * b.y + v2.position * b.z, 1.0)).xyz;
+  mat3 normalMatrix = transpose(inverse(mat3(c.world)));
+  s.position = (c.world * vec4(v0.position * b.x + v1.position * b.y + v2.position * b.z, 1.0)).xyz;
   s.normal = normalize(normalMatrix * (v0.normal * b.x + v1.normal * b.y + v2.normal * b.z));
   vec4 t = v0.tangent * b.x + v1.tangent * b.y + v2.tangent * b.z;
   // A mirroring world matrix flips cross(normal, tangent): flip the handedness with it (as forward.vert).
-  s.tangent = vec4(mat3(o.world) * t.xyz, determinant(mat3(o.world)) < 0.0 ? -v0.tangent.w : v0.tangent.w);
-  s.uv0 = v0.uv0 * b.x + v1.uv0 * b.y + v2.uv0 * b.z;
-  s.uv1 = v0.uv1 * b.x + v1.uv1 * b.y + v2.uv1 * b.z;
+  s.tangent = vec4(mat3(c.world) * t.xyz, determinant(mat3(c.world)) < 0.0 ? -v0.tangent.w : v0.tangent.w);
+  s.uv0 = v0.uv01.xy * b.x + v1.uv01.xy * b.y + v2.uv01.xy * b.z;
+  s.uv1 = v0.uv01.zw * b.x + v1.uv01.zw * b.y + v2.uv01.zw * b.z;
   s.color = v0.color * b.x + v1.color * b.y + v2.color * b.z;
-  s.uv0Dx = v0.uv0 * bDx.x + v1.uv0 * bDx.y + v2.uv0 * bDx.z;
-  s.uv0Dy = v0.uv0 * bDy.x + v1.uv0 * bDy.y + v2.uv0 * bDy.z;
-  s.uv1Dx = v0.uv1 * bDx.x + v1.uv1 * bDx.y + v2.uv1 * bDx.z;
-  s.uv1Dy = v0.uv1 * bDy.x + v1.uv1 * bDy.y + v2.uv1 * bDy.z;
-  s.positionDx = mat3(o.world) * (v0.position * bDx.x + v1.position * bDx.y + v2.position * bDx.z);
-  s.positionDy = mat3(o.world) * (v0.position * bDy.x + v1.position * bDy.y + v2.position * bDy.z);
+  s.uv0Dx = v0.uv01.xy * bDx.x + v1.uv01.xy * bDx.y + v2.uv01.xy * bDx.z;
+  s.uv0Dy = v0.uv01.xy * bDy.x + v1.uv01.xy * bDy.y + v2.uv01.xy * bDy.z;
+  s.uv1Dx = v0.uv01.zw * bDx.x + v1.uv01.zw * bDx.y + v2.uv01.zw * bDx.z;
+  s.uv1Dy = v0.uv01.zw * bDy.x + v1.uv01.zw * bDy.y + v2.uv01.zw * bDy.z;
+  s.positionDx = mat3(c.world) * (v0.position * bDx.x + v1.position * bDx.y + v2.position * bDx.z);
+  s.positionDy = mat3(c.world) * (v0.position * bDy.x + v1.position * bDy.y + v2.position * bDy.z);
   // Double-sided surfaces seen from behind: shade the side facing the camera.
   if (material.flags.y != 0u && dot(s.normal, frame.cameraPosition.xyz - s.position) < 0.0) s.normal = -s.normal;
   return true;

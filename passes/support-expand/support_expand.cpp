@@ -47,7 +47,7 @@ void addSupportExpand(graph::RenderGraph& graph, DecoupledFrame& frame) {
     const std::array extra{gpu::DescriptorWrite{kBindSupportMasks, gpu::BufferBinding{maskBuffer}}};
 
     bindDecoupled(ctx, supportPipeline(ctx, false), frame, kBindings, extra);
-    dispatchGroups(ctx.cmd(), frame.ownedEntryCount);  // a workgroup per owned entry
+    dispatchGroups(ctx.cmd(), (frame.ownedEntryCount + 63) / 64);  // a thread per owned entry
 
     // Apply may start only when all of gather is done: apply reads the masks
     // gather wrote (a memory dependency), and writes occupancy gather read in
