@@ -59,7 +59,8 @@ uint32_t chooseLevel0Size(const scene::Mesh& mesh, const scene::ChartVerdict& ch
 }
 
 uint32_t screenRateLevel0Size(const scene::Mesh& mesh, const scene::ChartVerdict& chart, const glm::mat4& world,
-                              const glm::mat4& viewProjection, uint32_t width, uint32_t height, double coverage) {
+                              const glm::mat4& viewProjection, uint32_t width, uint32_t height, uint32_t level0,
+                              double narrowShadels, double coverage) {
   if (chart.uvSet < 0 || width == 0 || height == 0) return 0;
   const glm::dmat4 toClip = glm::dmat4(viewProjection) * glm::dmat4(world);
   std::vector<std::pair<double, double>> densities;  // (pixels per UV unit squared, pixel area)
@@ -86,7 +87,9 @@ uint32_t screenRateLevel0Size(const scene::Mesh& mesh, const scene::ChartVerdict
       };
       const double pixelArea = area(pixel), uvArea = area(uv);
       if (pixelArea <= 0.0) continue;
-      densities.emplace_back(uvArea > 0.0 ? pixelArea / uvArea : 1e300, pixelArea);
+      const double longestEdge = std::max({glm::length(uv[1] - uv[0]), glm::length(uv[2] - uv[1]), glm::length(uv[0] - uv[2])});
+      const bool narrow = longestEdge <= 0.0 || 2.0 * uvArea / longestEdge * level0 < narrowShadels;
+      densities.emplace_back(!narrow ? 0.0 : uvArea > 0.0 ? pixelArea / uvArea : 1e300, pixelArea);
       visibleArea += pixelArea;
     }
   }
@@ -101,6 +104,7 @@ uint32_t screenRateLevel0Size(const scene::Mesh& mesh, const scene::ChartVerdict
       break;
     }
   }
+  if (needed <= 0.0) return 0;
   const double size = std::sqrt(needed) / std::sqrt(2.0);
   const double log2Size = std::ceil(std::log2(std::max(size, 1.0)));
   return static_cast<uint32_t>(std::exp2(std::min(log2Size, 30.0)));

@@ -148,12 +148,12 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
       map.level0 = shadel::chooseLevel0Size(map.mesh, map.chart, shadel::meshTextureDensity(in.scene, map.mesh));
       it = newMaps.emplace(key, std::move(map)).first;
     }
-    // At least the screen's rate in the view that first shows it (every
-    // instance of the mesh): a level 0 capped below it magnifies the shading
-    // (thin bevels and small features vanish; OrientationTest 27 dB).
+    // Narrow triangles at least at the screen's rate in the view that first
+    // shows them (every instance of the mesh): a level 0 capped below it
+    // magnifies their shading away (thin bevels vanish; OrientationTest 27 dB).
     if (!settings_.screenRateLevel0) continue;
     const uint32_t screen = shadel::screenRateLevel0Size(it->second.mesh, it->second.chart, draws[d].world,
-                                                         in.viewProjection, in.width, in.height);
+                                                         in.viewProjection, in.width, in.height, it->second.level0);
     it->second.level0 = std::max(it->second.level0, std::min(screen, shadel::Level0Options{}.maxSize));
   }
   if (!newMaps.empty()) {
