@@ -1,6 +1,9 @@
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include <shadelgraph/shadel/chart_triangles.hpp>
 #include <shadelgraph/shadel/level0_resolution.hpp>
@@ -53,6 +56,58 @@ uint32_t chooseLevel0Size(const scene::Mesh& mesh, const scene::ChartVerdict& ch
   const double log2Size = std::round(std::log2(std::max(size, 1.0)));
   const auto rounded = static_cast<uint32_t>(std::exp2(std::min(log2Size, 30.0)));
   return std::clamp(rounded, std::bit_ceil(options.minSize), std::bit_floor(options.maxSize));
+}
+
+uint32_t screenRateLevel0Size(const scene::Mesh& mesh, const scene::ChartVerdict& chart, const glm::mat4& world,
+                              const glm::mat4& viewProjection, uint32_t width, uint32_t height, uint32_t level0,
+                              double narrowShadels, double coverage) {
+  if (chart.uvSet < 0 || width == 0 || height == 0) return 0;
+  const glm::dmat4 toClip = glm::dmat4(viewProjection) * glm::dmat4(world);
+  std::vector<std::pair<double, double>> densities;  // (pixels per UV unit squared, pixel area)
+  double visibleArea = 0.0;
+  for (const scene::Primitive& primitive : mesh.primitives) {
+    const std::vector<glm::vec2>& uvs = primitive.uvs(chart.uvSet);
+    if (uvs.empty()) continue;
+    for (size_t i = 0; i + 2 < primitive.indices.size(); i += 3) {
+      std::array<glm::dvec2, 3> pixel, uv;
+      bool behind = false;
+      glm::dvec2 lo(1e300), hi(-1e300);
+      for (int k = 0; k < 3; ++k) {
+        const uint32_t v = primitive.indices[i + size_t(k)];
+        const glm::dvec4 clip = toClip * glm::dvec4(glm::dvec3(primitive.positions[v]), 1.0);
+        if (clip.w <= 1e-9) behind = true;  // crosses the camera plane: its projection means nothing
+        pixel[size_t(k)] = (glm::dvec2(clip) / clip.w * 0.5 + 0.5) * glm::dvec2(width, height);
+        uv[size_t(k)] = glm::dvec2(uvs[v]);
+        lo = glm::min(lo, pixel[size_t(k)]);
+        hi = glm::max(hi, pixel[size_t(k)]);
+      }
+      if (behind || hi.x < 0.0 || hi.y < 0.0 || lo.x > width || lo.y > height) continue;
+      auto area = [](const std::array<glm::dvec2, 3>& p) {
+        return 0.5 * std::abs((p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y));
+      };
+      const double pixelArea = area(pixel), uvArea = area(uv);
+      if (pixelArea <= 0.0) continue;
+      const double longestEdge = std::max({glm::length(uv[1] - uv[0]), glm::length(uv[2] - uv[1]), glm::length(uv[0] - uv[2])});
+      const bool narrow = longestEdge <= 0.0 || 2.0 * uvArea / longestEdge * level0 < narrowShadels;
+      densities.emplace_back(!narrow ? 0.0 : uvArea > 0.0 ? pixelArea / uvArea : 1e300, pixelArea);
+      visibleArea += pixelArea;
+    }
+  }
+  if (densities.empty()) return 0;
+  // The density that `coverage` of the projected area needs at most.
+  std::sort(densities.begin(), densities.end());
+  double covered = 0.0, needed = densities.back().first;
+  for (const auto& [density, pixelArea] : densities) {
+    covered += pixelArea;
+    if (covered >= coverage * visibleArea) {
+      needed = density;
+      break;
+    }
+  }
+  if (needed <= 0.0) return 0;
+  const double size = std::sqrt(needed) / std::sqrt(2.0);
+  const double log2Size = std::ceil(std::log2(std::max(size, 1.0)));
+  return static_cast<uint32_t>(std::exp2(std::min(log2Size, 30.0)));
 }
 
 }  // namespace sg::shadel

@@ -15,7 +15,12 @@
 //   decides for untextured meshes;
 // - level 0 = the power of two nearest (in log2) to max(R_tex, R_tri),
 //   clamped to [minSize, maxSize].
+// - screen term (screenRateLevel0Size, taken as a floor by the caller): as
+//   many shadels as the view that first shows the object has pixels on it, so
+//   composite's level there is never clamped at a magnified level 0.
 #include <cstdint>
+
+#include <glm/glm.hpp>
 
 #include <shadelgraph/scene/scene.hpp>
 #include <shadelgraph/scene/uv_chart.hpp>
@@ -38,5 +43,22 @@ MeshTextureDensity meshTextureDensity(const scene::Scene& scene, const scene::Me
 
 uint32_t chooseLevel0Size(const scene::Mesh& mesh, const scene::ChartVerdict& chart, const MeshTextureDensity& texture,
                           const Level0Options& options = {});
+
+// The level 0 at which the mesh, drawn with `world` in a view of `viewProjection`
+// and width x height pixels, gets at least one shadel per pixel on its
+// *narrow* triangles: those whose smallest UV altitude spans fewer than
+// `narrowShadels` shadels at `level0` (a bevel, a crease strip: their shading
+// is lost when magnified, while a wide triangle's is only magnified like its
+// texture). Each narrow triangle asks for the square root of its pixel area
+// over its chart UV area, the others for nothing; the answer is what the
+// triangles covering `coverage` of the projected area ask at most (the rest
+// are slivers whose UV area is next to nothing), under composite's
+// nearest-level rounding (a level up to half a level magnified still reads
+// level 0): the power of two at or above R / sqrt(2). Triangles behind the
+// camera or outside the view count for nothing; 0 when none asks. Not
+// clamped: the caller takes it as a floor under chooseLevel0Size and clamps.
+uint32_t screenRateLevel0Size(const scene::Mesh& mesh, const scene::ChartVerdict& chart, const glm::mat4& world,
+                              const glm::mat4& viewProjection, uint32_t width, uint32_t height, uint32_t level0,
+                              double narrowShadels = 4.0, double coverage = 0.99);
 
 }  // namespace sg::shadel

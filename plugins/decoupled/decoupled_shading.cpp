@@ -140,11 +140,21 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
   std::map<std::pair<int, uint32_t>, NewMap> newMaps;
   for (const uint32_t d : toAllocate) {
     const std::pair<int, uint32_t> key{in.scene.instances[draws[d].instance].mesh, draws[d].primitive};
-    if (idMaps_.contains(key) || noIdMapRoom_.contains(key) || newMaps.contains(key)) continue;
-    NewMap map{primitiveMesh(in.scene.meshes[size_t(key.first)], key.second), {}, 0};
-    map.chart = scene::chooseShadingChart(map.mesh);
-    map.level0 = shadel::chooseLevel0Size(map.mesh, map.chart, shadel::meshTextureDensity(in.scene, map.mesh));
-    newMaps.emplace(key, std::move(map));
+    if (idMaps_.contains(key) || noIdMapRoom_.contains(key)) continue;
+    auto it = newMaps.find(key);
+    if (it == newMaps.end()) {
+      NewMap map{primitiveMesh(in.scene.meshes[size_t(key.first)], key.second), {}, 0};
+      map.chart = scene::chooseShadingChart(map.mesh);
+      map.level0 = shadel::chooseLevel0Size(map.mesh, map.chart, shadel::meshTextureDensity(in.scene, map.mesh));
+      it = newMaps.emplace(key, std::move(map)).first;
+    }
+    // Narrow triangles at least at the screen's rate in the view that first
+    // shows them (every instance of the mesh): a level 0 capped below it
+    // magnifies their shading away (thin bevels vanish; OrientationTest 27 dB).
+    if (!settings_.screenRateLevel0) continue;
+    const uint32_t screen = shadel::screenRateLevel0Size(it->second.mesh, it->second.chart, draws[d].world,
+                                                         in.viewProjection, in.width, in.height, it->second.level0);
+    it->second.level0 = std::max(it->second.level0, std::min(screen, shadel::Level0Options{}.maxSize));
   }
   if (!newMaps.empty()) {
     std::vector<uint32_t> sizes;

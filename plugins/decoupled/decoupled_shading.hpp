@@ -65,6 +65,10 @@ struct DecoupledSettings {
   // View-independent layers keep their values across shade frames (layer_rate.hpp); false: computed
   // whenever their chunk is shaded, as view-dependent ones (bench comparisons).
   bool keepViewIndependentLayers = true;
+  // Level 0 at least the screen's rate in the view that first shows each
+  // object (shadel::screenRateLevel0Size); false: from textures and triangle
+  // count only, as before (comparisons).
+  bool screenRateLevel0 = true;
   DebugView view = DebugView::Final;
   ShadeSpaceAdjusterOptions adjuster;
 };
