@@ -360,9 +360,9 @@ void measureCoverage(gpu::Device& device, const Scenes& scenes, const std::vecto
       }
       const auto stats = session->decoupled->stats();
       if (stats.objects == 0) {
-        const std::string why = "no object goes decoupled, even in mode decoupled";
-        rows.shadels.figures.push_back(missing(name, size.text, detail, why));
-        if (name != "default") rows.psnr.figures.push_back(missing(name, size.text, detail, why));
+        const std::string none = "no object goes decoupled, even in mode decoupled";
+        rows.shadels.figures.push_back(missing(name, size.text, detail, none));
+        if (name != "default") rows.psnr.figures.push_back(missing(name, size.text, detail, none));
         continue;
       }
       rows.shadels.figures.push_back({.scene = name, .size = size.text, .detail = detail,

@@ -89,13 +89,17 @@ TEST(BenchTargetsCli, WritesEveryRowOfTheTable) {
         EXPECT_TRUE(f["value"].is_null()) << ids[i] << " " << scene << ": " << f.dump();
         EXPECT_NE(f["note"].get<std::string>().find("not in --scenes"), std::string::npos) << f.dump();
       }
-      if (f["value"].is_number()) EXPECT_GT(f["value"].get<double>(), 0.0) << ids[i] << " " << scene;
+      if (f["value"].is_number()) {
+        EXPECT_GT(f["value"].get<double>(), 0.0) << ids[i] << " " << scene;
+      }
       EXPECT_EQ(f["size"], scene == "synthetic" ? "" : "64x36") << ids[i];
     }
   }
   // Duck is forward in auto mode (its chart is not unique): measured in mode decoupled, and said so.
   for (const auto& f : json["rows"][3]["figures"])
-    if (f["scene"] == "Duck") EXPECT_EQ(f["detail"], "mode decoupled (auto: forward)");
+    if (f["scene"] == "Duck") {
+      EXPECT_EQ(f["detail"], "mode decoupled (auto: forward)");
+    }
 }
 
 // A model absent from --assets is skipped with the path it was looked for at, and the run goes on.

@@ -187,8 +187,12 @@ TEST(CascadeFlicker, AWorldPointChangesOnlyAsTheBlendBandCrossesIt) {
                 "their largest change in one frame is %.3f of that (a fade over the band: %.3f, a pop: 1)\n",
                 b, b + 1, double(ends[b]), double(band), h.pixels, h.pixels ? h.changes / double(h.pixels) : 0.0,
                 h.ratio(), share);
-    if (b < 2) EXPECT_GT(h.pixels, 100u) << "boundary " << b << " crossed too few shadow edges";
-    if (h.pixels) EXPECT_LT(h.ratio(), 1.25 * share + 0.02) << "boundary " << b << " pops instead of fading";
+    if (b < 2) {
+      EXPECT_GT(h.pixels, 100u) << "boundary " << b << " crossed too few shadow edges";
+    }
+    if (h.pixels) {
+      EXPECT_LT(h.ratio(), 1.25 * share + 0.02) << "boundary " << b << " pops instead of fading";
+    }
   }
 }
 

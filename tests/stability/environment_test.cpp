@@ -89,7 +89,7 @@ TEST_P(EnvironmentLight, ForwardAndDecoupledAgree) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Materials, EnvironmentLight, ::testing::Values("gltf-pbr", "split-pbr"),
-                         [](const auto& info) { return std::string(info.param) == "gltf-pbr" ? "GltfPbr" : "SplitPbr"; });
+                         [](const auto& param) { return std::string(param.param) == "gltf-pbr" ? "GltfPbr" : "SplitPbr"; });
 
 // The image's orientation reaches the shading: a white sphere under a blue sky
 // over brown ground (no other light) is bluish on top and brownish below, in both paths.
