@@ -34,7 +34,7 @@ gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView, bool alp
 }
 
 graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle color,
-                                   graph::ResourceHandle depth) {
+                                   graph::ResourceHandle depth, std::optional<VkClearColorValue> clear) {
   // Composite reads exactly the footprint shadel-mark marked for its filter:
   // any other filter would read unmarked shadels (misses).
   if (frame.markedFilter >= 0 && frame.markedFilter != frame.filter)
@@ -43,7 +43,7 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
   // Each level's footprint is read from one chunk tile: fill the tiles' gutters first.
   addShadelGutter(graph, frame);
   auto& pass = graph.addPass("composite", graph::QueueClass::Graphics);
-  pass.read(color, graph::Access::ColorAttachmentRead);
+  if (!clear) pass.read(color, graph::Access::ColorAttachmentRead);
   pass.read(depth, graph::Access::DepthRead);
   pass.read(frame.remap, graph::Access::StorageRead);
   pass.read(frame.slots, graph::Access::StorageRead);
@@ -52,8 +52,9 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);  // misses
   color = pass.write(color, graph::Access::ColorAttachment);
   // Culled draws (instance count 0 in the frame's draw commands) are skipped.
-  pass.execute([indirect = render::readDrawCommands(pass, frame.view).indirect, frame, color, depth](PassContext& ctx) {
-    ctx.beginRendering({ColorTarget{color}}, DepthTarget{depth, {}, true}, true);
+  pass.execute([indirect = render::readDrawCommands(pass, frame.view).indirect, frame, color, depth,
+                clear](PassContext& ctx) {
+    ctx.beginRendering({ColorTarget{color, clear}}, DepthTarget{depth, {}, true}, true);
     drawDecoupled(ctx, frame, kBindings, indirect, [&](bool alphaTest) -> const gpu::Pipeline& {
       const std::string variant =
           std::to_string(frame.filter) + (frame.levelView ? "/level" : "") + (alphaTest ? "/alpha-test" : "");

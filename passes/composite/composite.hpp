@@ -1,4 +1,6 @@
 #pragma once
+#include <optional>
+
 #include <shadelgraph/graph/render_graph.hpp>
 #include <decoupled_frame.hpp>
 
@@ -6,8 +8,9 @@ namespace sg::passes {
 
 // Draws the decoupled objects with their shaded samples (manual trilinear
 // through the remap table) over the forward pass's colour. Returns the colour.
+// `clear`: the colour is still unwritten (no forward pass drew before it), clear it first.
 graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle color,
-                                   graph::ResourceHandle depth);
+                                   graph::ResourceHandle depth, std::optional<VkClearColorValue> clear = {});
 // filter: 0 point, 1 bilinear, 2 trilinear; levelView shows the detail level
 // instead; alphaTest: the variant for alpha-mask objects, `materialSet` (the
 // scene material) its set 1.

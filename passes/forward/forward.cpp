@@ -1,8 +1,19 @@
 #include "forward.hpp"
 
+#include <shadelgraph/render/frame_uniforms.hpp>
+
 #include "forward_material.hpp"
 
 namespace sg::passes {
+
+glm::vec3 hdrBackground(std::span<const scene::Light> lights) {
+  return glm::vec3(0.42f, 0.55f, 0.75f) * render::skyScale(lights);
+}
+
+std::optional<VkClearColorValue> clearIfUnwritten(graph::ResourceHandle color, glm::vec3 background) {
+  if (color.version != 0) return std::nullopt;
+  return VkClearColorValue{{background.r, background.g, background.b, 1.0f}};
+}
 
 ForwardTargets addForwardOpaque(graph::RenderGraph& graph, const render::SceneView& view, ForwardTargets targets,
                                 glm::vec3 background) {

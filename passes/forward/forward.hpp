@@ -1,4 +1,7 @@
 #pragma once
+#include <optional>
+#include <span>
+
 #include <glm/glm.hpp>
 
 #include <shadelgraph/graph/render_graph.hpp>
@@ -11,10 +14,18 @@ struct ForwardTargets {
   graph::ResourceHandle depth;
 };
 
+// The HDR colour where no object is: the analytic sky's horizon-ish blue,
+// brightened with it (render::skyScale; a sunlit sky is thousands of cd/m^2).
+glm::vec3 hdrBackground(std::span<const scene::Light> lights);
+// scene.hdr's first write clears it to `background`: the colour is created
+// unwritten (version 0) when forward-opaque has nothing to draw, and then the
+// first pass writing it (alpha-mask, composite) clears instead of loading.
+// Empty: the colour has content, load it.
+std::optional<VkClearColorValue> clearIfUnwritten(graph::ResourceHandle color, glm::vec3 background);
+
 // Opaque objects with their glTF material (graphics), against the z-prepass
 // depth; clears the colour.
-// `background`: the HDR colour where no object is (the analytic sky's horizon-ish blue, in cd/m^2).
 ForwardTargets addForwardOpaque(graph::RenderGraph& graph, const render::SceneView& view, ForwardTargets targets,
-                                glm::vec3 background = {0.42f, 0.55f, 0.75f});
+                                glm::vec3 background);
 
 }  // namespace sg::passes

@@ -4,6 +4,7 @@
 
 #include "composite/composite.hpp"
 #include "debug-views/debug_views.hpp"
+#include "forward/forward.hpp"
 #include "shadel-allocate/shadel_allocate.hpp"
 #include "shadel-clear/shadel_clear.hpp"
 #include "shadel-mark/shadel_mark.hpp"
@@ -120,8 +121,10 @@ void registerDecoupledPackage(plugin::Registry& registry) {
                       DecoupledShading& d = shading(ctx);
                       if (!d.shading()) return;
                       passes::DecoupledFrame& frame = d.frame(ctx);
-                      ctx.write("scene.hdr", passes::addComposite(ctx.graph(), frame, ctx.read("scene.hdr"),
-                                                                  ctx.read("scene.depth")));
+                      const auto hdr = ctx.read("scene.hdr");
+                      ctx.write("scene.hdr", passes::addComposite(ctx.graph(), frame, hdr, ctx.read("scene.depth"),
+                                                                  passes::clearIfUnwritten(
+                                                                      hdr, passes::hdrBackground(ctx.inputs().scene.lights))));
                       d.publish(ctx, {"shadel.shaded", "shadel.counters"});
                     }});
   registry.addPass({.name = "counters-readback",

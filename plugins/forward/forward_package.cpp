@@ -72,6 +72,8 @@ graph::ResourceHandle culledZPrepass(FrameContext& ctx, render::DrawCulling& cul
   return passes::addZPrepassLate(ctx.graph(), view, depth, cull.late, tested);
 }
 
+glm::vec3 background(FrameContext& ctx) { return passes::hdrBackground(ctx.inputs().scene.lights); }
+
 passes::ForwardTargets targets(FrameContext& ctx) { return {ctx.read("scene.hdr"), ctx.read("scene.depth")}; }
 
 void publish(FrameContext& ctx, const passes::ForwardTargets& t) {
@@ -195,15 +197,23 @@ void registerForwardPackage(plugin::Registry& registry) {
                                     "point and spot lights with a range a frame may have without culling (docs/many-lights.md)"}},
                     .declare = declareLightCull});
   registry.addPass({.name = "forward-opaque",
-                    .description = "opaque objects shaded forward (their material's fragment variant); clears the HDR colour",
+                    .description = "opaque objects shaded forward (their material's fragment variant); clears the HDR "
+                                   "colour (with none, in a frame with decoupled objects, no pass: the first pass "
+                                   "drawing into the colour clears it)",
                     .reads = {plugin::kForwardDrawsResource, "scene.depth"},
                     .writes = {"scene.hdr", "scene.depth"},
                     .declare = [](FrameContext& ctx) {
                       const passes::ForwardTargets t{ctx.graph().createImage("hdr", {.format = graph::Format::RGBA16F}),
                                                      ctx.read("scene.depth")};
-                      // The background follows the analytic sky's luminance (a sunlit sky is thousands of cd/m^2).
-                      const glm::vec3 background = glm::vec3(0.42f, 0.55f, 0.75f) * render::skyScale(ctx.inputs().scene.lights);
-                      publish(ctx, passes::addForwardOpaque(ctx.graph(), ctx.view(ctx.draws().forward), t, background));
+                      const auto view = ctx.view(ctx.draws().forward);
+                      // A pass that only clears would keep the colour alive from here, during
+                      // the decoupled objects' shading on async compute, so it could share
+                      // memory with none of their transients: composite clears it instead.
+                      if (!passes::hasAlphaMode(view, scene::AlphaMode::Opaque) && !ctx.draws().decoupled.empty()) {
+                        publish(ctx, t);  // unwritten: see passes::clearIfUnwritten
+                        return;
+                      }
+                      publish(ctx, passes::addForwardOpaque(ctx.graph(), view, t, background(ctx)));
                     }});
   registry.addPass({.name = "alpha-mask",
                     .description = "alpha-tested objects (only when a visible object has such a material)",
@@ -212,7 +222,8 @@ void registerForwardPackage(plugin::Registry& registry) {
                     .declare = [](FrameContext& ctx) {
                       const auto view = ctx.view(ctx.draws().forward);
                       if (passes::hasAlphaMode(view, scene::AlphaMode::Mask))
-                        publish(ctx, passes::addAlphaMask(ctx.graph(), view, targets(ctx)));
+                        publish(ctx, passes::addAlphaMask(ctx.graph(), view, targets(ctx),
+                                                          passes::clearIfUnwritten(ctx.read("scene.hdr"), background(ctx))));
                     }});
   registry.addPass({.name = "alpha-blend",
                     .description = "blended objects back to front (only when a visible object has such a material)",

@@ -48,7 +48,8 @@ TEST(Cli, RenderWritesANonBlankPngAndATimingTable) {
   std::filesystem::remove(png);
   auto r = run("render -o " + png.string() + " --size 160x90 --frames 1");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  for (const char* pass : {"z-prepass", "forward-opaque", "exposure", "tonemap", "GPU ms"})
+  // The default scene is decoupled: no object is shaded forward, so no forward-opaque.
+  for (const char* pass : {"z-prepass", "composite", "exposure", "tonemap", "GPU ms"})
     EXPECT_NE(r.output.find(pass), std::string::npos) << pass << " missing from:\n" << r.output;
   const auto image = sg::image::readPng(png);
   ASSERT_EQ(image.width, 160u);
@@ -87,7 +88,7 @@ TEST(Cli, GraphJsonListsPassesResourcesBarriersAndWaits) {
     EXPECT_TRUE(p["barriers"].is_array());
     EXPECT_TRUE(p["waits"].is_array());
   }
-  EXPECT_TRUE(names.count("forward-opaque"));
+  EXPECT_TRUE(names.count("composite"));  // the default scene is decoupled
   // The default scene has no masked or blended material: no pass for them.
   EXPECT_FALSE(names.count("alpha-blend"));
   EXPECT_FALSE(names.count("alpha-mask"));

@@ -108,6 +108,17 @@ TEST(FrameCli, ThePickPassIsInTheFrameOnlyWhileAPickIsPending) {
   EXPECT_EQ(outside.err, "shadelgraph: error: --pick x 96: must be at most 95\n");
 }
 
+// The frame holds only the passes the scene needs: with no object shaded
+// forward, forward-opaque (it would only clear the colour) is not in the
+// decoupled frame and composite clears instead; one forward object brings it back.
+TEST(FrameCli, ForwardOpaqueIsInTheFrameOnlyWithAnObjectShadedForward) {
+  const auto decoupled = keptPasses("--mode decoupled");
+  EXPECT_FALSE(decoupled.count("forward-opaque"));
+  EXPECT_TRUE(decoupled.count("composite"));
+  EXPECT_TRUE(keptPasses("--mode decoupled --object-mode \"gold sphere=forward\"").count("forward-opaque"));
+  EXPECT_TRUE(keptPasses("--mode forward").count("forward-opaque"));
+}
+
 TEST(FrameCli, TheForwardFrameHoldsNoDecoupledPass) {
   const auto kept = keptPasses("--mode decoupled --frame-graph forward");
   EXPECT_TRUE(kept.count("forward-opaque"));

@@ -176,12 +176,14 @@ std::vector<Row> matrix() {
 struct Effects {
   Names passes, resources;
   std::string atlas;
+  bool forwardOpaque = false;
 };
 Effects effectsOf(const nlohmann::json& plan) {
   Effects e;
   for (const auto& p : plan["passes"]) {
     const auto name = p["name"].get<std::string>();
     if (!p["culled"].get<bool>() && kEffectPasses.count(name)) e.passes.insert(name);
+    if (!p["culled"].get<bool>() && name == "forward-opaque") e.forwardOpaque = true;
   }
   for (const auto& r : plan["resources"]) {
     const auto name = r["name"].get<std::string>();
@@ -221,6 +223,9 @@ TEST_P(EffectMatrix, TheFrameHoldsExactlyTheEffectsTheSceneCallsFor) {
   EXPECT_EQ(got.resources, c.row.resources)
       << "got " << joined(got.resources) << ", expected " << joined(c.row.resources);
   EXPECT_EQ(got.atlas, c.row.atlas) << "the shadow atlas's size";
+  // Decoupled, no row has an opaque object shaded forward (blended ones are,
+  // drawn by alpha-blend): forward-opaque would draw nothing, composite clears.
+  EXPECT_EQ(got.forwardOpaque, forward) << "forward-opaque";
 }
 
 // The prefilter is one-time: after a frame has run it, the next frames hold
