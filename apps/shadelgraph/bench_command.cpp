@@ -243,7 +243,7 @@ nlohmann::json benchScene(gpu::Device& device, const std::string& scenePath, uin
                        {"frame_ms_samples", frameMs[c]},
                        {"pass_ms_median", passes},
                        {"shadels_per_pixel", stats.counters.coveredPixels
-                                                 ? 64.0 * stats.counters.chunksAllocated / stats.counters.coveredPixels
+                                                 ? double(plugins::shadelsStored(stats.counters)) / stats.counters.coveredPixels
                                                  : 0.0},
                        {"shade_memory_bytes", configs[c].decoupled ? stats.storageBytes + stats.remapBytes + stats.idMapBytes : 0},
                        {"overflow_chunks", stats.counters.overflowChunks},

@@ -198,7 +198,7 @@ nlohmann::json benchMaterials(gpu::Device& device, const std::string& scenePath,
            {"transient_bytes", lastFrame[c].transientBytes},
            {"shade_memory_bytes", config.decoupled ? stats.storageBytes + stats.remapBytes + stats.idMapBytes : 0},
            {"shadels_per_pixel", stats.counters.coveredPixels
-                                     ? 64.0 * stats.counters.chunksAllocated / stats.counters.coveredPixels
+                                     ? double(plugins::shadelsStored(stats.counters)) / stats.counters.coveredPixels
                                      : 0.0},
            {"support_chunks", stats.counters.supportChunks},
            {"overflow_chunks", stats.counters.overflowChunks},

@@ -73,6 +73,17 @@ vec2 sgShadingUv(SgVertex v, SgDecoupledObject o) { return (o.shadingUvSet == 1u
 uint sgWorkGroupIndex() { return gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x; }
 bool sgWorkGroupInList() { return sgWorkGroupIndex() < work[sgObjectChunksSlot(sgPush.objectIndex)]; }
 
+// The shadels of this workgroup's chunk that composite reads (shadel-mark's
+// mask, bit = texel index), or all 64: without masks this frame, and for an
+// object whose material reads a neighbourhood (support-expand grows whole
+// chunks; their neighbours' shadels must exist).
+layout(set = 0, binding = kBindShadelMasks, std430) readonly buffer ShadelMasks { uint64_t sgShadelMasks[]; };
+uint64_t sgChunkShadelMask() {
+  if (sgPush.shadelMasks == 0u || objects[sgPush.objectIndex].supportChunks != 0u) return ~uint64_t(0);
+  uint item = sgWorkItemSlot(work[sgObjectOffsetSlot(sgPush.objectIndex)] + sgWorkGroupIndex());
+  return sgShadelMasks[remap[work[item]].storageBase + work[item + 1u]];
+}
+
 // Finds this invocation's shadel (sgShadel) and, if it lies on the object,
 // its surface point. False: write nothing meaningful (the layer gets vec4(0)).
 bool sgBeginShadel(out Surface s) {
