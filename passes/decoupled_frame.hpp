@@ -58,7 +58,8 @@ struct DecoupledFrame {
   // layer-shade shades only those, except for objects whose material reads a
   // neighbourhood (support-expand: whole chunks). Off (whole chunks) where a
   // shadel's stored value may be served in a later frame: shading kept between
-  // frames, persistent or view-independent layers; and for bench --baseline.
+  // frames, persistent or view-independent layers; for bench --baseline and
+  // the sheet debug view.
   bool shadelMasks = false;
   graph::ResourceHandle masks;  // valid when shadelMasks, from shadel-mark on
 };
