@@ -44,6 +44,8 @@ void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const Decoup
       // Without stamps something must be bound; the shaders do not touch it (params.stampsBound 0).
       case kBindShadeStamps: buffer(ctx.buffer(f.stamps.valid() ? f.stamps : f.work).handle()); break;
       case kBindChunkSlots: buffer(ctx.buffer(f.slots).handle()); break;
+      // Without masks something must be bound; the shaders do not touch it (shadelMasks 0).
+      case kBindShadelMasks: buffer(ctx.buffer(f.masks.valid() ? f.masks : f.work).handle()); break;
       case kBindCounters: buffer(ctx.buffer(f.counters).handle()); break;
       case kBindWork: buffer(ctx.buffer(f.work).handle()); break;
       case kBindArgs: buffer(ctx.buffer(f.args).handle()); break;

@@ -53,6 +53,15 @@ struct DecoupledFrame {
   // computed (u32 raster frame per physical chunk); invalid otherwise
   // (params.stampsBound 0: not read).
   graph::ResourceHandle stamps;
+  // Shadel masks (issue 14): shadel-mark also marks which shadels of each
+  // chunk composite's footprints read (one 64-bit mask per chunk slot), and
+  // layer-shade shades only those, except for objects whose material reads a
+  // neighbourhood (support-expand: whole chunks). Off (whole chunks) where a
+  // shadel's stored value may be served in a later frame: shading kept between
+  // frames, persistent or view-independent layers; for bench --baseline and
+  // the sheet debug view.
+  bool shadelMasks = false;
+  graph::ResourceHandle masks;  // valid when shadelMasks, from shadel-mark on
 };
 
 // The define shadel-mark and composite are both compiled with: the filter

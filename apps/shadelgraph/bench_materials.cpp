@@ -199,9 +199,9 @@ nlohmann::json benchMaterials(gpu::Device& device, const std::string& scenePath,
            {"gpu_ms_samples", timed[c].gpuMs},
            {"pass_ms_median", timed[c].passMedians()},
            {"layer_shade_ms_median", median(timed[c].layerShadeMs)},
-           {"shadels_shaded", config.decoupled ? 64ull * stats.counters.chunksShaded : 0ull},
+           {"shadels_shaded", config.decoupled ? plugins::shadelsShaded(stats.counters) : 0ull},
            {"layer_shade_ns_per_shadel",
-            config.decoupled ? layerShadeNsPerShadel(median(timed[c].layerShadeMs), 64ull * stats.counters.chunksShaded)
+            config.decoupled ? layerShadeNsPerShadel(median(timed[c].layerShadeMs), plugins::shadelsShaded(stats.counters))
                              : 0.0},
            {"layer_dispatches", stats.layerDispatches},
            {"layer_reuse", timed[c].reuseMedians()},

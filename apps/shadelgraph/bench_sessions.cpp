@@ -25,7 +25,7 @@ double BenchSession::passMedian(const std::string& pass) const {
 nlohmann::json BenchSession::passMedians() const { return medians(passMs); }
 
 double shadelsPerPixel(const plugins::DecoupledStats& stats) {
-  return stats.counters.coveredPixels ? 64.0 * stats.counters.chunksAllocated / stats.counters.coveredPixels : 0.0;
+  return stats.counters.coveredPixels ? double(plugins::shadelsStored(stats.counters)) / stats.counters.coveredPixels : 0.0;
 }
 
 void alternateFrames(const std::vector<BenchSession*>& sessions, int repetitions) {

@@ -50,7 +50,7 @@ const std::vector<std::string> kCoverageSizes{"640x360", "1280x720"};
 const std::vector<std::string> kTimedScenes{"default", "DamagedHelmet"};
 const std::vector<std::string> kCoverageNamed{"default", "DamagedHelmet", "Duck", "Suzanne"};
 const std::vector<std::string> kGeometryModels{"MetalRoughSpheresNoTextures", "2CylinderEngine", "ReciprocatingSaw"};
-const std::vector<std::string> kShadeSpacePasses{"shadel-clear", "shadel-mark", "shadel-allocate", "work-aggregate",
+const std::vector<std::string> kShadeSpacePasses{"shadel-clear", "shadel-mask-clear", "shadel-mark", "shadel-allocate", "work-aggregate",
                                                  "support-expand"};
 const std::vector<std::string> kCullScenes{"cull-base", "cull-hidden", "cull-offscreen"};
 const std::vector<std::string> kAliasedMaterials{"skin", "bumps"};
@@ -254,7 +254,7 @@ void measureTimed(gpu::Device& device, const Scenes& scenes, const Size& size, i
   }
   if (empty) {
     const auto stats = empty->decoupled->stats();
-    const double shaded = 64.0 * double(stats.counters.chunksShaded);
+    const double shaded = double(plugins::shadelsShaded(stats.counters));
     const double layerShade = empty->passMedian("layer-shade");
     TargetFigure f{.scene = "default", .size = size.text, .detail = kEmptyMaterial,
                    .context = {{"layer_shade_ms", layerShade}, {"shadels_shaded", shaded}}};

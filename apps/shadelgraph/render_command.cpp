@@ -46,7 +46,7 @@ void printTable(const gpu::FrameTimings& t, uint64_t transientBytes, const gpu::
 void writeStats(const std::string& path, const AppSession& session, const render::FrameResult& frame,
                 const std::vector<double>& framesMs, const gpu::MemoryTotals& memory) {
   const auto d = session.decoupled->stats();
-  const uint64_t shaded = uint64_t(d.counters.chunksShaded) * 64;
+  const uint64_t shaded = plugins::shadelsShaded(d.counters);  // the shadel masks' skipped ones not counted
   nlohmann::json passMs = nlohmann::json::object(), passCpuMs = nlohmann::json::object();
   for (const auto& p : frame.timings.passes) {
     passMs[p.name] = p.gpuMs;
@@ -97,9 +97,11 @@ void writeStats(const std::string& path, const AppSession& session, const render
                        {"shadels_marked", uint64_t(d.counters.chunksMarked) * 64},
                        {"shadels_allocated", uint64_t(d.counters.chunksAllocated) * 64},
                        {"shadels_shaded", shaded},
+                       // Of the shaded chunks, the shadels no pixel reads (shadel masks): not shaded.
+                       {"shadels_skipped", d.counters.shadelsSkipped},
                        // Stored (shaded or reused) per covered pixel: at shade rate 1 all are shaded.
                        {"shadels_per_pixel", d.counters.coveredPixels
-                                                 ? 64.0 * d.counters.chunksAllocated / d.counters.coveredPixels
+                                                 ? double(plugins::shadelsStored(d.counters)) / d.counters.coveredPixels
                                                  : 0.0},
                        {"shadels_reused_last_frame", uint64_t(d.counters.chunksReused) * 64},
                        // Over all --frames: raster frames, shade frames among them, shadels the
@@ -227,7 +229,7 @@ void runRender(const RenderArgs& args) {
                 "%.2f shadels per covered pixel\n",
                 double(d.bias), d.counters.chunksMarked, d.counters.chunksAllocated, d.capacityChunks,
                 d.counters.overflowChunks, d.counters.compositeMisses,
-                d.counters.coveredPixels ? 64.0 * d.counters.chunksAllocated / d.counters.coveredPixels : 0.0);
+                d.counters.coveredPixels ? double(plugins::shadelsStored(d.counters)) / d.counters.coveredPixels : 0.0);
   if (d.objects && args.shadeBudget)
     std::printf("shade budget %.2f ms (%.4f ms a chunk): last frame %u chunks shaded (%u for their age), %u left "
                 "stale, oldest %u frames\n",

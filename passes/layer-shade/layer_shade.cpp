@@ -15,7 +15,8 @@ namespace {
 
 constexpr uint32_t kBaseBindings[] = {kBindFrame,    kBindParams,   kBindObjects,  kBindShadelInstances,
                                       kBindLevelRects, kBindRemap,  kBindCounters, kBindWork,
-                                      kBindIdMaps,   kBindVertices, kBindIndices, kBindChunkSlots};
+                                      kBindIdMaps,   kBindVertices, kBindIndices, kBindChunkSlots,
+                                      kBindShadelMasks};
 
 // Compiled the first time a frame dispatches the layer; a GLSL error names the
 // layer, its plugin and the author's file:line.
@@ -59,6 +60,8 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
   pass.read(frame.args, graph::Access::IndirectArgs);
   pass.read(frame.remap, graph::Access::StorageRead);
   pass.read(frame.slots, graph::Access::StorageRead);
+  const bool masks = frame.shadelMasks && frame.masks.valid();
+  if (masks) pass.read(frame.masks, graph::Access::StorageRead);
   render::readShadowMaps(pass, frame.view, graph::ShaderStage::Compute);
   render::readSceneGeometry(pass, frame.view, graph::Access::StorageRead, graph::ShaderStage::Compute);
   render::readEnvironment(pass, frame.view, graph::ShaderStage::Compute);
@@ -75,12 +78,15 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
     auto [it, added] = written.try_emplace(step.output);
     if (added) it->second = pass.write(step.output, graph::Access::StorageWrite);
   }
-  if (persistent) {
-    frame.counters = pass.write(frame.counters, graph::Access::StorageWrite);  // layer_reuse
+  // The steps that write the shaded colour count the shadels the masks leave out.
+  std::vector<bool> counts;
+  for (const auto& step : steps) counts.push_back(masks && step.output == frame.shadedColor);
+  if (persistent || masks) {
+    frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);  // layer_reuse, shadelsSkipped
   }
   for (auto& step : steps) step.output = written.at(step.output);
 
-  pass.execute([frame, steps, history](PassContext& ctx) {
+  pass.execute([frame, steps, history, masks, counts](PassContext& ctx) {
     const VkBuffer args = ctx.buffer(frame.args).handle();
     const auto& draws = frame.view.scene.draws();
     const auto sampled = [&](uint32_t binding, graph::ResourceHandle image) {
@@ -88,7 +94,8 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
                                                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                                                              ctx.device().nearestSampler()}};
     };
-    for (const auto& step : steps) {
+    for (size_t stepIndex = 0; stepIndex < steps.size(); ++stepIndex) {
+      const LayerShadeStep& step = steps[stepIndex];
       const auto& pipeline = layerPipeline(ctx, frame, *step.layer);
       std::vector<gpu::DescriptorWrite> writes{
           {kBindLayerOutput, gpu::ImageBinding{ctx.image(step.output).view(), VK_IMAGE_LAYOUT_GENERAL, VK_NULL_HANDLE}},
@@ -111,7 +118,8 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
         VkDescriptorSet material = frame.view.scene.materialSet(draws[frame.objectDraws[object]].material);
         vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout(), 1, 1, &material, 0,
                                 nullptr);
-        const SgLayerShadePush push{object, step.persistentSlot, history.valid ? 1u : 0u};
+        const SgLayerShadePush push{object, step.persistentSlot, history.valid ? 1u : 0u, masks ? 1u : 0u,
+                                    counts[stepIndex] ? 1u : 0u};
         vkCmdPushConstants(ctx.cmd(), pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof push, &push);
         vkCmdDispatchIndirect(ctx.cmd(), args, VkDeviceSize(12) * object);
       }

@@ -60,7 +60,18 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
   render::includeLayerSource(out, layer);
   out << "shared uint sgReusedCount, sgComputedCount;\n"
       << "void main() {\n"
-      << "  if (!sgWorkGroupInList()) return;  // the surplus of a dispatch's last row\n"
+      << "  if (!sgWorkGroupInList()) return;  // the surplus of a dispatch's last row\n";
+  if (!layer.keepsValues()) {
+    // Only the shadels composite reads (shadel masks; never with kept values,
+    // whose stored shadels may be served later). The last layer counts those it leaves out.
+    out << "  uint64_t sgMask = sgChunkShadelMask();\n"
+        << "  if (sgPush.countSkipped != 0u && gl_LocalInvocationIndex == 0u && sgMask != ~uint64_t(0)) {\n"
+        << "    uvec2 sgHalves = unpackUint2x32(sgMask);\n"
+        << "    atomicAdd(counters.shadelsSkipped, 64u - uint(bitCount(sgHalves.x) + bitCount(sgHalves.y)));\n"
+        << "  }\n"
+        << "  if (!sgIsChunkMarked(sgMask, gl_LocalInvocationIndex)) return;\n";
+  }
+  out
       << "  Surface s;\n"
       << "  bool onSurface = sgBeginShadel(s);\n"
       << "  vec4 value = vec4(0.0);\n";

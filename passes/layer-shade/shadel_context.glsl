@@ -139,6 +139,17 @@ SgChunkSetup sgChunkSetup() {
 
 vec2 sgShadingUv(SgVertex v, SgChunkSetup c) { return (c.shadingUvSet == 1u ? v.uv01.zw : v.uv01.xy) - c.tileOffset; }
 
+// The shadels of this workgroup's chunk that composite reads (shadel-mark's
+// mask, bit = texel index), or all 64: without masks this frame, and for an
+// object whose material reads a neighbourhood (support-expand grows whole
+// chunks; their neighbours' shadels must exist).
+layout(set = 0, binding = kBindShadelMasks, std430) readonly buffer ShadelMasks { uint64_t sgShadelMasks[]; };
+uint64_t sgChunkShadelMask() {
+  if (sgPush.shadelMasks == 0u || objects[sgPush.objectIndex].supportChunks != 0u) return ~uint64_t(0);
+  uint item = sgWorkItemSlot(work[sgObjectOffsetSlot(sgPush.objectIndex)] + sgWorkGroupIndex());
+  return sgShadelMasks[remap[work[item]].storageBase + work[item + 1u]];
+}
+
 // Finds this invocation's shadel (sgShadel) and, if it lies on the object,
 // its surface point. False: write nothing meaningful (the layer gets vec4(0)).
 bool sgBeginShadel(out Surface s) {

@@ -39,5 +39,6 @@ void main() {
     counters.supportChunks = 0u;
     counters.staleMaxAge = 0u;
     counters.chunksRefreshed = 0u;
+    counters.shadelsSkipped = 0u;
   }
 }

@@ -1,6 +1,8 @@
 #include "shadel_mark.hpp"
 
+#include <algorithm>
 #include <array>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -8,12 +10,18 @@
 
 namespace sg::passes {
 namespace {
+constexpr uint32_t kChunkSlotsPerEntry = 64;  // chunk slots per owned entry, one mask each
 constexpr std::array kBindings{kBindFrame, kBindParams, kBindObjects, kBindShadelInstances, kBindLevelRects, kBindRemap};
+constexpr std::array kMaskBindings{kBindFrame,      kBindParams, kBindObjects,     kBindShadelInstances,
+                                   kBindLevelRects, kBindRemap,  kBindShadelMasks};
 }  // namespace
 
-gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline, bool alphaTest, VkDescriptorSetLayout materialSet) {
+gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline, bool alphaTest, VkDescriptorSetLayout materialSet,
+                                             bool shadelMasks) {
   std::vector<std::pair<std::string, std::string>> defines{filterDefine(filter)};
   if (baseline) defines.emplace_back("SG_MARK_BASELINE", "1");
+  if (shadelMasks) defines.emplace_back("SG_SHADEL_MASKS", "1");
+  const std::span<const uint32_t> bindings = shadelMasks ? std::span<const uint32_t>(kMaskBindings) : kBindings;
   std::vector<std::pair<std::string, std::string>> vertexDefines;
   if (alphaTest) {
     defines.emplace_back("SG_ALPHA_TEST", "1");
@@ -21,8 +29,8 @@ gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline, bool alp
   }
   return {.vertex = {.path = "passes/shadel-mark/shadel_mark.vert", .defines = vertexDefines},
           .fragment = {.path = "passes/shadel-mark/shadel_mark.frag", .defines = defines},
-          .layout = alphaTest ? decoupledLayout(kBindings, false, sizeof(render::ObjectConstants), {materialSet})
-                              : decoupledLayout(kBindings, false, sizeof(render::ObjectConstants)),
+          .layout = alphaTest ? decoupledLayout(bindings, false, sizeof(render::ObjectConstants), {materialSet})
+                              : decoupledLayout(bindings, false, sizeof(render::ObjectConstants)),
           .vertexInput = render::sceneVertexInput(),
           .depthFormat = VK_FORMAT_D32_SFLOAT,
           .depthTest = true,
@@ -30,19 +38,34 @@ gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline, bool alp
 }
 
 void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle depth) {
+  const bool masks = frame.shadelMasks && !frame.baseline;
+  if (masks) {
+    // One 64-bit mask per chunk slot (64 per owned entry), zeroed every frame.
+    frame.masks = graph.createBuffer(
+        "shadel masks", {.size = sizeof(uint64_t) * kChunkSlotsPerEntry * std::max(frame.ownedEntryCount, 1u)});
+    auto& clear = graph.addPass("shadel-mask-clear", graph::QueueClass::Graphics, graph::PassKind::Transfer);
+    frame.masks = clear.write(frame.masks, graph::Access::TransferDst);
+    clear.execute([buffer = frame.masks](PassContext& ctx) {
+      vkCmdFillBuffer(ctx.cmd(), ctx.buffer(buffer).handle(), 0, VK_WHOLE_SIZE, 0);
+    });
+  } else {
+    frame.masks = {};
+  }
   auto& pass = graph.addPass("shadel-mark", graph::QueueClass::Graphics);
   pass.read(depth, graph::Access::DepthRead);
   render::readSceneGeometry(pass, frame.view);
   frame.remap = pass.write(frame.remap, graph::Access::StorageReadWrite, graph::ShaderStage::Fragment);
+  if (masks) frame.masks = pass.write(frame.masks, graph::Access::StorageReadWrite, graph::ShaderStage::Fragment);
   frame.markedFilter = frame.filter;
   // Culled draws (instance count 0 in the frame's draw commands) are skipped.
-  pass.execute([indirect = render::readDrawCommands(pass, frame.view).indirect, frame, depth](PassContext& ctx) {
+  pass.execute([indirect = render::readDrawCommands(pass, frame.view).indirect, frame, depth, masks](PassContext& ctx) {
     ctx.beginRendering({}, DepthTarget{depth, {}, true}, true);
-    drawDecoupled(ctx, frame, kBindings, indirect, [&](bool alphaTest) -> const gpu::Pipeline& {
-      const std::string variant =
-          std::to_string(frame.filter) + (frame.baseline ? "/baseline" : "") + (alphaTest ? "/alpha-test" : "");
+    const std::span<const uint32_t> bindings = masks ? std::span<const uint32_t>(kMaskBindings) : kBindings;
+    drawDecoupled(ctx, frame, bindings, indirect, [&](bool alphaTest) -> const gpu::Pipeline& {
+      const std::string variant = std::to_string(frame.filter) + (frame.baseline ? "/baseline" : "") +
+                                  (alphaTest ? "/alpha-test" : "") + (masks ? "/masks" : "");
       return ctx.device().pipeline("shadel-mark/" + variant, [&] {
-        return shadelMarkPipeline(frame.filter, frame.baseline, alphaTest, frame.view.scene.materialSetLayout());
+        return shadelMarkPipeline(frame.filter, frame.baseline, alphaTest, frame.view.scene.materialSetLayout(), masks);
       });
     });
     ctx.endRendering();

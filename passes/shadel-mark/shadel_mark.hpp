@@ -6,12 +6,16 @@ namespace sg::passes {
 
 // Rasterizes the decoupled objects against the z-prepass depth (early test,
 // no colour) and marks the chunks of the shadels composite will read with
-// frame.filter (recorded in frame.markedFilter).
+// frame.filter (recorded in frame.markedFilter). With frame.shadelMasks it
+// creates frame.masks, zeroed by a transfer pass (shadel-mask-clear) first,
+// and marks in them which shadels of each chunk composite reads.
 void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle depth);
 // filter: 0 point, 1 bilinear, 2 trilinear (what composite filters with);
 // baseline: the mark before issue 14 (bench --baseline); alphaTest: the
-// variant for alpha-mask objects, `materialSet` (the scene material) its set 1.
+// variant for alpha-mask objects, `materialSet` (the scene material) its set 1;
+// shadelMasks: also the shadel masks (DecoupledFrame::shadelMasks).
 gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline = false, bool alphaTest = false,
-                                             VkDescriptorSetLayout materialSet = VK_NULL_HANDLE);
+                                             VkDescriptorSetLayout materialSet = VK_NULL_HANDLE,
+                                             bool shadelMasks = false);
 
 }  // namespace sg::passes

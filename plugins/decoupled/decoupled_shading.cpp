@@ -404,7 +404,12 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
                                         .ownedEntryCount = ownedEntryCount_, .objectCount = objectCount,
                                         .filter = settings_.filter,
                                         .baseline = settings_.baseline,
-                                        .levelView = settings_.view == DebugView::Level});
+                                        .levelView = settings_.view == DebugView::Level,
+                                        // Whole chunks where stored shadels may be served in a later frame,
+                                        // and in the sheet view (it shows every stored texel).
+                                        .shadelMasks = settings_.shadelMasks && !keepShading &&
+                                                       layerPlan_.persistent.empty() && !settings_.baseline &&
+                                                       settings_.view != DebugView::Sheet});
   passes::DecoupledFrame& frame = *frame_;
   declaredHistory_ = history_.declare(graph, in.device, in.executor, materials, layerPlan_.persistent, keepShading,
                                       storage_.widthTexels(), storage_.heightTexels(), remapBytes_, frames_,

@@ -46,6 +46,8 @@ struct DecoupledSettings {
   uint32_t storageChunks = 0;  // when non-zero, the shade storage in chunks regardless of the output (tests)
   int filter = 1;                      // composite (and what shadel-mark marks): 0 point, 1 bilinear (default: the most accurate, issue 14), 2 trilinear
   bool baseline = false;           // bench --baseline: shadel-mark as before issue 14
+  // Shade only the shadels composite reads (passes::DecoupledFrame::shadelMasks, where it applies); false: whole chunks.
+  bool shadelMasks = true;
   std::optional<float> fixedBias;      // else the adjuster decides
   // A shade frame (every marked chunk shaded) every this many raster frames;
   // in the others only chunks without valid shading from the last frame are

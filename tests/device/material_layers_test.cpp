@@ -129,6 +129,21 @@ TEST(MaterialLayers, SkinBlurCostsThreeDispatchesPerObjectAndSmooths) {
   EXPECT_LT(blurredRoughness, 0.9 * sharpRoughness);
 }
 
+// Shadel masks (issue 14) shade only the shadels composite reads, except for
+// objects whose material reads a neighbourhood: their chunks (support-expand's
+// ring included) are shaded whole, or the blur would read unshaded shadels.
+// Half the objects skin, half gltf-pbr: the same image as whole chunks everywhere.
+TEST(MaterialLayers, ShadelMasksShadeNeighbourhoodReadersWhole) {
+  scene::Scene mixed = courtyardWith("skin");
+  for (size_t i = 0; i < mixed.instances.size(); i += 2) mixed.instances[i].material = "gltf-pbr";
+  Session masked(mixed, scene::ShadingMode::Decoupled), whole(mixed, scene::ShadingMode::Decoupled, {.shadelMasks = false});
+  const auto a = masked.render(kSize), b = whole.render(kSize);
+  EXPECT_TRUE(a.rgba8 == b.rgba8) << "an unshaded shadel was read";
+  EXPECT_GT(masked.stats().counters.supportChunks, 0u);
+  EXPECT_GT(masked.stats().counters.shadelsSkipped, 0u) << "the gltf-pbr objects' chunks are masked";
+  EXPECT_EQ(whole.stats().counters.shadelsSkipped, 0u);
+}
+
 TEST(MaterialLayers, MarbleIsReusedFromLastFrame) {
   Session d(courtyardWith("marble"), scene::ShadingMode::Decoupled, {.fixedBias = 0.0f});
   EXPECT_EQ(historyResources(d.plan(kSize)), 1u)

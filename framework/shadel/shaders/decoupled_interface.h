@@ -38,6 +38,9 @@ SG_CONST uint kBindSupportMasks = 30u;             // support-expand's per-owned
 SG_CONST uint kBindShadeStamps = 31u;
 // Stable allocation: each owned entry's 64 chunk slots, then the free list (chunk_slots.glsl).
 SG_CONST uint kBindChunkSlots = 33u;
+// Which shadels of each chunk composite reads (shadel-mark's 64-bit masks, one
+// per chunk slot: ownedIndex * 64 + chunk); layer-shade shades only those.
+SG_CONST uint kBindShadelMasks = 34u;
 // A chunk slot: the physical chunk; kNoSlot: no storage.
 SG_CONST uint kNoSlot = 0xFFFFFFFFu;
 SG_CONST uint kStaleAgeBins = 16u;  // SgShadeCounters.staleAgeChunks: ages 0..14, then 15 or more
@@ -87,6 +90,7 @@ struct SgShadeCounters {
   uint staleMaxAge;                  // raster frames since the oldest reused chunk was shaded (0: none reused)
   uint chunksRefreshed;              // chunks that could have been reused but were shaded for their age (budget mode)
   uint staleAgeChunks[kStaleAgeBins];  // reusable chunks by the age they would have if reused (budget mode)
+  uint shadelsSkipped;               // shadels of shaded chunks layer-shade left out: no pixel reads them
 };
 
 // The frame's parameters (uniform).
@@ -111,6 +115,8 @@ struct SgLayerShadePush {
   uint objectIndex;
   uint persistentSlot;   // the layer's slot in SgShadeCounters.layerReused/Computed
   uint historyValid;     // last frame's remap and layer image describe this storage layout
+  uint shadelMasks;      // 1: shade only the shadels shadel-mark marked (DecoupledFrame::shadelMasks)
+  uint countSkipped;     // 1: this step counts the shadels it leaves out (the material's last layer)
 };
 
 // Push constants of the occupancy debug view: the sheet window it shows.

@@ -250,8 +250,10 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   for (int filter : {0, 1, 2})
     for (bool baseline : {false, true})
       for (bool alphaTest : {false, true})
-        errors += mismatches("shadel-mark filter=" + std::to_string(filter) + (alphaTest ? " alpha-test" : ""),
-                             passes::shadelMarkPipeline(filter, baseline, alphaTest));
+        for (bool masks : {false, !baseline})  // the baseline mark has no masks
+          errors += mismatches("shadel-mark filter=" + std::to_string(filter) + (alphaTest ? " alpha-test" : "") +
+                                   (masks ? " masks" : ""),
+                               passes::shadelMarkPipeline(filter, baseline, alphaTest, VK_NULL_HANDLE, masks));
   for (bool apply : {false, true}) errors += mismatches("support-expand", passes::supportExpandPipeline(apply));
   for (int phase : {1, 2}) errors += mismatches("shadel-allocate", passes::shadelAllocatePipeline(phase));
   errors += mismatches("work-offsets", passes::workOffsetsPipeline());
