@@ -63,14 +63,13 @@ void writeStats(const std::string& path, const AppSession& session, const render
   // Each object's shading and why (auto mode's choice, or why it cannot go decoupled).
   nlohmann::json objects = nlohmann::json::array();
   for (const auto& choice : session.decoupled->choices()) {
+    const auto report = plugins::shadingReport(choice);  // as inspect prints it
     nlohmann::json object{{"name", session.scene.instances[choice.instance].name},
-                          {"shading", choice.decoupled ? "decoupled" : "forward"},
-                          {"reason", choice.reason}};
+                          {"shading", report.shading},
+                          {"reason", report.reason}};
     // Each primitive is a decoupled object of its own (an alpha-blended one stays forward).
-    if (choice.primitives.size() > 1)
-      for (const auto& primitive : choice.primitives)
-        object["primitives"].push_back({{"shading", choice.decoupled && primitive.eligible ? "decoupled" : "forward"},
-                                        {"reason", primitive.reason}});
+    for (const auto& primitive : report.primitives)
+      object["primitives"].push_back({{"shading", primitive.shading}, {"reason", primitive.reason}});
     objects.push_back(std::move(object));
   }
   // Draws the choices took that stay forward all the same (e.g. no room for their triangle-ID map).

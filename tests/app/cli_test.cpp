@@ -139,6 +139,39 @@ TEST(Cli, InspectReportsChartVerdicts) {
   EXPECT_NE(box.output.find("UV sets: none"), std::string::npos) << box.output;
 }
 
+// inspect lists every object with what render would choose for it at load, and why.
+TEST(Cli, InspectListsEachObjectsShadingAndWhy) {
+  SG_REQUIRE_ASSETS();
+  const auto lines = [](const std::string& text, const std::string& part) {
+    size_t n = 0;
+    for (size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+    return n;
+  };
+  auto decoupled = run("inspect --mode decoupled " + asset("AlphaBlendModeTest"));
+  ASSERT_EQ(decoupled.exitCode, 0) << decoupled.output;
+  const size_t instances = std::stoul(decoupled.output.substr(decoupled.output.find("meshes, ") + 8));
+  EXPECT_EQ(lines(decoupled.output, "\nobject '"), instances) << decoupled.output;
+  EXPECT_EQ(lines(decoupled.output, "': forward (alpha-blended material"), 2u) << decoupled.output;
+  EXPECT_EQ(lines(decoupled.output, "': decoupled ("), instances - 2) << "opaque and alpha-mask objects: " << decoupled.output;
+  auto forward = run("inspect --mode forward " + asset("AlphaBlendModeTest"));
+  ASSERT_EQ(forward.exitCode, 0) << forward.output;
+  EXPECT_EQ(lines(forward.output, "': decoupled ("), 0u) << forward.output;
+  EXPECT_EQ(lines(forward.output, "': forward ("), instances) << forward.output;
+  // render --stats lists the same objects in the same words.
+  const auto stats = tempDir() / "alpha-blend-stats.json";
+  auto rendered = run("render --mode decoupled --size 64x36 --frames 1 -o " + (tempDir() / "alpha-blend.png").string() +
+                      " --stats " + stats.string() + " " + asset("AlphaBlendModeTest"));
+  ASSERT_EQ(rendered.exitCode, 0) << rendered.output;
+  std::ifstream in(stats);
+  const auto objects = nlohmann::json::parse(in)["objects"];
+  ASSERT_EQ(objects.size(), instances);
+  for (const auto& object : objects) {
+    const std::string line = "object '" + object["name"].get<std::string>() + "': " + object["shading"].get<std::string>() +
+                             " (" + object["reason"].get<std::string>() + ")\n";
+    EXPECT_NE(decoupled.output.find(line), std::string::npos) << line << " not in inspect's:\n" << decoupled.output;
+  }
+}
+
 TEST(Cli, MalformedGltfFailsWithTheFileAndTheProblem) {
   const std::string dir = "/usr/share/assimp/models/glTF2/";
   if (!std::filesystem::exists(dir)) GTEST_SKIP() << "assimp-testmodels not installed (./sg installs it)";
