@@ -214,6 +214,10 @@ void runRender(const RenderArgs& args) {
     for (const auto& f : session.decoupled->runTimeForward())
       std::printf("forward: %s primitive %u (%s)\n", session.scene.instances[f.instance].name.c_str(), f.primitive,
                   f.reason.c_str());
+  for (const auto& shrunk : session.decoupled->shrunkIdMaps())
+    std::printf("warning: object '%s' primitive %u: triangle-ID map shrunk to fit the %.0f MiB buffer, level 0 %u -> %u\n",
+                session.scene.instances[shrunk.instance].name.c_str(), shrunk.primitive,
+                double(shrunk.bufferBytes) / (1 << 20), shrunk.wantedLevel0, shrunk.level0);
   image::writePng(args.output, frame.image.width, frame.image.height, frame.image.rgba8.data());
   const auto memory = session.device->memory().totals();
   printTable(frame.timings, frame.transientBytes, memory);
