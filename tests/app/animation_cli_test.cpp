@@ -87,6 +87,33 @@ TEST(AnimationCliInspect, ListsEveryAnimationWithItsChannels) {
     EXPECT_NE(r.output.find(line), std::string::npos) << line << " missing from:\n" << r.output;
 }
 
+// bench --play: forward and decoupled alternated along the playback, each
+// frame posed (the boxes move), medians and decoupled's shadels per pixel.
+TEST(AnimationCliBench, PlayTimesBothPathsAlongThePlayback) {
+  SG_REQUIRE_ASSETS();
+  const auto dir = tempDir() / "bench-play";
+  const auto r = sg::test::runCli("bench " + sg::test::samplePath("BoxAnimated").string() + " --play 3 --sizes 96x72 --out " +
+                                  dir.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "results.json")) << "--play replaces the configuration sweep";
+  std::ifstream in(dir / "playback.json");
+  const auto json = nlohmann::json::parse(in);
+  ASSERT_EQ(json["runs"].size(), 1u);
+  const auto& configs = json["runs"][0]["configs"];
+  ASSERT_EQ(configs.size(), 2u);
+  for (const auto& c : configs) {
+    EXPECT_EQ(c["frame_ms_samples"].size(), 3u) << c.dump();
+    EXPECT_GT(c["frame_ms_median"].get<double>(), 0.0) << c.dump();
+  }
+  EXPECT_EQ(configs[0]["config"], "forward");
+  EXPECT_EQ(configs[0]["objects_decoupled"], 0);
+  EXPECT_DOUBLE_EQ(configs[0]["ratio_to_forward"].get<double>(), 1.0);
+  EXPECT_EQ(configs[1]["config"], "decoupled");
+  EXPECT_EQ(configs[1]["objects_decoupled"], 2) << "both boxes, deforming or not";
+  EXPECT_GT(configs[1]["shadels_per_pixel_median"].get<double>(), 0.0);
+  EXPECT_EQ(configs[1]["composite_misses"], 0) << configs[1].dump();
+}
+
 void expectOneLineError(const sg::test::CliRun& r, const std::string& mentions) {
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_EQ(r.output.rfind("shadelgraph: error: ", 0), 0u) << r.output;
@@ -99,6 +126,8 @@ TEST(AnimationCliErrors, BadChoicesFailWithOneLine) {
   expectOneLineError(sg::test::runCli("render --fps 0"), "--fps 0");
   expectOneLineError(sg::test::runCli("render --size 32x32 --animation walk -o " + (tempDir() / "x.png").string()),
                      "--animation walk: the scene has no animations");
+  expectOneLineError(sg::test::runCli("bench --play 2 --sizes 32x18 --out " + (tempDir() / "play").string()),
+                     "--play: default has no animations");
   SG_REQUIRE_ASSETS();
   expectOneLineError(sg::test::runCli("render " + sg::test::samplePath("InterpolationTest").string() +
                                       " --size 32x32 --animation 'Bounce' -o " + (tempDir() / "y.png").string()),
