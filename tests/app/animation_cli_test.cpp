@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -85,6 +86,33 @@ TEST(AnimationCliInspect, ListsEveryAnimationWithItsChannels) {
   for (const char* line : {"animation 'Step Scale': ", " scale STEP", "animation 'CubicSpline Rotation': ",
                            " rotation CUBICSPLINE", "animation 'Linear Translation': ", " translation LINEAR"})
     EXPECT_NE(r.output.find(line), std::string::npos) << line << " missing from:\n" << r.output;
+}
+
+// CesiumMan off screen, its shadow on the ground in view: the shadow map
+// holds its pose at --time (the skinning pass runs for a deformed caster of a
+// shadow map in view, not only for visible deformed objects).
+TEST(AnimationCliShadows, AnOffScreenSkinnedCasterCastsItsCurrentPose) {
+  SG_REQUIRE_ASSETS();
+  const auto scene = tempDir() / "offscreen-caster.json";
+  std::ofstream(scene) << R"({"objects": [{"gltf": ")" << sg::test::samplePath("Box").string()
+                       << R"(", "translation": [2, -0.01, 0], "scale": [12, 0.02, 12]},
+      {"gltf": ")" << sg::test::samplePath("CesiumMan").string() << R"(", "name": "walker"}],
+    "lights": [{"type": "directional", "direction": [1, -0.5, 0], "intensity": 3, "shadows": true}],
+    "cameraPaths": [{"type": "keys", "keys": [{"t": 0, "position": [3.5, 3, 1], "target": [3.5, 0, 0]}]}]})";
+  for (const char* mode : {"forward", "decoupled"}) {
+    std::vector<sg::image::Rgba8Image> images;
+    for (const char* time : {"0.3", "1.0"}) {
+      const auto png = tempDir() / (std::string("offscreen-") + mode + "-" + time + ".png");
+      const auto r = sg::test::runCli("render " + scene.string() + " --frame 0 --size 160x90 --frames 1 --mode " + mode +
+                                      " --time " + time + " -o " + png.string());
+      ASSERT_EQ(r.exitCode, 0) << r.output;
+      // Decoupled, the walker would be the second decoupled object if it were drawn.
+      if (std::string(mode) == "decoupled")
+        EXPECT_NE(r.output.find("2 draws, 1 objects decoupled"), std::string::npos) << "the walker is culled: " << r.output;
+      images.push_back(sg::image::readPng(png));
+    }
+    EXPECT_GT(differingPixels(images[0], images[1]), 160u * 90u / 100) << mode << ": the shadow keeps one pose";
+  }
 }
 
 // bench --play: forward and decoupled alternated along the playback, each
