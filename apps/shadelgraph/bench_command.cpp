@@ -29,6 +29,7 @@
 #include "bench_effects.hpp"
 #include "bench_graph.hpp"
 #include "bench_materials.hpp"
+#include "bench_playback.hpp"
 #include "bench_scenes.hpp"
 #include "bench_sessions.hpp"
 #include "bench_shade_rate.hpp"
@@ -277,6 +278,11 @@ void runBench(const BenchArgs& args) {
   if (args.sceneRatios) {
     runSceneRatioBench(context, device, {.scenes = args.scenes, .sizes = args.sizes, .repetitions = args.repetitions},
                        out);
+    setExitCode(context.validationLog().count() ? 1 : 0);
+    return;
+  }
+  if (args.play > 0) {
+    runPlaybackBench(context, device, {.scenes = args.scenes, .sizes = args.sizes, .frames = args.play}, out);
     setExitCode(context.validationLog().count() ? 1 : 0);
     return;
   }

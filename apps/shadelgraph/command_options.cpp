@@ -195,6 +195,10 @@ CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& gr
                      "--effects: point-light counts of the culling comparison (comma-separated, each 1 to 4096)")
       ->delimiter(',')
       ->capture_default_str();
+  command.add_option("--play", args.play,
+                     "instead of the configuration sweep: forward and decoupled while the scenes' glTF animations "
+                     "play, this many frames 1/30 s apart, alternated frame by frame; median GPU frame times, their "
+                     "ratio, shadels per covered pixel and composite misses; writes playback.json");
   auto* shimmer = command.add_flag("--shimmer", args.shimmer, "add the shimmer case (default scene's gold sphere, close up)");
   command.add_option("--materials", args.materials,
                   "instead of the configuration sweep: for each of these materials (comma-separated, e.g. "
@@ -243,6 +247,7 @@ void checkBenchArgs(const BenchArgs& args) {
   for (const double ms : args.shadeBudgets) requireFiniteInRange("--shade-budgets", ms, 0.01, 10000.0);
   requireInRange("--path-frames", args.pathFrames, 2, 100000);
   requireInRange("--frames-in-flight", args.framesInFlight, 1, 2);
+  requireInRange("--play", args.play, 0, 100000);
   if (args.sizes.empty()) throw std::invalid_argument("--sizes: expected at least one WIDTHxHEIGHT");
   if (args.sceneRatios && args.scenes.size() < 2)
     throw std::invalid_argument("--scene-ratios: expected at least two scenes (the first is the baseline)");

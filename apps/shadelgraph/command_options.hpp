@@ -105,6 +105,7 @@ struct BenchArgs {
   int framesInFlight = 1;       // the shade-rate sweep: 2 adds each rate above 1 with two frames in flight
   bool sceneRatios = false;  // each scene against the first instead (bench_scenes.cpp)
   bool effects = false;      // what each effect costs and adds instead (bench_effects.cpp)
+  int play = 0;              // > 0: this many frames of the scenes' animations, forward and decoupled, instead (bench_playback.cpp)
   std::vector<std::string> effectGroups{"shadows", "lights", "ibl", "bloom"};  // --effects: which comparisons
   std::vector<int> lightCounts{8, 16, 32, 64, 128, 300};  // --effects: point lights (1000: brute force ~2 min a frame here)
 };

@@ -1,8 +1,10 @@
 // shadelgraph inspect <scene>: per mesh, triangles, UV sets, the shading-chart
-// verdict with its counts, and materials; the animations. No device needed.
+// verdict with its counts, and materials; per object, decoupled or forward and
+// why (as render would choose at load); the animations. No device needed.
 #include <cstdio>
 #include <set>
 
+#include <decoupled/shading_choice.hpp>
 #include <shadelgraph/scene/uv_chart.hpp>
 #include <shadelgraph/shadel/chart_density.hpp>
 
@@ -15,6 +17,9 @@ void addInspectCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("inspect", "Print meshes, UV sets, shading-chart verdicts and materials of a scene");
   static std::string path;
   cmd->add_option("scene", path, "a .gltf/.glb/.json scene (default: the built-in scene)");
+  static std::string mode;
+  cmd->add_option("--mode", mode, "shading of every object for the per-object list (default: each object's own)")
+      ->check(CLI::IsMember({"forward", "decoupled", "auto"}));
   cmd->callback([] {
     const scene::Scene s = loadSceneArgument(path).scene;
     std::printf("%zu meshes, %zu instances, %zu materials, %zu textures, %zu lights, %zu cameras, %zu triangles drawn\n",
@@ -49,6 +54,13 @@ void addInspectCommand(CLI::App& app) {
       for (int m : materials) std::printf(" '%s'", s.materials[size_t(m)].name.c_str());
       std::printf("\n");
     }
+    // Per object, what render chooses at load (an object may still go forward
+    // at run time: render prints those after its frames).
+    scene::Scene charted = s;  // chooseShading charts meshes anew where decoupled shading needs it
+    const auto override = mode.empty() ? std::nullopt : scene::parseShadingMode(mode);
+    for (const auto& choice : plugins::chooseShading(charted, override))
+      std::fputs(plugins::shadingReportLines(s.instances[choice.instance].name, plugins::shadingReport(choice)).c_str(),
+                 stdout);
     for (const auto& animation : s.animations) {
       const char* paths[] = {"translation", "rotation", "scale", "weights"};
       const char* interpolations[] = {"STEP", "LINEAR", "CUBICSPLINE"};

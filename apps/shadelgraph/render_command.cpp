@@ -63,14 +63,13 @@ void writeStats(const std::string& path, const AppSession& session, const render
   // Each object's shading and why (auto mode's choice, or why it cannot go decoupled).
   nlohmann::json objects = nlohmann::json::array();
   for (const auto& choice : session.decoupled->choices()) {
+    const auto report = plugins::shadingReport(choice);  // as inspect prints it
     nlohmann::json object{{"name", session.scene.instances[choice.instance].name},
-                          {"shading", choice.decoupled ? "decoupled" : "forward"},
-                          {"reason", choice.reason}};
+                          {"shading", report.shading},
+                          {"reason", report.reason}};
     // Each primitive is a decoupled object of its own (an alpha-blended one stays forward).
-    if (choice.primitives.size() > 1)
-      for (const auto& primitive : choice.primitives)
-        object["primitives"].push_back({{"shading", choice.decoupled && primitive.eligible ? "decoupled" : "forward"},
-                                        {"reason", primitive.reason}});
+    for (const auto& primitive : report.primitives)
+      object["primitives"].push_back({{"shading", primitive.shading}, {"reason", primitive.reason}});
     objects.push_back(std::move(object));
   }
   // Draws the choices took that stay forward all the same (e.g. no room for their triangle-ID map).
@@ -217,6 +216,10 @@ void runRender(const RenderArgs& args) {
     for (const auto& f : session.decoupled->runTimeForward())
       std::printf("forward: %s primitive %u (%s)\n", session.scene.instances[f.instance].name.c_str(), f.primitive,
                   f.reason.c_str());
+  for (const auto& shrunk : session.decoupled->shrunkIdMaps())
+    std::printf("warning: object '%s' primitive %u: triangle-ID map shrunk to fit the %.0f MiB buffer, level 0 %u -> %u\n",
+                session.scene.instances[shrunk.instance].name.c_str(), shrunk.primitive,
+                double(shrunk.bufferBytes) / (1 << 20), shrunk.wantedLevel0, shrunk.level0);
   image::writePng(args.output, frame.image.width, frame.image.height, frame.image.rgba8.data());
   const auto memory = session.device->memory().totals();
   printTable(frame.timings, frame.transientBytes, memory);

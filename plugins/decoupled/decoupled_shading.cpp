@@ -136,6 +136,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
     scene::Mesh mesh;
     scene::ChartVerdict chart;
     uint32_t level0 = 0;
+    uint32_t instance = 0;  // the first object asking for it
   };
   std::map<std::pair<int, uint32_t>, NewMap> newMaps;
   for (const uint32_t d : toAllocate) {
@@ -143,7 +144,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
     if (idMaps_.contains(key) || noIdMapRoom_.contains(key)) continue;
     auto it = newMaps.find(key);
     if (it == newMaps.end()) {
-      NewMap map{primitiveMesh(in.scene.meshes[size_t(key.first)], key.second), {}, 0};
+      NewMap map{primitiveMesh(in.scene.meshes[size_t(key.first)], key.second), {}, 0, draws[d].instance};
       map.chart = scene::chooseShadingChart(map.mesh);
       map.level0 = shadel::chooseLevel0Size(map.mesh, map.chart, shadel::meshTextureDensity(in.scene, map.mesh));
       it = newMaps.emplace(key, std::move(map)).first;
@@ -162,7 +163,10 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
     const uint64_t budget = limit / sizeof(uint32_t) - std::min<uint64_t>(idTexels_.size(), limit / sizeof(uint32_t));
     sizes = fitIdMapSizes(std::move(sizes), budget, shadel::IdMapOptions{}.minLevelSize, shadel::Level0Options{}.minSize);
     size_t i = 0;
-    for (auto& [key, map] : newMaps) map.level0 = sizes[i++];
+    for (auto& [key, map] : newMaps) {
+      if (sizes[i] < map.level0) shrunkIdMaps_.push_back({map.instance, key.second, map.level0, sizes[i], limit});
+      map.level0 = sizes[i++];
+    }
   }
 
   for (const uint32_t d : toAllocate) {

@@ -154,6 +154,15 @@ class DecoupledShading {
     std::string reason;
   };
   std::vector<RunTimeForward> runTimeForward() const;
+  // Triangle-ID maps made coarser than their object asked for so that all fit
+  // the one buffer (id_map_budget.hpp): that object shades at most this fine.
+  struct ShrunkIdMap {
+    uint32_t instance = 0;  // the first object that asked for the map (instances of one mesh share it)
+    uint32_t primitive = 0;
+    uint32_t wantedLevel0 = 0, level0 = 0;  // level-0 size asked for, and given
+    uint64_t bufferBytes = 0;               // the buffer all maps share (maxStorageBufferRange)
+  };
+  const std::vector<ShrunkIdMap>& shrunkIdMaps() const { return shrunkIdMaps_; }
 
  private:
   void createTables(gpu::Device& device);
@@ -208,6 +217,7 @@ class DecoupledShading {
   std::vector<uint32_t> identity_;  // draw index -> object index (the same)
   std::map<std::pair<int, uint32_t>, std::pair<shadel::DetailLevels, uint32_t>> idMaps_;  // by mesh and primitive: levels, ID-map offset
   std::set<std::pair<int, uint32_t>> noIdMapRoom_;  // primitives whose map would not fit the ID-map buffer
+  std::vector<ShrunkIdMap> shrunkIdMaps_;
   std::vector<uint32_t> idTexels_;
   bool tablesDirty_ = true;
   // This frame: the objects shaded decoupled (draws = ids, materials).

@@ -111,4 +111,21 @@ std::vector<ShadingChoice> chooseShading(scene::Scene& scene, std::optional<scen
   return choices;
 }
 
+ShadingReport shadingReport(const ShadingChoice& choice) {
+  ShadingReport report{.shading = choice.decoupled ? "decoupled" : "forward", .reason = choice.reason};
+  if (choice.primitives.size() > 1)
+    for (const auto& primitive : choice.primitives)
+      report.primitives.push_back(
+          {.shading = choice.decoupled && primitive.eligible ? "decoupled" : "forward", .reason = primitive.reason});
+  return report;
+}
+
+std::string shadingReportLines(const std::string& name, const ShadingReport& report) {
+  std::string lines = "object '" + name + "': " + report.shading + " (" + report.reason + ")\n";
+  for (size_t p = 0; p < report.primitives.size(); ++p)
+    lines += "  primitive " + std::to_string(p) + ": " + report.primitives[p].shading + " (" +
+             report.primitives[p].reason + ")\n";
+  return lines;
+}
+
 }  // namespace sg::plugins

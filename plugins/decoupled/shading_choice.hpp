@@ -59,4 +59,15 @@ std::string objectReason(const std::vector<PrimitiveChoice>& primitives);
 // switched to decoupled later needs a chart of its own). `override`: --mode.
 std::vector<ShadingChoice> chooseShading(scene::Scene& scene, std::optional<scene::ShadingMode> override);
 
+// What `inspect` prints and `render --stats` writes for an object: "decoupled"
+// or "forward" as chosen at load and why, then each primitive's when it has several.
+struct ShadingReport {
+  std::string shading;
+  std::string reason;
+  std::vector<ShadingReport> primitives;  // empty for a one-primitive object
+};
+ShadingReport shadingReport(const ShadingChoice& choice);
+// The report as text: "object 'NAME': shading (reason)", then "  primitive N: shading (reason)" lines.
+std::string shadingReportLines(const std::string& name, const ShadingReport& report);
+
 }  // namespace sg::plugins

@@ -81,6 +81,13 @@ void publish(FrameContext& ctx, const passes::ForwardTargets& t) {
   ctx.write("scene.depth", t.depth);
 }
 
+// Whether draw `d` is a caster in shadow map `v`: inside the map's view, reached by its light, not alpha-blended.
+bool castsInto(const FrameContext& ctx, const render::ShadowView& v, uint32_t d) {
+  const auto& in = ctx.inputs();
+  return ctx.gpuScene().draws()[d].alphaMode != scene::AlphaMode::Blend &&
+         render::castsInto(v, in.scene.lights[v.light], in.drawSpheres[d]);
+}
+
 // The frame's shadow maps (render::shadowViews: shadowed lights that reach a
 // visible draw), each holding the draws inside its view that its light reaches
 // (casters may be off screen); none: no pass, no atlas.
@@ -92,24 +99,28 @@ void declareShadows(FrameContext& ctx) {
   for (const render::ShadowView& v : in.shadowViews) {
     passes::ShadowMapDraws map{v.slot, {}};
     for (uint32_t d = 0; d < draws.size(); ++d)
-      if (draws[d].alphaMode != scene::AlphaMode::Blend && render::castsInto(v, in.scene.lights[v.light], in.drawSpheres[d]))
-        map.casters.push_back(d);
+      if (castsInto(ctx, v, d)) map.casters.push_back(d);
     maps.push_back(std::move(map));
   }
   ctx.write(render::kShadowMapsResource, passes::addShadowMaps(ctx.graph(), ctx.view(ctx.gpuScene().allDraws()),
                                                                std::move(maps), uint32_t(in.shadowViews.size())));
 }
 
-// Deforms the skinned and morphed objects when one of them is visible (all
-// of them then: a deformed object off screen may still cast a shadow into view).
+// Deforms the skinned and morphed objects when one of them is visible or
+// casts into one of the frame's shadow maps (all of them then: one pass).
 void declareSkinning(FrameContext& ctx) {
   const render::DeformationFrame* deformation = ctx.inputs().deformation;
   if (!deformation) return;
   const auto visible = ctx.visibleDraws();
   const auto& draws = ctx.gpuScene().draws();
-  if (std::none_of(visible.begin(), visible.end(),
-                   [&](uint32_t d) { return deformation->deformation.deformed(draws[d].instance); }))
-    return;
+  const auto deformed = [&](uint32_t d) { return deformation->deformation.deformed(draws[d].instance); };
+  const auto casts = [&](uint32_t d) {
+    return std::any_of(ctx.inputs().shadowViews.begin(), ctx.inputs().shadowViews.end(),
+                       [&](const render::ShadowView& v) { return castsInto(ctx, v, d); });
+  };
+  bool needed = std::any_of(visible.begin(), visible.end(), deformed);
+  for (uint32_t d = 0; !needed && d < draws.size(); ++d) needed = deformed(d) && casts(d);
+  if (!needed) return;
   ctx.write(render::kSceneVerticesResource,
             passes::addSkinning(ctx.graph(), ctx.inputs().executor, ctx.gpuScene(), *deformation));
 }

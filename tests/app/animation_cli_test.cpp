@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -87,6 +88,60 @@ TEST(AnimationCliInspect, ListsEveryAnimationWithItsChannels) {
     EXPECT_NE(r.output.find(line), std::string::npos) << line << " missing from:\n" << r.output;
 }
 
+// CesiumMan off screen, its shadow on the ground in view: the shadow map
+// holds its pose at --time (the skinning pass runs for a deformed caster of a
+// shadow map in view, not only for visible deformed objects).
+TEST(AnimationCliShadows, AnOffScreenSkinnedCasterCastsItsCurrentPose) {
+  SG_REQUIRE_ASSETS();
+  const auto scene = tempDir() / "offscreen-caster.json";
+  std::ofstream(scene) << R"({"objects": [{"gltf": ")" << sg::test::samplePath("Box").string()
+                       << R"(", "translation": [2, -0.01, 0], "scale": [12, 0.02, 12]},
+      {"gltf": ")" << sg::test::samplePath("CesiumMan").string() << R"(", "name": "walker"}],
+    "lights": [{"type": "directional", "direction": [1, -0.5, 0], "intensity": 3, "shadows": true}],
+    "cameraPaths": [{"type": "keys", "keys": [{"t": 0, "position": [3.5, 3, 1], "target": [3.5, 0, 0]}]}]})";
+  for (const char* mode : {"forward", "decoupled"}) {
+    std::vector<sg::image::Rgba8Image> images;
+    for (const char* time : {"0.3", "1.0"}) {
+      const auto png = tempDir() / (std::string("offscreen-") + mode + "-" + time + ".png");
+      const auto r = sg::test::runCli("render " + scene.string() + " --frame 0 --size 160x90 --frames 1 --mode " + mode +
+                                      " --time " + time + " -o " + png.string());
+      ASSERT_EQ(r.exitCode, 0) << r.output;
+      // Decoupled, the walker would be the second decoupled object if it were drawn.
+      if (std::string(mode) == "decoupled")
+        EXPECT_NE(r.output.find("2 draws, 1 objects decoupled"), std::string::npos) << "the walker is culled: " << r.output;
+      images.push_back(sg::image::readPng(png));
+    }
+    EXPECT_GT(differingPixels(images[0], images[1]), 160u * 90u / 100) << mode << ": the shadow keeps one pose";
+  }
+}
+
+// bench --play: forward and decoupled alternated along the playback, each
+// frame posed (the boxes move), medians and decoupled's shadels per pixel.
+TEST(AnimationCliBench, PlayTimesBothPathsAlongThePlayback) {
+  SG_REQUIRE_ASSETS();
+  const auto dir = tempDir() / "bench-play";
+  const auto r = sg::test::runCli("bench " + sg::test::samplePath("BoxAnimated").string() + " --play 3 --sizes 96x72 --out " +
+                                  dir.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "results.json")) << "--play replaces the configuration sweep";
+  std::ifstream in(dir / "playback.json");
+  const auto json = nlohmann::json::parse(in);
+  ASSERT_EQ(json["runs"].size(), 1u);
+  const auto& configs = json["runs"][0]["configs"];
+  ASSERT_EQ(configs.size(), 2u);
+  for (const auto& c : configs) {
+    EXPECT_EQ(c["frame_ms_samples"].size(), 3u) << c.dump();
+    EXPECT_GT(c["frame_ms_median"].get<double>(), 0.0) << c.dump();
+  }
+  EXPECT_EQ(configs[0]["config"], "forward");
+  EXPECT_EQ(configs[0]["objects_decoupled"], 0);
+  EXPECT_DOUBLE_EQ(configs[0]["ratio_to_forward"].get<double>(), 1.0);
+  EXPECT_EQ(configs[1]["config"], "decoupled");
+  EXPECT_EQ(configs[1]["objects_decoupled"], 2) << "both boxes, deforming or not";
+  EXPECT_GT(configs[1]["shadels_per_pixel_median"].get<double>(), 0.0);
+  EXPECT_EQ(configs[1]["composite_misses"], 0) << configs[1].dump();
+}
+
 void expectOneLineError(const sg::test::CliRun& r, const std::string& mentions) {
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_EQ(r.output.rfind("shadelgraph: error: ", 0), 0u) << r.output;
@@ -99,6 +154,8 @@ TEST(AnimationCliErrors, BadChoicesFailWithOneLine) {
   expectOneLineError(sg::test::runCli("render --fps 0"), "--fps 0");
   expectOneLineError(sg::test::runCli("render --size 32x32 --animation walk -o " + (tempDir() / "x.png").string()),
                      "--animation walk: the scene has no animations");
+  expectOneLineError(sg::test::runCli("bench --play 2 --sizes 32x18 --out " + (tempDir() / "play").string()),
+                     "--play: default has no animations");
   SG_REQUIRE_ASSETS();
   expectOneLineError(sg::test::runCli("render " + sg::test::samplePath("InterpolationTest").string() +
                                       " --size 32x32 --animation 'Bounce' -o " + (tempDir() / "y.png").string()),

@@ -6,11 +6,13 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -138,6 +140,83 @@ TEST(Cli, InspectReportsChartVerdicts) {
   EXPECT_NE(helmet.output.find("10 zero-UV-area triangles"), std::string::npos) << helmet.output;
   auto box = run("inspect " + asset("Box"));
   EXPECT_NE(box.output.find("UV sets: none"), std::string::npos) << box.output;
+}
+
+// inspect lists every object with what render would choose for it at load, and why.
+TEST(Cli, InspectListsEachObjectsShadingAndWhy) {
+  SG_REQUIRE_ASSETS();
+  const auto lines = [](const std::string& text, const std::string& part) {
+    size_t n = 0;
+    for (size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+    return n;
+  };
+  auto decoupled = run("inspect --mode decoupled " + asset("AlphaBlendModeTest"));
+  ASSERT_EQ(decoupled.exitCode, 0) << decoupled.output;
+  const size_t instances = std::stoul(decoupled.output.substr(decoupled.output.find("meshes, ") + 8));
+  EXPECT_EQ(lines(decoupled.output, "\nobject '"), instances) << decoupled.output;
+  EXPECT_EQ(lines(decoupled.output, "': forward (alpha-blended material"), 2u) << decoupled.output;
+  EXPECT_EQ(lines(decoupled.output, "': decoupled ("), instances - 2) << "opaque and alpha-mask objects: " << decoupled.output;
+  auto forward = run("inspect --mode forward " + asset("AlphaBlendModeTest"));
+  ASSERT_EQ(forward.exitCode, 0) << forward.output;
+  EXPECT_EQ(lines(forward.output, "': decoupled ("), 0u) << forward.output;
+  EXPECT_EQ(lines(forward.output, "': forward ("), instances) << forward.output;
+  // render --stats lists the same objects in the same words.
+  const auto stats = tempDir() / "alpha-blend-stats.json";
+  auto rendered = run("render --mode decoupled --size 64x36 --frames 1 -o " + (tempDir() / "alpha-blend.png").string() +
+                      " --stats " + stats.string() + " " + asset("AlphaBlendModeTest"));
+  ASSERT_EQ(rendered.exitCode, 0) << rendered.output;
+  std::ifstream in(stats);
+  const auto objects = nlohmann::json::parse(in)["objects"];
+  ASSERT_EQ(objects.size(), instances);
+  for (const auto& object : objects) {
+    const std::string line = "object '" + object["name"].get<std::string>() + "': " + object["shading"].get<std::string>() +
+                             " (" + object["reason"].get<std::string>() + ")\n";
+    EXPECT_NE(decoupled.output.find(line), std::string::npos) << line << " not in inspect's:\n" << decoupled.output;
+  }
+}
+
+// Two quads, each a mesh of its own whose texture (16² scaled 256 times by
+// KHR_texture_transform) asks for a 4096² level 0: two such triangle-ID maps
+// (85 MiB each with their levels) are more than lavapipe's 128 MiB storage
+// buffer, so one is shrunk to 2048², and render says so in one line.
+TEST(Cli, RenderWarnsOfAShrunkTriangleIdMap) {
+  const auto dir = tempDir() / "shrunk";
+  std::filesystem::create_directories(dir);
+  const float vertices[] = {0, 0, 0, 0, 1,  1, 0, 0, 1, 1,  1, 1, 0, 1, 0,  0, 1, 0, 0, 0};  // position, uv
+  const uint16_t indices[] = {0, 1, 2, 0, 2, 3};
+  std::vector<char> bytes(sizeof vertices + sizeof indices);
+  std::memcpy(bytes.data(), vertices, sizeof vertices);
+  std::memcpy(bytes.data() + sizeof vertices, indices, sizeof indices);
+  std::ofstream(dir / "quad.bin", std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+  const std::vector<uint8_t> texels(16 * 16 * 4, 200);
+  sg::image::writePng(dir / "grey.png", 16, 16, texels.data());
+  const auto gltf = nlohmann::json::parse(R"({
+    "asset": {"version": "2.0"}, "extensionsUsed": ["KHR_texture_transform"], "scene": 0,
+    "scenes": [{"nodes": [0, 1]}],
+    "nodes": [{"name": "left quad", "mesh": 0, "translation": [-1.1, 0, 0]},
+              {"name": "right quad", "mesh": 1, "translation": [0.1, 0, 0]}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "indices": 2, "material": 0}]},
+               {"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "indices": 2, "material": 0}]}],
+    "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0,
+                   "extensions": {"KHR_texture_transform": {"scale": [256, 256]}}}}}],
+    "textures": [{"source": 0}], "images": [{"uri": "grey.png"}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+                  {"bufferView": 0, "byteOffset": 12, "componentType": 5126, "count": 4, "type": "VEC2"},
+                  {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+    "bufferViews": [{"buffer": 0, "byteLength": 80, "byteStride": 20}, {"buffer": 0, "byteOffset": 80, "byteLength": 12}],
+    "buffers": [{"uri": "quad.bin", "byteLength": 92}]})");
+  std::ofstream(dir / "quads.gltf") << gltf.dump();
+  const auto r = run("render --mode decoupled --size 64x36 --frames 1 -o " + (dir / "quads.png").string() + " " +
+                     (dir / "quads.gltf").string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  size_t warnings = 0;
+  for (size_t at = r.output.find("warning: "); at != std::string::npos; at = r.output.find("warning: ", at + 1)) ++warnings;
+  EXPECT_EQ(warnings, 1u) << r.output;
+  EXPECT_NE(r.output.find("warning: object 'left quad' primitive 0: triangle-ID map shrunk to fit the 128 MiB buffer, "
+                          "level 0 4096 -> 2048\n"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("2 objects decoupled, 0 forward"), std::string::npos) << "shrunk, not forward: " << r.output;
 }
 
 TEST(Cli, MalformedGltfFailsWithTheFileAndTheProblem) {
