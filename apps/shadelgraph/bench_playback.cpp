@@ -13,6 +13,7 @@
 
 #include "animation_player.hpp"
 #include "bench_materials.hpp"
+#include "bench_sessions.hpp"
 #include "output_file.hpp"
 #include "scene_source.hpp"
 
@@ -64,9 +65,9 @@ nlohmann::json benchPlayback(gpu::Device& device, const std::string& scenePath, 
       if (f < 0) continue;  // warm-up: pipelines, the adjuster, the first pose's maps
       path.frameMs.push_back(frame.timings.gpuMs);
       if (!path.decoupled) continue;
-      const auto counters = path.shading->stats().counters;
-      path.shadelsPerPixel.push_back(counters.coveredPixels ? 64.0 * counters.chunksAllocated / counters.coveredPixels
-                                                            : 0.0);
+      const auto stats = path.shading->stats();
+      const auto& counters = stats.counters;
+      path.shadelsPerPixel.push_back(shadelsPerPixel(stats));
       path.misses += counters.compositeMisses;
       path.missesMax = std::max<uint64_t>(path.missesMax, counters.compositeMisses);
     }
