@@ -229,7 +229,7 @@ nlohmann::json benchScene(gpu::Device& device, const std::string& scenePath, uin
                        {"frame_ms_median", sessions[c].frameMedian()},
                        {"frame_ms_samples", sessions[c].frameMs},
                        {"pass_ms_median", passes},
-                       {"shadels_per_pixel", shadelsPerPixel(stats)},
+                       {"shadels_per_pixel", plugins::shadelsPerCoveredPixel(stats.counters)},
                        {"shade_memory_bytes", configs[c].decoupled ? stats.storageBytes + stats.remapBytes + stats.idMapBytes : 0},
                        {"overflow_chunks", stats.counters.overflowChunks},
                        {"composite_misses", stats.counters.compositeMisses},

@@ -1,15 +1,12 @@
 #include "bench_playback.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
-
-#include <builtin_plugins.hpp>
-#include <decoupled/decoupled_package.hpp>
-#include <shadelgraph/render/renderer.hpp>
 
 #include "animation_player.hpp"
 #include "bench_materials.hpp"
@@ -25,11 +22,9 @@ constexpr float kFps = 30.0f;
 struct Path {
   const char* name = "";
   bool decoupled = false;
-  scene::Scene scene;  // posed by its own player: the renderer's objects follow it
-  std::shared_ptr<plugins::DecoupledShading> shading;
-  std::unique_ptr<render::Renderer> renderer;
+  BenchSession session;  // its scene is posed by the path's own player: the renderer's objects follow it
   std::unique_ptr<AnimationPlayer> player;
-  std::vector<double> frameMs, shadelsPerPixel;
+  std::vector<double> shadelsPerPixel;
   uint64_t misses = 0, missesMax = 0;
 };
 
@@ -38,48 +33,42 @@ nlohmann::json benchPlayback(gpu::Device& device, const std::string& scenePath, 
   const scene::Scene loaded = loadSceneArgument(scenePath).scene;
   const std::string name = scenePath.empty() ? "default" : std::filesystem::path(scenePath).stem().string();
   if (loaded.animations.empty()) throw std::invalid_argument("--play: " + name + " has no animations");
-  std::vector<Path> paths(2);
+  std::array<Path, 2> paths;
   paths[0].name = "forward";
   paths[1].name = "decoupled";
   paths[1].decoupled = true;
   for (auto& path : paths) {
-    path.scene = loaded;
-    auto made = plugins::makeDecoupledRenderer(
-        device, path.scene, plugins::builtinRegistry(),
-        path.decoupled ? scene::ShadingMode::Decoupled : scene::ShadingMode::Forward, {});
-    path.shading = std::move(made.shading);
-    path.renderer = std::move(made.renderer);
-    path.player = std::make_unique<AnimationPlayer>(path.scene, "all");
+    path.session.make(device, loaded, path.decoupled ? scene::ShadingMode::Decoupled : scene::ShadingMode::Forward);
+    path.player = std::make_unique<AnimationPlayer>(path.session.scene, "all");
   }
   // As render frames it: the scene's first camera, else once around all the playback.
   const scene::Camera camera =
       loaded.cameras.empty()
           ? scene::frameBounds(paths[0].player->playbackBounds(), float(width) / float(height))
-          : paths[0].renderer->camera({.width = width, .height = height});
+          : paths[0].session.renderer->camera({.width = width, .height = height});
   std::fprintf(stderr, "[bench] %s %ux%u: playing %d frames at %.0f fps, forward and decoupled alternated\n",
                name.c_str(), width, height, frames, double(kFps));
   for (int f = -1; f < frames; ++f)
     for (auto& path : paths) {
-      path.player->poseAt(float(std::max(f, 0)) / kFps, *path.renderer);
-      const auto frame = path.renderer->render({.width = width, .height = height, .cameraOverride = camera});
+      path.player->poseAt(float(std::max(f, 0)) / kFps, *path.session.renderer);
+      const auto frame = path.session.renderer->render({.width = width, .height = height, .cameraOverride = camera});
       if (f < 0) continue;  // warm-up: pipelines, the adjuster, the first pose's maps
-      path.frameMs.push_back(frame.timings.gpuMs);
+      path.session.frameMs.push_back(frame.timings.gpuMs);
       if (!path.decoupled) continue;
-      const auto stats = path.shading->stats();
-      const auto& counters = stats.counters;
-      path.shadelsPerPixel.push_back(shadelsPerPixel(stats));
+      const auto counters = path.session.decoupled->stats().counters;
+      path.shadelsPerPixel.push_back(plugins::shadelsPerCoveredPixel(counters));
       path.misses += counters.compositeMisses;
       path.missesMax = std::max<uint64_t>(path.missesMax, counters.compositeMisses);
     }
-  const double forward = median(paths[0].frameMs);
+  const double forward = paths[0].session.frameMedian();
   nlohmann::json configs = nlohmann::json::array();
   for (const auto& path : paths) {
-    const double ms = median(path.frameMs);
+    const double ms = path.session.frameMedian();
     configs.push_back({{"config", path.name},
                        {"frame_ms_median", ms},
-                       {"frame_ms_samples", path.frameMs},
+                       {"frame_ms_samples", path.session.frameMs},
                        {"ratio_to_forward", forward > 0.0 ? ms / forward : 0.0},
-                       {"objects_decoupled", path.shading->stats().objects},
+                       {"objects_decoupled", path.session.decoupled->stats().objects},
                        {"shadels_per_pixel_median", median(path.shadelsPerPixel)},
                        {"composite_misses", path.misses},
                        {"composite_misses_max", path.missesMax}});

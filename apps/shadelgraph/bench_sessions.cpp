@@ -24,10 +24,6 @@ double BenchSession::passMedian(const std::string& pass) const {
 
 nlohmann::json BenchSession::passMedians() const { return medians(passMs); }
 
-double shadelsPerPixel(const plugins::DecoupledStats& stats) {
-  return stats.counters.coveredPixels ? double(plugins::shadelsStored(stats.counters)) / stats.counters.coveredPixels : 0.0;
-}
-
 void alternateFrames(const std::vector<BenchSession*>& sessions, int repetitions) {
   for (int rep = -1; rep < repetitions; ++rep)
     for (BenchSession* session : sessions) {

@@ -41,9 +41,6 @@ struct BenchSession {
   nlohmann::json passMedians() const;
 };
 
-// Shadels stored per covered pixel of the last frame (0 without covered pixels).
-double shadelsPerPixel(const plugins::DecoupledStats& stats);
-
 // Renders every session's view round-robin: one untimed warm-up round
 // (pipelines, the adjuster, last frame's visibility), then `repetitions`
 // rounds whose frames each session keeps.

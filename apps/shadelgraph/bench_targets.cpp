@@ -366,7 +366,7 @@ void measureCoverage(gpu::Device& device, const Scenes& scenes, const std::vecto
         continue;
       }
       rows.shadels.figures.push_back({.scene = name, .size = size.text, .detail = detail,
-                                      .value = shadelsPerPixel(stats),
+                                      .value = plugins::shadelsPerCoveredPixel(stats.counters),
                                       .context = {{"decoupled_objects", stats.objects},
                                                   {"covered_pixels", stats.counters.coveredPixels},
                                                   {"global_bias", stats.bias}}});

@@ -99,9 +99,7 @@ void writeStats(const std::string& path, const AppSession& session, const render
                        // Of the shaded chunks, the shadels no pixel reads (shadel masks): not shaded.
                        {"shadels_skipped", d.counters.shadelsSkipped},
                        // Stored (shaded or reused) per covered pixel: at shade rate 1 all are shaded.
-                       {"shadels_per_pixel", d.counters.coveredPixels
-                                                 ? double(plugins::shadelsStored(d.counters)) / d.counters.coveredPixels
-                                                 : 0.0},
+                       {"shadels_per_pixel", plugins::shadelsPerCoveredPixel(d.counters)},
                        {"shadels_reused_last_frame", uint64_t(d.counters.chunksReused) * 64},
                        // Over all --frames: raster frames, shade frames among them, shadels the
                        // other frames shaded because nothing valid was stored (the fill), and
@@ -232,7 +230,7 @@ void runRender(const RenderArgs& args) {
                 "%.2f shadels per covered pixel\n",
                 double(d.bias), d.counters.chunksMarked, d.counters.chunksAllocated, d.capacityChunks,
                 d.counters.overflowChunks, d.counters.compositeMisses,
-                d.counters.coveredPixels ? double(plugins::shadelsStored(d.counters)) / d.counters.coveredPixels : 0.0);
+                plugins::shadelsPerCoveredPixel(d.counters));
   if (d.objects && args.shadeBudget)
     std::printf("shade budget %.2f ms (%.4f ms a chunk): last frame %u chunks shaded (%u for their age), %u left "
                 "stale, oldest %u frames\n",

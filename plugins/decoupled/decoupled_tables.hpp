@@ -19,6 +19,10 @@ using DecoupledParams = shader::SgDecoupledParams;
 constexpr uint64_t shadelsStored(const ShadeCounters& c) { return 64ull * c.chunksAllocated - c.shadelsSkipped; }
 // Shadels the layers shaded this frame.
 constexpr uint64_t shadelsShaded(const ShadeCounters& c) { return 64ull * c.chunksShaded - c.shadelsSkipped; }
+// Shadels stored per covered pixel (0 without covered pixels).
+constexpr double shadelsPerCoveredPixel(const ShadeCounters& c) {
+  return c.coveredPixels ? double(shadelsStored(c)) / c.coveredPixels : 0.0;
+}
 
 constexpr uint64_t workBufferBytes(uint32_t objects, uint32_t items) {
   return 4ull * (uint64_t{shader::kWorkSlotsPerObject} * objects + shader::kWorkGlobalSlots +

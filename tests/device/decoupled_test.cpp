@@ -76,7 +76,7 @@ TEST_P(DecoupledScenes, AgreesWithForward) {
     std::printf("%-24s decoupled vs forward: PSNR %.2f dB, mean |d| %.2f/255, max |d| %d/255, %.2f%% pixels > 8/255, "
                 "%.2f shadels per covered pixel\n",
                 label.c_str(), diff.psnr, diff.meanAbs, diff.maxAbs, 100.0 * diff.fractionAbove8,
-                stats.counters.coveredPixels ? double(plugins::shadelsStored(stats.counters)) / stats.counters.coveredPixels : 0.0);
+                plugins::shadelsPerCoveredPixel(stats.counters));
     RecordProperty(filter == 2 ? "psnr_trilinear" : "psnr_bilinear", std::to_string(diff.psnr));
     EXPECT_GE(diff.psnr, 30.0) << label;
     EXPECT_LT(diff.meanAbs, filter == 2 ? 2.0 : 3.0) << label;

@@ -87,7 +87,7 @@ void countersPanel(Viewer& viewer) {
   ImGui::Text("shadels marked %llu, allocated %llu of %llu", 64ull * c.chunksMarked, 64ull * c.chunksAllocated,
               64ull * d.capacityChunks);
   ImGui::Text("overflow chunks %u, composite misses %u", c.overflowChunks, c.compositeMisses);
-  ImGui::Text("shadels per covered pixel %.2f", c.coveredPixels ? double(plugins::shadelsStored(c)) / c.coveredPixels : 0.0);
+  ImGui::Text("shadels per covered pixel %.2f", plugins::shadelsPerCoveredPixel(c));
   ImGui::Text("bias %.2f, reused %llu shadels, shaded %llu", double(d.bias), 64ull * c.chunksReused, 64ull * c.chunksShaded);
   ImGui::Text("shade storage %s, %s", mib(d.storageBytes).c_str(), d.shadeFrame ? "shade frame" : "fill frame");
 }
