@@ -1,6 +1,7 @@
 #include "plan_queries.hpp"
 
 #include <shadelgraph/graph/place_transients.hpp>
+#include <shadelgraph/graph/transient_peak.hpp>
 
 #include <gtest/gtest.h>
 
@@ -56,6 +57,33 @@ TEST(GraphAliasing, DisjointLifetimesShareMemory) {
   EXPECT_EQ(aliasesOf(plan, chain.c), std::vector<ResourceId>{chain.a.id});
   EXPECT_EQ(plan.heapBytes, 2024u);  // a and c at 0, b at 1024 (aligned)
   EXPECT_EQ(plan.heapBytesWithoutAliasing, 1024u + 1024u + 1000u);
+}
+
+// The most bytes in use at once: a and b at p2 (b and c at p3 tie, the first
+// is reported); no packing gets the aliased heap below it.
+TEST(GraphAliasing, TransientPeakIsTheMostBytesInUseAtOnce) {
+  const Chain chain;
+  const CompiledPlan plan = compile(chain.g, chain.options({kPlain, kPlain, kPlain}));
+  const TransientPeak peak = transientPeak(plan);
+  EXPECT_EQ(peak.position, 1u);
+  EXPECT_EQ(peak.pass, "p2");
+  EXPECT_EQ(peak.bytes, 2000u);
+  ASSERT_EQ(peak.live.size(), 2u);
+  EXPECT_EQ(peak.live[0].name, "a");
+  EXPECT_EQ(peak.live[1].name, "b");
+  EXPECT_GE(plan.heapBytes, peak.bytes);
+  // Without aliasing the peak is the same: it depends on lifetimes, not on placement.
+  EXPECT_EQ(transientPeak(compile(chain.g, chain.options({kPlain, kPlain, kPlain}, false))).bytes, 2000u);
+}
+
+TEST(GraphAliasing, TransientPeakOfAPlanWithoutTransients) {
+  RenderGraph g;
+  auto& p = g.addPass("p", QueueClass::Graphics, PassKind::Compute);
+  p.sideEffect();
+  const TransientPeak peak = transientPeak(compile(g, extent()));
+  EXPECT_EQ(peak.position, kInvalidIndex);
+  EXPECT_EQ(peak.bytes, 0u);
+  EXPECT_TRUE(peak.live.empty());
 }
 
 TEST(GraphAliasing, OverlappingLifetimesDoNotShare) {
