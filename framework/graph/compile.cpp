@@ -75,7 +75,11 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
   plan.outputWidth = options.outputWidth;
   plan.outputHeight = options.outputHeight;
   orderPasses(deps_, culled_, plan.order);
-  orderTailLast(graph, versions_, deps_, plan.order);
+  // What the results need, once: orderTailLast() keeps the order topological,
+  // so planFrameBoundary() would find the same.
+  std::vector<bool> needed;
+  neededByResults(graph, versions_, deps_, plan.order, needed);
+  orderTailLast(needed, plan.order);
   planAllResources(graph, plan.order, options, usage_, plan.resources, requirements_, transients_,
                    plan.memoryEstimated);
   lendTo(plan.aliases, memory_.aliases, [&] {
@@ -102,7 +106,7 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
     lendTo(plan.waits, schedule_.waits,
            [&] { assignQueues(graph, plan.order, deps_, barriers_.handoffs, schedule_); });
   });
-  planFrameBoundary(graph, versions_, deps_, schedule_.passBatch, plan);
+  planFrameBoundary(graph, needed, schedule_.passBatch, plan);
 
   // Accesses: one copy when the declaration holds them in pass order already
   // (passes declared one after the other), else pass by pass.

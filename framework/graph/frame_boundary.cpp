@@ -12,10 +12,17 @@ bool isExternal(ResourceKind kind) { return !isTransient(kind); }
 
 std::vector<bool> neededByResults(const RenderGraph& graph, const VersionTable& versions,
                                   const DependencyGraph& deps, std::span<const PassId> order) {
+  std::vector<bool> needed;
+  neededByResults(graph, versions, deps, order, needed);
+  return needed;
+}
+
+void neededByResults(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,
+                     std::span<const PassId> order, std::vector<bool>& needed) {
   const GraphDeclaration& declared = graph.declaration();
   // Roots, then (backwards over the order, as dependencies point forwards)
   // every pass a needed pass depends on.
-  std::vector<bool> needed(graph.passCount(), false);
+  needed.assign(graph.passCount(), false);
   for (const ResourceHandle output : declared.outputs) {
     const PassId producer = versions.producerOf(output.id, output.version);
     if (producer.valid()) needed[producer.index] = true;
@@ -33,12 +40,14 @@ std::vector<bool> neededByResults(const RenderGraph& graph, const VersionTable& 
         break;
       }
   }
-  return needed;
 }
 
 void orderTailLast(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,
                    std::vector<PassId>& order) {
-  const std::vector<bool> needed = neededByResults(graph, versions, deps, order);
+  orderTailLast(neededByResults(graph, versions, deps, order), order);
+}
+
+void orderTailLast(const std::vector<bool>& needed, std::vector<PassId>& order) {
   bool seenTail = false, needsMove = false;
   for (const PassId p : order) {
     seenTail = seenTail || !needed[p.index];
@@ -50,8 +59,12 @@ void orderTailLast(const RenderGraph& graph, const VersionTable& versions, const
 
 void planFrameBoundary(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,
                        std::span<const uint32_t> passBatch, CompiledPlan& plan) {
+  planFrameBoundary(graph, neededByResults(graph, versions, deps, plan.order), passBatch, plan);
+}
+
+void planFrameBoundary(const RenderGraph& graph, const std::vector<bool>& needed, std::span<const uint32_t> passBatch,
+                       CompiledPlan& plan) {
   const GraphDeclaration& declared = graph.declaration();
-  const std::vector<bool> needed = neededByResults(graph, versions, deps, plan.order);
 
   plan.hostWaitBatch.fill(kInvalidIndex);
   for (const PassId p : plan.order)

@@ -157,9 +157,11 @@ void placeTransients(std::span<const TransientLifetime> transients, uint32_t res
     unaliasedSize[heap] = alignUp(unaliasedSize[heap], req.alignment) + req.size;
     plan.placements[t.id] = {heap, offset, req.size};
 
-    std::sort(previous.begin(), previous.end(),
-              [&](uint32_t a, uint32_t b) { return transients[a].id < transients[b].id; });
-    previous.erase(std::unique(previous.begin(), previous.end()), previous.end());
+    if (previous.size() > 1) {  // usually none or one
+      std::sort(previous.begin(), previous.end(),
+                [&](uint32_t a, uint32_t b) { return transients[a].id < transients[b].id; });
+      previous.erase(std::unique(previous.begin(), previous.end()), previous.end());
+    }
     for (const uint32_t p : previous) {
       const TransientLifetime& before = transients[p];
       if (before.queues != taker) {

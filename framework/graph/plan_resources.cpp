@@ -20,9 +20,8 @@ void gatherUsage(const RenderGraph& graph, std::span<const PassId> order, std::v
 
 void planResource(const ResourceDecl& decl, const ResourceUsage& usage, uint32_t outputWidth, uint32_t outputHeight,
                   PlannedResource& out) {
-  std::string name = std::move(out.name);  // keep the string's buffer for the assignment below
-  out = PlannedResource{};
-  out.name = std::move(name);
+  // Every field written once, in place (no whole-struct temporary): the entry
+  // is reused frame after frame, and its name keeps its buffer.
   out.name = decl.name;
   out.kind = decl.kind;
   out.culled = usage.firstUse == kInvalidIndex;
@@ -30,19 +29,27 @@ void planResource(const ResourceDecl& decl, const ResourceUsage& usage, uint32_t
   out.historyOf = decl.historyOf;
   out.firstUse = usage.firstUse;
   out.lastUse = usage.lastUse;
-  out.desc.type = decl.type;
+  out.aliasesWith = {};
+  out.memory = {};
+  out.requirements = {};
+  ResourceDesc& desc = out.desc;
+  desc.type = decl.type;
   if (decl.type == ResourceType::Image) {
-    out.desc.image = resolveImageDesc(decl.image, outputWidth, outputHeight);
-    out.desc.imageUsage = usage.imageUsage;
+    desc.image = resolveImageDesc(decl.image, outputWidth, outputHeight);
+    desc.bufferSize = 0;
+    desc.imageUsage = usage.imageUsage;
+    desc.bufferUsage = BufferUsage::None;
   } else {
-    out.desc.bufferSize = decl.buffer.size;
-    out.desc.bufferUsage = usage.bufferUsage;
+    desc.image = {};
+    desc.bufferSize = decl.buffer.size;
+    desc.imageUsage = ImageUsage::None;
+    desc.bufferUsage = usage.bufferUsage;
   }
-  out.desc.queues = usage.queues;
+  desc.queues = usage.queues;
   // Resources shared between queues use concurrent sharing, so no queue-family
   // ownership transfer is ever needed (see docs: simpler, and lavapipe has a
   // single family anyway; forgotten ownership transfers are a classic bug).
-  out.desc.concurrent = queueCount(usage.queues) > 1;
+  desc.concurrent = queueCount(usage.queues) > 1;
   out.initialState = decl.initialState;
   out.finalState = decl.finalState;
 }

@@ -4,7 +4,19 @@
 
 namespace sg::graph {
 
-RenderGraph::RenderGraph() : declaration_(std::make_unique<GraphDeclaration>()) {}
+// Room for a typical frame from the start (tens of passes and resources): a new
+// graph then regrows its arrays a few times instead of from one element up.
+RenderGraph::RenderGraph() : declaration_(std::make_unique<GraphDeclaration>()) {
+  constexpr std::size_t kPasses = 64, kResources = 64, kAccesses = 192;
+  GraphDeclaration& d = *declaration_;
+  d.resources.reserve(kResources);
+  d.traits.reserve(kResources);
+  d.versionCounts.reserve(kResources);
+  d.passes.reserve(kPasses);
+  d.passNames.reserve(kPasses);
+  d.callbacks.reserve(kPasses);
+  d.accesses.reserve(kAccesses);
+}
 
 ResourceHandle RenderGraph::add(ResourceDecl&& decl) {
   declaration_->resources.push_back(std::move(decl));

@@ -46,6 +46,7 @@ class Validator {
       return;
     }
     if (r.image.format == Format::Undefined) error("", r.name, "has no format");
+    if (imageSizeLooksFine(r.image)) return;
     const ResolvedImageDesc d = resolveImageDesc(r.image, options_.outputWidth, options_.outputHeight);
     if (r.image.size.mode == Size::Mode::Relative && (options_.outputWidth == 0 || options_.outputHeight == 0)) {
       error("", r.name, "has a size relative to the output, but the output extent is 0x0");
@@ -57,6 +58,17 @@ class Validator {
     if (d.layers == 0 || d.mipLevels == 0 || d.samples == 0) {
       error("", r.name, "has zero layers, mip levels or samples");
     }
+  }
+
+  // True when the size checks below find nothing, without resolving the size
+  // (a relative extent is 0 only when the output's is or the scale is not positive).
+  bool imageSizeLooksFine(const ImageDesc& image) const {
+    const Size& size = image.size;
+    const bool sized = size.mode == Size::Mode::Relative
+                           ? options_.outputWidth != 0 && options_.outputHeight != 0 && size.scaleX > 0.0f &&
+                                 size.scaleY > 0.0f
+                           : size.width != 0 && size.height != 0;
+    return sized && image.depth != 0 && image.layers != 0 && image.mipLevels != 0 && image.samples != 0;
   }
 
   void checkPass(PassId id) {
