@@ -10,13 +10,6 @@ bool isExternal(ResourceKind kind) { return !isTransient(kind); }
 
 }  // namespace
 
-std::vector<bool> neededByResults(const RenderGraph& graph, const VersionTable& versions,
-                                  const DependencyGraph& deps, std::span<const PassId> order) {
-  std::vector<bool> needed;
-  neededByResults(graph, versions, deps, order, needed);
-  return needed;
-}
-
 void neededByResults(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,
                      std::span<const PassId> order, std::vector<bool>& needed) {
   const GraphDeclaration& declared = graph.declaration();
@@ -42,11 +35,6 @@ void neededByResults(const RenderGraph& graph, const VersionTable& versions, con
   }
 }
 
-void orderTailLast(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,
-                   std::vector<PassId>& order) {
-  orderTailLast(neededByResults(graph, versions, deps, order), order);
-}
-
 void orderTailLast(const std::vector<bool>& needed, std::vector<PassId>& order) {
   bool seenTail = false, needsMove = false;
   for (const PassId p : order) {
@@ -55,11 +43,6 @@ void orderTailLast(const std::vector<bool>& needed, std::vector<PassId>& order) 
   }
   // Needed passes never depend on the others: both runs keep a valid order.
   if (needsMove) std::stable_partition(order.begin(), order.end(), [&](PassId p) { return bool(needed[p.index]); });
-}
-
-void planFrameBoundary(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,
-                       std::span<const uint32_t> passBatch, CompiledPlan& plan) {
-  planFrameBoundary(graph, neededByResults(graph, versions, deps, plan.order), passBatch, plan);
 }
 
 void planFrameBoundary(const RenderGraph& graph, const std::vector<bool>& needed, std::span<const uint32_t> passBatch,

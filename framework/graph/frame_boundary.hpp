@@ -30,24 +30,15 @@ namespace sg::graph {
 // (output producer, imported-resource access, side effect) or one depends on it.
 // `order` is any topological order of the kept passes (Kahn's, or it after
 // orderTailLast(): the answer is the same).
-std::vector<bool> neededByResults(const RenderGraph& graph, const VersionTable& versions,
-                                  const DependencyGraph& deps, std::span<const PassId> order);
-// The same into `needed`, reusing its memory.
 void neededByResults(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,
                      std::span<const PassId> order, std::vector<bool>& needed);
 // Moves the passes nothing of the frame needs after all the others (keeping
 // each group's order), so that on any queue the tail is submitted last and,
 // on a single physical queue (lavapipe), runs after what the host waits for.
-void orderTailLast(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,
-                   std::vector<PassId>& order);
-// The same from neededByResults()'s answer (computed once, kept for planFrameBoundary()).
 void orderTailLast(const std::vector<bool>& needed, std::vector<PassId>& order);
 
 // Marks the tail batches (Batch::tail), sets plan.hostWaitBatch and fills
 // plan.externalUses. `plan` must hold the order, resources and batches.
-void planFrameBoundary(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,
-                       std::span<const uint32_t> passBatch, CompiledPlan& plan);
-// The same from neededByResults()'s answer.
 void planFrameBoundary(const RenderGraph& graph, const std::vector<bool>& needed, std::span<const uint32_t> passBatch,
                        CompiledPlan& plan);
 
