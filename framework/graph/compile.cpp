@@ -77,7 +77,7 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
   orderPasses(deps_, culled_, plan.order);
   // What the results need, once: orderTailLast() keeps the order topological,
   // so planFrameBoundary() would find the same.
-  std::vector<bool> needed;
+  std::vector<bool>& needed = needed_;
   neededByResults(graph, versions_, deps_, plan.order, needed);
   orderTailLast(needed, plan.order);
   planAllResources(graph, plan.order, options, usage_, plan.resources, requirements_, transients_,

@@ -33,6 +33,7 @@ class PlanCompiler {
   VersionTable versions_;
   DependencyGraph deps_;
   std::vector<bool> culled_;
+  std::vector<bool> needed_;  // per pass: the frame's results need it
   std::vector<ResourceUsage> usage_;
   std::vector<MemoryRequirements> requirements_;
   std::vector<TransientLifetime> transients_;

@@ -1,122 +1,328 @@
 #include <shadelgraph/graph/free_ranges.hpp>
 
-#include <algorithm>
+#include <bit>
 
 namespace sg::graph {
+namespace {
+
+// Size class of a run's length: exact below 4, else a power of two split in
+// quarters (monotonic in the length, 256 classes for 64-bit lengths).
+uint32_t sizeClass(uint64_t length) {
+  if (length < 4) return static_cast<uint32_t>(length);
+  const auto log = static_cast<uint32_t>(63 - std::countl_zero(length));
+  return log * 4 + static_cast<uint32_t>((length >> (log - 2)) & 3);
+}
+
+}  // namespace
 
 void FreeRanges::clear(QueueMask queues) {
-  fragments_.clear();
+  for (const Block& b : blocks_) {
+    if (!b.used && b.occupant != kNobody && b.occupant < pieces_.size()) pieces_[b.occupant] = kNone;
+  }
+  blocks_.clear();
+  unusedBlocks_.clear();
+  for (Bins& bins : bins_) bins.nonEmpty.fill(0);
+  bottom_ = top_ = kNone;
   queues_ = queues;
 }
 
-uint64_t FreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
-                              std::vector<uint32_t>& previous) {
-  const QueueMask taker = queueCount(queue) == 1 ? queue : QueueMask::None;
-  // One walk over runs of adjacent fragments `taker` may take, the best fitting kept.
-  std::size_t best = 0, bestEnd = 0;  // fragments of the best run: [best, bestEnd)
-  uint64_t bestBegin = 0, bestLength = ~uint64_t{0};
-  bool found = false;
-  uint64_t runBegin = 0, runEnd = 0;  // the last run seen
-  std::size_t runFirst = 0, runLast = 0;
-  const Fragment* const fragments = fragments_.data();
-  const std::size_t n = fragments_.size();
-  for (std::size_t i = 0; i < n;) {
-    if (!any(fragments[i].queues & taker)) {
-      ++i;
-      continue;
-    }
-    runFirst = i;
-    runBegin = fragments[i].begin;
-    runEnd = fragments[i].end;
-    for (++i; i < n && fragments[i].begin == runEnd && any(fragments[i].queues & taker); ++i) runEnd = fragments[i].end;
-    runLast = i;
-    const uint64_t length = runEnd - runBegin;
-    if (length < size || length >= bestLength || alignUp(runBegin, alignment) + size > runEnd) continue;
-    best = runFirst;
-    bestEnd = runLast;
-    bestBegin = runBegin;
-    bestLength = length;
-    found = true;
-  }
-  const bool inRun = runLast == n && n != 0;  // the last fragment ends a run `taker` may take
+uint32_t FreeRanges::runHead(uint32_t b, uint32_t queue) const {
+  const QueueMask q = static_cast<QueueMask>(1u << queue);
+  while (freeFor(blocks_[b].prev, q)) b = blocks_[b].prev;
+  return b;
+}
 
+void FreeRanges::bin(uint32_t head, uint32_t queue, uint64_t end) {
+  Bins& bins = bins_[queue];
+  const uint32_t c = sizeClass(end - blocks_[head].begin);
+  RunLink& link = blocks_[head].runs[queue];
+  link.end = end;
+  link.binPrev = kNone;
+  uint64_t& word = bins.nonEmpty[c / 64];
+  const uint64_t bit = uint64_t{1} << (c % 64);
+  link.binNext = (word & bit) ? bins.first[c] : kNone;
+  if (link.binNext != kNone) blocks_[link.binNext].runs[queue].binPrev = head;
+  bins.first[c] = head;
+  word |= bit;
+}
+
+void FreeRanges::unbin(uint32_t head, uint32_t queue) {
+  Bins& bins = bins_[queue];
+  const RunLink& link = blocks_[head].runs[queue];
+  if (link.binNext != kNone) blocks_[link.binNext].runs[queue].binPrev = link.binPrev;
+  if (link.binPrev != kNone) {
+    blocks_[link.binPrev].runs[queue].binNext = link.binNext;
+    return;
+  }
+  const uint32_t c = sizeClass(link.end - blocks_[head].begin);
+  bins.first[c] = link.binNext;
+  if (link.binNext == kNone) bins.nonEmpty[c / 64] &= ~(uint64_t{1} << (c % 64));
+}
+
+uint32_t FreeRanges::bestFit(uint32_t queue, uint64_t size, uint64_t alignment) const {
+  const Bins& bins = bins_[queue];
+  // The first class holding a fitting run holds the smallest one: search it whole.
+  for (uint32_t c = sizeClass(size); c < kBins; ++c) {
+    uint32_t word = c / 64;
+    uint64_t bits = bins.nonEmpty[word] & (~uint64_t{0} << (c % 64));
+    while (bits == 0) {
+      if (++word == bins.nonEmpty.size()) return kNone;
+      bits = bins.nonEmpty[word];
+    }
+    c = word * 64 + static_cast<uint32_t>(std::countr_zero(bits));
+    uint32_t best = kNone;
+    uint64_t bestLength = ~uint64_t{0}, bestBegin = 0;
+    for (uint32_t h = bins.first[c]; h != kNone; h = blocks_[h].runs[queue].binNext) {
+      const uint64_t begin = blocks_[h].begin, end = blocks_[h].runs[queue].end;
+      const uint64_t length = end - begin;
+      if (length < size || length > bestLength || (length == bestLength && begin > bestBegin)) continue;
+      if (alignUp(begin, alignment) + size > end) continue;
+      best = h;
+      bestLength = length;
+      bestBegin = begin;
+    }
+    if (best != kNone) return best;
+  }
+  return kNone;
+}
+
+uint64_t FreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
+                              std::vector<uint32_t>& previous, uint32_t& block) {
+  if (size == 0) size = 1;  // a used block of no bytes would split a run that nothing took
+  const bool single = queueCount(queue) == 1;
+  const auto q = static_cast<uint32_t>(std::countr_zero(static_cast<uint32_t>(queue)));
+  uint32_t head = single ? bestFit(q, size, alignment) : kNone;
   uint64_t offset = 0;
-  if (found) {
-    offset = alignUp(bestBegin, alignment);
+  if (head != kNone) {
+    offset = alignUp(blocks_[head].begin, alignment);
   } else {
-    // Grow the heap, starting inside the last run if it ends at the top.
-    const bool fromTop = inRun && runEnd == heapSize;
-    best = fromTop ? runFirst : n;
-    offset = alignUp(fromTop ? runBegin : heapSize, alignment);
+    // Grow the heap, starting inside the run at the top if `queue` may take it.
+    if (single && freeFor(top_, queue)) head = runHead(top_, q);
+    offset = alignUp(head != kNone ? blocks_[head].begin : heapSize, alignment);
     if (offset > heapSize) {  // fresh padding below the new range: free for every queue
-      fragments_.push_back({heapSize, offset, kNobody, queues_});
+      const uint32_t padding = newBlock();
+      Block& p = blocks_[padding];
+      p.begin = heapSize;
+      p.end = offset;
+      p.occupant = kNobody;
+      insertAfter(padding, top_);
+      joinRuns(padding, queues_);
     }
     heapSize = offset + size;
-    bestEnd = fragments_.size();
   }
-
-  // Take [offset, end) out of the fragments that overlap it; report their users.
-  const uint64_t end = offset + size;
-  std::size_t first = best;
-  while (first < bestEnd && fragments_[first].end <= offset) ++first;
-  std::size_t last = first;
-  for (; last < bestEnd && fragments_[last].begin < end; ++last) {
-    if (fragments_[last].occupant != kNobody) previous.push_back(fragments_[last].occupant);
-  }
-  if (first == last) return offset;
-  Fragment rest[2];
-  std::size_t count = 0;
-  if (fragments_[first].begin < offset) {
-    rest[count] = fragments_[first];
-    rest[count++].end = offset;
-  }
-  if (fragments_[last - 1].end > end) {
-    rest[count] = fragments_[last - 1];
-    rest[count++].begin = end;
-  }
-  splice(first, last, rest, count);
+  block = take(head, offset, offset + size, previous);
   return offset;
 }
 
-void FreeRanges::release(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues) {
-  const auto at = std::lower_bound(fragments_.begin(), fragments_.end(), offset,
-                                   [](const Fragment& f, uint64_t o) { return f.begin < o; });
-  fragments_.insert(at, {offset, offset + size, occupant, queues & queues_});
+uint32_t FreeRanges::take(uint32_t first, uint64_t offset, uint64_t end, std::vector<uint32_t>& previous) {
+  while (first != kNone && blocks_[first].end <= offset) first = blocks_[first].next;
+  std::vector<uint32_t>& taken = taken_;
+  taken.clear();
+  for (uint32_t b = first; b != kNone && blocks_[b].begin < end; b = blocks_[b].next) taken.push_back(b);
+
+  const uint32_t used = newBlock();
+  blocks_[used].begin = offset;
+  blocks_[used].end = end;
+  blocks_[used].used = true;
+  if (taken.empty()) {  // above the old top
+    insertAfter(used, top_);
+    return used;
+  }
+
+  // Take the runs through the taken fragments out of their bins, remembering
+  // where the first one began and the last one ended, per queue.
+  QueueMask touched = QueueMask::None;
+  std::array<uint32_t, kQueueClassCount> firstHead{};
+  std::array<uint64_t, kQueueClassCount> lastEnd{};
+  for (std::size_t i = 0; i < taken.size(); ++i) {
+    const Block& b = blocks_[taken[i]];
+    if (b.occupant != kNobody) previous.push_back(b.occupant);
+    const QueueMask starts = i == 0 ? b.queues : b.queues & ~blocks_[taken[i - 1]].queues;
+    for (auto bits = static_cast<uint32_t>(starts); bits != 0; bits &= bits - 1) {
+      const auto q = static_cast<uint32_t>(std::countr_zero(bits));
+      const uint32_t head = i == 0 ? runHead(taken[i], q) : taken[i];
+      if (!any(touched & static_cast<QueueMask>(1u << q))) firstHead[q] = head;
+      lastEnd[q] = blocks_[head].runs[q].end;
+      unbin(head, q);
+    }
+    touched |= b.queues;
+  }
+
+  // What is left below and above the taken bytes stays free, in place.
+  const uint32_t f = taken.front(), g = taken.back();
+  const QueueMask firstQueues = blocks_[f].queues, lastQueues = blocks_[g].queues;
+  const bool lower = blocks_[f].begin < offset;
+  uint32_t upper = kNone;
+  bool newUpper = false;
+  if (blocks_[g].end > end) {
+    newUpper = f == g && lower;
+    if (newUpper) {  // a cut out of one fragment: the part above is a new one of the same user
+      upper = newBlock();
+      Block& u = blocks_[upper];
+      u = blocks_[g];
+      u.begin = end;
+      u.prev = u.next = kNone;
+      if (u.occupant != kNobody) addPiece(upper);
+    } else {
+      upper = g;
+      blocks_[g].begin = end;
+    }
+  }
+  const uint32_t below = lower ? f : blocks_[f].prev;
+  for (const uint32_t b : taken) {
+    if ((b == f && lower) || b == upper) continue;
+    unlink(b);
+    if (blocks_[b].occupant != kNobody) removePiece(b);
+    unusedBlocks_.push_back(b);
+  }
+  if (lower) blocks_[f].end = offset;
+  insertAfter(used, below);
+  if (newUpper) insertAfter(upper, used);
+
+  // The runs left below and above (in part or whole outside the taken blocks).
+  const uint32_t above = blocks_[used].next;
+  for (auto bits = static_cast<uint32_t>(touched); bits != 0; bits &= bits - 1) {
+    const auto q = static_cast<uint32_t>(std::countr_zero(bits));
+    const auto mask = static_cast<QueueMask>(1u << q);
+    if (any(firstQueues & mask) && (lower || firstHead[q] != f)) bin(firstHead[q], q, offset);
+    if (any(lastQueues & mask) && lastEnd[q] > end) bin(above, q, lastEnd[q]);
+  }
+  return used;
 }
 
-void FreeRanges::allow(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues) {
+void FreeRanges::joinRuns(uint32_t b, QueueMask queues) {
+  const uint32_t left = blocks_[b].prev, right = blocks_[b].next;
+  for (auto bits = static_cast<uint32_t>(queues); bits != 0; bits &= bits - 1) {
+    const auto q = static_cast<uint32_t>(std::countr_zero(bits));
+    const auto mask = static_cast<QueueMask>(1u << q);
+    uint32_t head = b;
+    uint64_t end = blocks_[b].end;
+    if (freeFor(left, mask)) {
+      head = runHead(left, q);
+      unbin(head, q);
+    }
+    if (freeFor(right, mask)) {  // it heads its run: `b` was not in it
+      end = blocks_[right].runs[q].end;
+      unbin(right, q);
+    }
+    bin(head, q, end);
+  }
+  blocks_[b].queues |= queues;
+}
+
+void FreeRanges::release(uint32_t block, uint32_t occupant, QueueMask queues) {
+  Block& b = blocks_[block];
+  b.used = false;
+  b.occupant = occupant;
+  b.queues = QueueMask::None;
+  addPiece(block);
+  joinRuns(block, queues & queues_);
+}
+
+void FreeRanges::allow(uint32_t occupant, QueueMask queues) {
   queues &= queues_;
-  if (!any(queues)) return;
-  auto it = std::lower_bound(fragments_.begin(), fragments_.end(), offset,
-                             [](const Fragment& f, uint64_t o) { return f.end <= o; });
-  for (; it != fragments_.end() && it->begin < offset + size; ++it) {
-    if (it->occupant == occupant) it->queues |= queues;
+  if (!any(queues) || occupant >= pieces_.size()) return;
+  for (uint32_t b = pieces_[occupant]; b != kNone; b = blocks_[b].pieceNext) {
+    const QueueMask added = queues & ~blocks_[b].queues;
+    if (any(added)) joinRuns(b, added);
   }
 }
 
 std::vector<FreeRanges::Span> FreeRanges::rangesFor(QueueClass queue) const {
   std::vector<Span> spans;
-  for (const Fragment& f : fragments_) {
-    if (!any(f.queues & toMask(queue))) continue;
-    if (!spans.empty() && spans.back().end == f.begin) {
-      spans.back().end = f.end;
+  for (uint32_t i = bottom_; i != kNone; i = blocks_[i].next) {
+    const Block& b = blocks_[i];
+    if (!freeFor(i, toMask(queue))) continue;
+    if (!spans.empty() && spans.back().end == b.begin) {
+      spans.back().end = b.end;
     } else {
-      spans.push_back({f.begin, f.end});
+      spans.push_back({b.begin, b.end});
     }
   }
   return spans;
 }
 
-void FreeRanges::splice(std::size_t first, std::size_t last, const Fragment* rest, std::size_t count) {
-  const std::size_t removed = last - first;
-  const auto at = fragments_.begin() + static_cast<std::ptrdiff_t>(first);
-  if (count <= removed) {
-    std::copy(rest, rest + count, at);
-    fragments_.erase(at + static_cast<std::ptrdiff_t>(count), at + static_cast<std::ptrdiff_t>(removed));
-  } else {
-    std::copy(rest, rest + removed, at);
-    fragments_.insert(at + static_cast<std::ptrdiff_t>(removed), rest + removed, rest + count);
+std::size_t FreeRanges::fragmentCount() const {
+  std::size_t count = 0;
+  for (uint32_t i = bottom_; i != kNone; i = blocks_[i].next) count += blocks_[i].used ? 0 : 1;
+  return count;
+}
+
+bool FreeRanges::consistent(uint64_t heapSize) const {
+  uint64_t at = 0;
+  uint32_t prev = kNone;
+  std::size_t runs[kQueueClassCount] = {};
+  for (uint32_t i = bottom_; i != kNone; prev = i, i = blocks_[i].next) {
+    const Block& b = blocks_[i];
+    if (b.prev != prev || b.begin != at || b.end <= b.begin) return false;
+    at = b.end;
+    for (uint32_t q = 0; q < kQueueClassCount; ++q) {
+      const auto mask = static_cast<QueueMask>(1u << q);
+      if (!freeFor(i, mask) || freeFor(b.prev, mask)) continue;  // not a run's head
+      uint32_t last = i;
+      while (freeFor(blocks_[last].next, mask)) last = blocks_[last].next;
+      if (b.runs[q].end != blocks_[last].end) return false;
+      // It is in the bin of its length.
+      const uint32_t c = sizeClass(b.runs[q].end - b.begin);
+      if (!(bins_[q].nonEmpty[c / 64] >> (c % 64) & 1)) return false;
+      uint32_t h = bins_[q].first[c];
+      while (h != kNone && h != i) h = blocks_[h].runs[q].binNext;
+      if (h != i) return false;
+      ++runs[q];
+    }
   }
+  if (prev != top_ || at != heapSize) return false;
+  for (uint32_t q = 0; q < kQueueClassCount; ++q) {
+    std::size_t binned = 0;
+    for (uint32_t c = 0; c < kBins; ++c) {
+      if (!(bins_[q].nonEmpty[c / 64] >> (c % 64) & 1)) continue;
+      for (uint32_t h = bins_[q].first[c]; h != kNone; h = blocks_[h].runs[q].binNext) ++binned;
+    }
+    if (binned != runs[q]) return false;
+  }
+  return true;
+}
+
+uint32_t FreeRanges::newBlock() {
+  uint32_t b = 0;
+  if (unusedBlocks_.empty()) {
+    b = static_cast<uint32_t>(blocks_.size());
+    blocks_.emplace_back();
+  } else {
+    b = unusedBlocks_.back();
+    unusedBlocks_.pop_back();
+    blocks_[b] = Block{};
+  }
+  return b;
+}
+
+void FreeRanges::insertAfter(uint32_t b, uint32_t after) {
+  Block& block = blocks_[b];
+  block.prev = after;
+  block.next = after == kNone ? bottom_ : blocks_[after].next;
+  (after == kNone ? bottom_ : blocks_[after].next) = b;
+  (block.next == kNone ? top_ : blocks_[block.next].prev) = b;
+}
+
+void FreeRanges::unlink(uint32_t b) {
+  const Block& block = blocks_[b];
+  (block.prev == kNone ? bottom_ : blocks_[block.prev].next) = block.next;
+  (block.next == kNone ? top_ : blocks_[block.next].prev) = block.prev;
+}
+
+void FreeRanges::addPiece(uint32_t b) {
+  Block& block = blocks_[b];
+  if (block.occupant >= pieces_.size()) pieces_.resize(block.occupant + 1, kNone);
+  block.piecePrev = kNone;
+  block.pieceNext = pieces_[block.occupant];
+  if (block.pieceNext != kNone) blocks_[block.pieceNext].piecePrev = b;
+  pieces_[block.occupant] = b;
+}
+
+void FreeRanges::removePiece(uint32_t b) {
+  const Block& block = blocks_[b];
+  if (block.pieceNext != kNone) blocks_[block.pieceNext].piecePrev = block.piecePrev;
+  (block.piecePrev == kNone ? pieces_[block.occupant] : blocks_[block.piecePrev].pieceNext) = block.pieceNext;
 }
 
 }  // namespace sg::graph

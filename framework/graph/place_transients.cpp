@@ -96,6 +96,8 @@ void placeTransients(std::span<const TransientLifetime> transients, uint32_t res
   const auto laterFirst = [](const MemoryPlan::Scratch::Allowance& a, const MemoryPlan::Scratch::Allowance& b) {
     return a.position > b.position;
   };
+  std::vector<uint32_t>& blocks = scratch.blocks;
+  blocks.resize(transients.size());
   unaliasedSize.clear();
   aliasPairs.clear();
   allowances.clear();
@@ -121,14 +123,13 @@ void placeTransients(std::span<const TransientLifetime> transients, uint32_t res
           std::push_heap(allowances.begin(), allowances.end(), laterFirst);
         }
       }
-      freeLists[m.heap].release(m.offset, m.size, doneIndex, now);
+      freeLists[m.heap].release(blocks[doneIndex], doneIndex, now);
     }
     while (!allowances.empty() && allowances.front().position <= t.firstUse) {
       const auto a = allowances.front();
       std::pop_heap(allowances.begin(), allowances.end(), laterFirst);
       allowances.pop_back();
-      const MemoryPlacement& m = plan.placements[transients[a.index].id];
-      freeLists[m.heap].allow(m.offset, m.size, a.index, a.queues);
+      freeLists[plan.placements[transients[a.index].id].heap].allow(a.index, a.queues);
     }
 
     const MemoryRequirements& req = requirements[t.id];
@@ -148,8 +149,9 @@ void placeTransients(std::span<const TransientLifetime> transients, uint32_t res
     // The queue taking the memory over: its first use's (unknown without `queues` if several use it).
     QueueMask taker = queueCount(t.queues) == 1 ? t.queues : QueueMask::None;
     if (queues) taker = toMask(queues->queueAt(t.firstUse));
-    const uint64_t offset = enableAliasing ? freeLists[heap].allocate(req.size, req.alignment, taker, h.size, previous)
-                                           : alignUp(h.size, req.alignment);
+    const uint64_t offset = enableAliasing
+                                ? freeLists[heap].allocate(req.size, req.alignment, taker, h.size, previous, blocks[index])
+                                : alignUp(h.size, req.alignment);
     h.size = std::max(h.size, offset + req.size);
     h.alignment = std::max(h.alignment, req.alignment);
     h.memoryTypeBits &= req.memoryTypeBits;

@@ -43,6 +43,7 @@ struct MemoryPlan {
     std::vector<uint64_t> unaliasedSize;      // per heap: its size if nothing aliased
     std::vector<std::pair<uint32_t, uint32_t>> aliasPairs;
     std::vector<uint32_t> previous;
+    std::vector<uint32_t> blocks;  // per transient: its block in its heap's FreeRanges
     struct Allowance {
       uint32_t position;  // from here on
       uint32_t index;     // into transients

@@ -6,68 +6,62 @@
 namespace sg::graph {
 namespace {
 
-// What one kept pass does to one resource (its accesses merged).
-struct Use {
-  PassId pass;
-  QueueClass queue = QueueClass::Graphics;
-  PipelineStage stages = PipelineStage::None;
-  AccessFlag access = AccessFlag::None;
-  Layout layout = Layout::Undefined;
-  bool write = false;
-};  // 12 bytes
+using Use = ResourceUse;
 
-// Uses grouped by resource, each group in execution order.
+// Uses grouped by resource, each group in execution order (views of the scratch).
 struct UseTable {
-  std::vector<uint32_t> first;    // per resource, plus one
-  std::vector<uint32_t> lastUse;  // per resource: position in the order of its last use
-  std::vector<Use> uses;
+  const std::vector<uint32_t>& first;    // per resource, plus one
+  const std::vector<uint32_t>& lastUse;  // per resource: position in the order of its last use
+  const std::vector<Use>& uses;
 
   std::span<const Use> of(uint32_t r) const { return {uses.data() + first[r], uses.data() + first[r + 1]}; }
 };
 
-UseTable collectUses(const RenderGraph& graph, std::span<const PassId> order, uint32_t resourceCount) {
+UseTable collectUses(const RenderGraph& graph, std::span<const PassId> order, uint32_t resourceCount,
+                     BarrierPlan::Scratch& scratch) {
   // Two walks over the kept passes: count each resource's uses (one per pass),
   // then place them, merging a pass's accesses to the same resource.
-  UseTable table;
-  table.first.assign(resourceCount + 1, 0);
-  table.lastUse.assign(resourceCount, kInvalidIndex);
+  std::vector<uint32_t>& first = scratch.firstUse;
+  std::vector<uint32_t>& lastUse = scratch.lastUse;
+  std::vector<Use>& uses = scratch.uses;
+  first.assign(resourceCount + 1, 0);
+  lastUse.assign(resourceCount, kInvalidIndex);
   for (uint32_t position = 0; position < order.size(); ++position) {
     for (const ResourceAccess& a : graph.accessesOf(order[position])) {
-      if (table.lastUse[a.resource.index] == position) continue;
-      table.lastUse[a.resource.index] = position;
-      ++table.first[a.resource.index + 1];
+      if (lastUse[a.resource.index] == position) continue;
+      lastUse[a.resource.index] = position;
+      ++first[a.resource.index + 1];
     }
   }
-  for (uint32_t r = 0; r < resourceCount; ++r) table.first[r + 1] += table.first[r];
-  table.uses.resize(table.first[resourceCount]);
-  std::vector<uint32_t> cursor(table.first.begin(), table.first.end() - 1);
+  for (uint32_t r = 0; r < resourceCount; ++r) first[r + 1] += first[r];
+  uses.resize(first[resourceCount]);
+  std::vector<uint32_t>& cursor = scratch.cursor;
+  cursor.assign(first.begin(), first.end() - 1);
   for (const PassId p : order) {
     const QueueClass queue = graph.pass(p).queue;
     for (const ResourceAccess& a : graph.accessesOf(p)) {
       uint32_t& next = cursor[a.resource.index];
-      if (next > table.first[a.resource.index] && table.uses[next - 1].pass == p) {
-        Use& use = table.uses[next - 1];
+      if (next > first[a.resource.index] && uses[next - 1].pass == p) {
+        Use& use = uses[next - 1];
         use.stages |= a.stages;
         use.access |= a.accessFlags;
         use.write = use.write || a.write;
         if (const auto merged = mergeLayouts(use.layout, a.layout)) use.layout = *merged;
         continue;
       }
-      table.uses[next++] = {p, queue, a.stages, a.accessFlags, a.layout, a.write};
+      uses[next++] = {p, queue, a.stages, a.accessFlags, a.layout, a.write};
     }
   }
-  return table;
+  return {first, lastUse, uses};
 }
 
-// Barriers as they are found (resource by resource), before grouping by pass.
+// Barriers as they are found (resource by resource), before grouping by pass;
+// final barriers and hand-offs straight into the plan.
 struct EmittedBarriers {
-  struct Entry {
-    uint32_t slot;  // pass * 2, + 1 for "after the pass"
-    Barrier barrier;
-  };
-  std::vector<Entry> entries;
-  std::vector<FinalBarrier> finals;
-  std::vector<Dependency> handoffs;
+  using Entry = BarrierPlan::Scratch::Entry;
+  std::vector<Entry>& entries;
+  std::vector<FinalBarrier>& finals;
+  std::vector<Dependency>& handoffs;
 
   void add(PassId pass, bool after, const Barrier& b) { entries.push_back({pass.index * 2 + (after ? 1 : 0), b}); }
 };
@@ -325,14 +319,13 @@ BarrierPlan planBarriers(const RenderGraph& graph, std::span<const PassId> order
 void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::span<const PlannedResource> resources,
                   std::span<const ResourceId> aliases, std::span<const PipelineStage> takeOverWaits, BarrierPlan& plan) {
   const auto resourceCount = static_cast<uint32_t>(resources.size());
-  const UseTable uses = collectUses(graph, order, resourceCount);
+  BarrierPlan::Scratch& scratch = plan.scratch;
+  const UseTable uses = collectUses(graph, order, resourceCount, scratch);
 
   // Every stage and write of each resource: what a transient taking over its memory waits for.
-  struct Footprint {
-    PipelineStage stages = PipelineStage::None;
-    AccessFlag writes = AccessFlag::None;
-  };
-  std::vector<Footprint> footprints(resourceCount);
+  using Footprint = BarrierPlan::Scratch::Footprint;
+  std::vector<Footprint>& footprints = scratch.footprints;
+  footprints.assign(resourceCount, Footprint{});
   for (uint32_t r = 0; r < resourceCount; ++r) {
     for (const Use& u : uses.of(r)) {
       footprints[r].stages |= u.stages;
@@ -340,7 +333,10 @@ void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::
     }
   }
 
-  EmittedBarriers emitted;
+  plan.finals.clear();
+  plan.handoffs.clear();
+  scratch.entries.clear();
+  EmittedBarriers emitted{scratch.entries, plan.finals, plan.handoffs};
   // At most one barrier per use (a write's, a read's, or a run of shared
   // reads' one transition), so this never regrows.
   emitted.entries.reserve(uses.uses.size());
@@ -365,11 +361,13 @@ void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::
 
   // Group by pass (counting sort keeps resource order within a pass).
   const uint32_t slots = graph.passCount() * 2;
-  std::vector<uint32_t> first(slots + 1, 0);
+  std::vector<uint32_t>& first = scratch.slotFirst;
+  first.assign(slots + 1, 0);
   for (const EmittedBarriers::Entry& e : emitted.entries) ++first[e.slot + 1];
   for (uint32_t s = 0; s < slots; ++s) first[s + 1] += first[s];
   plan.barriers.resize(emitted.entries.size());
-  std::vector<uint32_t> cursor(first.begin(), first.end() - 1);
+  std::vector<uint32_t>& cursor = scratch.cursor;
+  cursor.assign(first.begin(), first.end() - 1);
   for (const EmittedBarriers::Entry& e : emitted.entries) plan.barriers[cursor[e.slot]++] = e.barrier;
   plan.before.resize(graph.passCount());
   plan.after.resize(graph.passCount());
@@ -377,8 +375,6 @@ void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::
     plan.before[p] = {first[2 * p], first[2 * p + 1] - first[2 * p]};
     plan.after[p] = {first[2 * p + 1], first[2 * p + 2] - first[2 * p + 1]};
   }
-  plan.finals = std::move(emitted.finals);
-  plan.handoffs = std::move(emitted.handoffs);
 }
 
 }  // namespace sg::graph

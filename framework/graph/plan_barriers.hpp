@@ -9,6 +9,16 @@
 
 namespace sg::graph {
 
+// What one kept pass does to one resource (its accesses merged).
+struct ResourceUse {
+  PassId pass;
+  QueueClass queue = QueueClass::Graphics;
+  PipelineStage stages = PipelineStage::None;
+  AccessFlag access = AccessFlag::None;
+  Layout layout = Layout::Undefined;
+  bool write = false;
+};  // 12 bytes
+
 struct BarrierPlan {
   std::vector<Barrier> barriers;  // grouped by pass: each pass's before, then its after
   std::vector<Range> before;      // per pass, into `barriers`
@@ -17,6 +27,28 @@ struct BarrierPlan {
   // Extra cross-queue orderings that layout hand-offs rely on; assignQueues()
   // turns them into semaphore waits like ordinary dependencies.
   std::vector<Dependency> handoffs;
+
+  // planBarriers()'s working memory, kept so that the next call reuses it.
+  struct Scratch {
+    // Uses grouped by resource, each group in execution order.
+    std::vector<uint32_t> firstUse;  // per resource, plus one
+    std::vector<uint32_t> lastUse;   // per resource: position in the order of its last use
+    std::vector<ResourceUse> uses;
+    std::vector<uint32_t> cursor;
+    // Per resource: every stage and write, what a transient taking over its memory waits for.
+    struct Footprint {
+      PipelineStage stages = PipelineStage::None;
+      AccessFlag writes = AccessFlag::None;
+    };
+    std::vector<Footprint> footprints;
+    // Barriers as they are found (resource by resource), before grouping by pass.
+    struct Entry {
+      uint32_t slot;  // pass * 2, + 1 for "after the pass"
+      Barrier barrier;
+    };
+    std::vector<Entry> entries;
+    std::vector<uint32_t> slotFirst;
+  } scratch;
 
   std::span<const Barrier> beforePass(PassId p) const { return slice(barriers, before[p.index]); }
   std::span<const Barrier> afterPass(PassId p) const { return slice(barriers, after[p.index]); }
