@@ -2,12 +2,15 @@
 
 #include <bit>
 
+// The small steps inline: they run several times per placement.
+#define SG_FREE_RANGES_INLINE [[gnu::always_inline]] inline
+
 namespace sg::graph {
 namespace {
 
 // Size class of a run's length: exact below 4, else a power of two split in
 // quarters (monotonic in the length, 256 classes for 64-bit lengths).
-uint32_t sizeClass(uint64_t length) {
+inline uint32_t sizeClass(uint64_t length) {
   if (length < 4) return static_cast<uint32_t>(length);
   const auto log = static_cast<uint32_t>(63 - std::countl_zero(length));
   return log * 4 + static_cast<uint32_t>((length >> (log - 2)) & 3);
@@ -26,13 +29,13 @@ void FreeRanges::clear(QueueMask queues) {
   queues_ = queues;
 }
 
-uint32_t FreeRanges::runHead(uint32_t b, uint32_t queue) const {
+SG_FREE_RANGES_INLINE uint32_t FreeRanges::runHead(uint32_t b, uint32_t queue) const {
   const QueueMask q = static_cast<QueueMask>(1u << queue);
   while (freeFor(blocks_[b].prev, q)) b = blocks_[b].prev;
   return b;
 }
 
-void FreeRanges::bin(uint32_t head, uint32_t queue, uint64_t end) {
+SG_FREE_RANGES_INLINE void FreeRanges::bin(uint32_t head, uint32_t queue, uint64_t end) {
   Bins& bins = bins_[queue];
   const uint32_t c = sizeClass(end - blocks_[head].begin);
   RunLink& link = blocks_[head].runs[queue];
@@ -46,7 +49,7 @@ void FreeRanges::bin(uint32_t head, uint32_t queue, uint64_t end) {
   word |= bit;
 }
 
-void FreeRanges::unbin(uint32_t head, uint32_t queue) {
+SG_FREE_RANGES_INLINE void FreeRanges::unbin(uint32_t head, uint32_t queue) {
   Bins& bins = bins_[queue];
   const RunLink& link = blocks_[head].runs[queue];
   if (link.binNext != kNone) blocks_[link.binNext].runs[queue].binPrev = link.binPrev;
@@ -57,6 +60,17 @@ void FreeRanges::unbin(uint32_t head, uint32_t queue) {
   const uint32_t c = sizeClass(link.end - blocks_[head].begin);
   bins.first[c] = link.binNext;
   if (link.binNext == kNone) bins.nonEmpty[c / 64] &= ~(uint64_t{1} << (c % 64));
+}
+
+SG_FREE_RANGES_INLINE void FreeRanges::resize(uint32_t head, uint32_t queue, uint64_t end) {
+  RunLink& link = blocks_[head].runs[queue];
+  const uint64_t begin = blocks_[head].begin;
+  if (sizeClass(end - begin) == sizeClass(link.end - begin)) {
+    link.end = end;
+    return;
+  }
+  unbin(head, queue);
+  bin(head, queue, end);
 }
 
 uint32_t FreeRanges::bestFit(uint32_t queue, uint64_t size, uint64_t alignment) const {
@@ -116,42 +130,46 @@ uint64_t FreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask queue
 
 uint32_t FreeRanges::take(uint32_t first, uint64_t offset, uint64_t end, std::vector<uint32_t>& previous) {
   while (first != kNone && blocks_[first].end <= offset) first = blocks_[first].next;
-  std::vector<uint32_t>& taken = taken_;
-  taken.clear();
-  for (uint32_t b = first; b != kNone && blocks_[b].begin < end; b = blocks_[b].next) taken.push_back(b);
-
   const uint32_t used = newBlock();
   blocks_[used].begin = offset;
   blocks_[used].end = end;
   blocks_[used].used = true;
-  if (taken.empty()) {  // above the old top
+  if (first == kNone || blocks_[first].begin >= end) {  // above the old top
     insertAfter(used, top_);
     return used;
   }
 
-  // Take the runs through the taken fragments out of their bins, remembering
-  // where the first one began and the last one ended, per queue.
-  QueueMask touched = QueueMask::None;
+  // The runs through the taken fragments: the first one stays where bytes are
+  // left below (`kept`, shortened at the end); the others leave their bins.
+  const uint32_t f = first;
+  const bool lower = blocks_[f].begin < offset;
+  QueueMask touched = QueueMask::None, kept = QueueMask::None;
   std::array<uint32_t, kQueueClassCount> firstHead{};
   std::array<uint64_t, kQueueClassCount> lastEnd{};
-  for (std::size_t i = 0; i < taken.size(); ++i) {
-    const Block& b = blocks_[taken[i]];
-    if (b.occupant != kNobody) previous.push_back(b.occupant);
-    const QueueMask starts = i == 0 ? b.queues : b.queues & ~blocks_[taken[i - 1]].queues;
-    for (auto bits = static_cast<uint32_t>(starts); bits != 0; bits &= bits - 1) {
+  uint32_t g = f;
+  QueueMask before = QueueMask::None;  // the previous taken fragment's queues
+  for (uint32_t b = f; b != kNone && blocks_[b].begin < end; b = blocks_[b].next) {
+    const Block& block = blocks_[b];
+    g = b;
+    if (block.occupant != kNobody) previous.push_back(block.occupant);
+    for (auto bits = static_cast<uint32_t>(block.queues & ~before); bits != 0; bits &= bits - 1) {
       const auto q = static_cast<uint32_t>(std::countr_zero(bits));
-      const uint32_t head = i == 0 ? runHead(taken[i], q) : taken[i];
-      if (!any(touched & static_cast<QueueMask>(1u << q))) firstHead[q] = head;
+      const auto mask = static_cast<QueueMask>(1u << q);
+      const uint32_t head = b == f ? runHead(b, q) : b;
       lastEnd[q] = blocks_[head].runs[q].end;
-      unbin(head, q);
+      if (b == f && (lower || head != f)) {
+        firstHead[q] = head;
+        kept |= mask;
+      } else {
+        unbin(head, q);
+      }
     }
-    touched |= b.queues;
+    touched |= block.queues;
+    before = block.queues;
   }
 
   // What is left below and above the taken bytes stays free, in place.
-  const uint32_t f = taken.front(), g = taken.back();
-  const QueueMask firstQueues = blocks_[f].queues, lastQueues = blocks_[g].queues;
-  const bool lower = blocks_[f].begin < offset;
+  const QueueMask lastQueues = blocks_[g].queues;
   uint32_t upper = kNone;
   bool newUpper = false;
   if (blocks_[g].end > end) {
@@ -159,23 +177,29 @@ uint32_t FreeRanges::take(uint32_t first, uint64_t offset, uint64_t end, std::ve
     if (newUpper) {  // a cut out of one fragment: the part above is a new one of the same user
       upper = newBlock();
       Block& u = blocks_[upper];
-      u = blocks_[g];
+      const Block& cut = blocks_[g];
       u.begin = end;
-      u.prev = u.next = kNone;
+      u.end = cut.end;
+      u.occupant = cut.occupant;
+      u.queues = cut.queues;
       if (u.occupant != kNobody) addPiece(upper);
     } else {
       upper = g;
-      blocks_[g].begin = end;
     }
   }
   const uint32_t below = lower ? f : blocks_[f].prev;
-  for (const uint32_t b : taken) {
-    if ((b == f && lower) || b == upper) continue;
-    unlink(b);
-    if (blocks_[b].occupant != kNobody) removePiece(b);
-    unusedBlocks_.push_back(b);
+  const uint32_t stop = blocks_[g].next;
+  for (uint32_t b = f; b != stop;) {
+    const uint32_t next = blocks_[b].next;
+    if (!((b == f && lower) || b == upper)) {
+      unlink(b);
+      if (blocks_[b].occupant != kNobody) removePiece(b);
+      unusedBlocks_.push_back(b);
+    }
+    b = next;
   }
   if (lower) blocks_[f].end = offset;
+  if (upper == g) blocks_[g].begin = end;
   insertAfter(used, below);
   if (newUpper) insertAfter(upper, used);
 
@@ -184,7 +208,7 @@ uint32_t FreeRanges::take(uint32_t first, uint64_t offset, uint64_t end, std::ve
   for (auto bits = static_cast<uint32_t>(touched); bits != 0; bits &= bits - 1) {
     const auto q = static_cast<uint32_t>(std::countr_zero(bits));
     const auto mask = static_cast<QueueMask>(1u << q);
-    if (any(firstQueues & mask) && (lower || firstHead[q] != f)) bin(firstHead[q], q, offset);
+    if (any(kept & mask)) resize(firstHead[q], q, offset);
     if (any(lastQueues & mask) && lastEnd[q] > end) bin(above, q, lastEnd[q]);
   }
   return used;
@@ -195,17 +219,16 @@ void FreeRanges::joinRuns(uint32_t b, QueueMask queues) {
   for (auto bits = static_cast<uint32_t>(queues); bits != 0; bits &= bits - 1) {
     const auto q = static_cast<uint32_t>(std::countr_zero(bits));
     const auto mask = static_cast<QueueMask>(1u << q);
-    uint32_t head = b;
     uint64_t end = blocks_[b].end;
-    if (freeFor(left, mask)) {
-      head = runHead(left, q);
-      unbin(head, q);
-    }
     if (freeFor(right, mask)) {  // it heads its run: `b` was not in it
       end = blocks_[right].runs[q].end;
       unbin(right, q);
     }
-    bin(head, q, end);
+    if (freeFor(left, mask)) {
+      resize(runHead(left, q), q, end);
+    } else {
+      bin(b, q, end);
+    }
   }
   blocks_[b].queues |= queues;
 }
@@ -283,7 +306,7 @@ bool FreeRanges::consistent(uint64_t heapSize) const {
   return true;
 }
 
-uint32_t FreeRanges::newBlock() {
+SG_FREE_RANGES_INLINE uint32_t FreeRanges::newBlock() {
   uint32_t b = 0;
   if (unusedBlocks_.empty()) {
     b = static_cast<uint32_t>(blocks_.size());
@@ -291,12 +314,15 @@ uint32_t FreeRanges::newBlock() {
   } else {
     b = unusedBlocks_.back();
     unusedBlocks_.pop_back();
-    blocks_[b] = Block{};
+    Block& block = blocks_[b];  // (runs are written whenever it heads one)
+    block.occupant = kNobody;
+    block.queues = QueueMask::None;
+    block.used = false;
   }
   return b;
 }
 
-void FreeRanges::insertAfter(uint32_t b, uint32_t after) {
+SG_FREE_RANGES_INLINE void FreeRanges::insertAfter(uint32_t b, uint32_t after) {
   Block& block = blocks_[b];
   block.prev = after;
   block.next = after == kNone ? bottom_ : blocks_[after].next;
@@ -304,13 +330,13 @@ void FreeRanges::insertAfter(uint32_t b, uint32_t after) {
   (block.next == kNone ? top_ : blocks_[block.next].prev) = b;
 }
 
-void FreeRanges::unlink(uint32_t b) {
+SG_FREE_RANGES_INLINE void FreeRanges::unlink(uint32_t b) {
   const Block& block = blocks_[b];
   (block.prev == kNone ? bottom_ : blocks_[block.prev].next) = block.next;
   (block.next == kNone ? top_ : blocks_[block.next].prev) = block.prev;
 }
 
-void FreeRanges::addPiece(uint32_t b) {
+SG_FREE_RANGES_INLINE void FreeRanges::addPiece(uint32_t b) {
   Block& block = blocks_[b];
   if (block.occupant >= pieces_.size()) pieces_.resize(block.occupant + 1, kNone);
   block.piecePrev = kNone;
@@ -319,7 +345,7 @@ void FreeRanges::addPiece(uint32_t b) {
   pieces_[block.occupant] = b;
 }
 
-void FreeRanges::removePiece(uint32_t b) {
+SG_FREE_RANGES_INLINE void FreeRanges::removePiece(uint32_t b) {
   const Block& block = blocks_[b];
   if (block.pieceNext != kNone) blocks_[block.pieceNext].piecePrev = block.piecePrev;
   (block.piecePrev == kNone ? pieces_[block.occupant] : blocks_[block.piecePrev].pieceNext) = block.pieceNext;

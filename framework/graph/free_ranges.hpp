@@ -94,6 +94,7 @@ class FreeRanges {
   uint32_t runHead(uint32_t b, uint32_t queue) const;
   void bin(uint32_t head, uint32_t queue, uint64_t end);
   void unbin(uint32_t head, uint32_t queue);
+  void resize(uint32_t head, uint32_t queue, uint64_t end);  // a binned run, same head
   uint32_t bestFit(uint32_t queue, uint64_t size, uint64_t alignment) const;
   // Free blocks from `first` (kNone: none) that overlap [offset, end) become
   // one used block there (appended at the top when none do); returns it.
@@ -109,7 +110,6 @@ class FreeRanges {
   std::vector<Block> blocks_;
   std::vector<uint32_t> unusedBlocks_;  // recycled indices into blocks_
   std::vector<uint32_t> pieces_;        // per occupant: its first free fragment
-  std::vector<uint32_t> taken_;         // take()'s scratch
   std::array<Bins, kQueueClassCount> bins_{};
   uint32_t bottom_ = kNone;
   uint32_t top_ = kNone;

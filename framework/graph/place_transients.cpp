@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <type_traits>
 
 namespace sg::graph {
 namespace {
@@ -18,6 +19,13 @@ void bucketBy(std::span<const TransientLifetime> transients, uint32_t positions,
   for (uint32_t i = 0; i < transients.size(); ++i) sorted[starts[position(transients[i])]++] = i;
 }
 
+// From this many transients on, free ranges are a block list with size-class
+// bins (cost per placement flat in the heap's fragments); below, a sorted
+// array walked whole is cheaper (callgrind, synthetic graphs: the block list
+// costs about 820 instructions per transient at 150 transients and 900 at
+// 1500, the walk 550 and 1400). Both place identically.
+constexpr std::size_t kBlockListFrom = 512;
+
 constexpr QueueClass kQueues[] = {QueueClass::Graphics, QueueClass::AsyncCompute, QueueClass::Transfer};
 
 // From which position a transient's memory may be taken over on `queue`
@@ -27,6 +35,118 @@ uint32_t availableFrom(const TransientLifetime& t, QueueClass queue, const Cross
   if (t.queues == toMask(queue)) return t.lastUse + 1;  // its own queue: submission order (and the discard barrier)
   if (queues) return queues->availableFrom(t.lastUse, t.queues, queue, waitStages);
   return t.queues == toMask(queue) ? t.lastUse + 1 : kInvalidIndex;
+}
+
+// The sweep over the order with one kind of free ranges (Ranges: FreeRanges
+// or LinearFreeRanges, kept per heap in `freeLists`).
+template <class Ranges>
+void sweep(std::span<const TransientLifetime> transients, std::span<const MemoryRequirements> requirements,
+           bool enableAliasing, QueueMask used, const CrossQueueOrder* queues, MemoryPlan& plan,
+           std::vector<Ranges>& freeLists) {
+  constexpr bool kLinear = std::is_same_v<Ranges, LinearFreeRanges>;
+  MemoryPlan::Scratch& scratch = plan.scratch;
+  const std::vector<uint32_t>& byStart = scratch.byStart;
+  const std::vector<uint32_t>& byEnd = scratch.byEnd;
+  std::vector<uint64_t>& unaliasedSize = scratch.unaliasedSize;
+  std::vector<std::pair<uint32_t, uint32_t>>& aliasPairs = scratch.aliasPairs;
+  std::vector<uint32_t>& previous = scratch.previous;
+  auto& allowances = scratch.allowances;
+  const auto laterFirst = [](const MemoryPlan::Scratch::Allowance& a, const MemoryPlan::Scratch::Allowance& b) {
+    return a.position > b.position;
+  };
+  std::vector<uint32_t>& blocks = scratch.blocks;  // (the block list's handles)
+  if constexpr (!kLinear) blocks.resize(transients.size());
+  unaliasedSize.clear();
+  aliasPairs.clear();
+  allowances.clear();
+  std::size_t ended = 0;
+  for (const uint32_t index : byStart) {
+    const TransientLifetime& t = transients[index];
+    // Give back the memory of transients whose last use is behind us, to the
+    // queues they are over for now; the other queues get it as their waits come.
+    for (; ended < byEnd.size() && transients[byEnd[ended]].lastUse < t.firstUse; ++ended) {
+      const uint32_t doneIndex = byEnd[ended];
+      const TransientLifetime& done = transients[doneIndex];
+      const MemoryPlacement& m = plan.placements[done.id];
+      if (!plan.heaps[m.heap].aliasing) continue;
+      QueueMask now = QueueMask::None;
+      for (const QueueClass q : kQueues) {
+        if (!any(used & toMask(q))) continue;
+        PipelineStage unused = PipelineStage::None;
+        const uint32_t from = availableFrom(done, q, queues, unused);
+        if (from <= t.firstUse) {
+          now |= toMask(q);
+        } else if (from != kInvalidIndex) {
+          allowances.push_back({from, doneIndex, toMask(q)});
+          std::push_heap(allowances.begin(), allowances.end(), laterFirst);
+        }
+      }
+      if constexpr (kLinear) {
+        freeLists[m.heap].release(m.offset, m.size, doneIndex, now);
+      } else {
+        freeLists[m.heap].release(blocks[doneIndex], doneIndex, now);
+      }
+    }
+    while (!allowances.empty() && allowances.front().position <= t.firstUse) {
+      const auto a = allowances.front();
+      std::pop_heap(allowances.begin(), allowances.end(), laterFirst);
+      allowances.pop_back();
+      const MemoryPlacement& m = plan.placements[transients[a.index].id];
+      if constexpr (kLinear) {
+        freeLists[m.heap].allow(m.offset, m.size, a.index, a.queues);
+      } else {
+        freeLists[m.heap].allow(a.index, a.queues);
+      }
+    }
+
+    const MemoryRequirements& req = requirements[t.id];
+    uint32_t heap = 0;
+    for (; heap < plan.heaps.size(); ++heap) {
+      const Heap& h = plan.heaps[heap];
+      if (h.aliasing == enableAliasing && (h.memoryTypeBits & req.memoryTypeBits) != 0) break;
+    }
+    if (heap == plan.heaps.size()) {
+      plan.heaps.push_back({req.memoryTypeBits, 0, 1, QueueMask::None, enableAliasing});
+      if (freeLists.size() < plan.heaps.size()) freeLists.emplace_back();
+      freeLists[heap].clear(used);
+      unaliasedSize.push_back(0);
+    }
+    Heap& h = plan.heaps[heap];
+    previous.clear();
+    // The queue taking the memory over: its first use's (unknown without `queues` if several use it).
+    QueueMask taker = queueCount(t.queues) == 1 ? t.queues : QueueMask::None;
+    if (queues) taker = toMask(queues->queueAt(t.firstUse));
+    uint64_t offset = 0;
+    if (!enableAliasing) {
+      offset = alignUp(h.size, req.alignment);
+    } else if constexpr (kLinear) {
+      offset = freeLists[heap].allocate(req.size, req.alignment, taker, h.size, previous);
+    } else {
+      offset = freeLists[heap].allocate(req.size, req.alignment, taker, h.size, previous, blocks[index]);
+    }
+    h.size = std::max(h.size, offset + req.size);
+    h.alignment = std::max(h.alignment, req.alignment);
+    h.memoryTypeBits &= req.memoryTypeBits;
+    h.queues |= t.queues;
+    unaliasedSize[heap] = alignUp(unaliasedSize[heap], req.alignment) + req.size;
+    plan.placements[t.id] = {heap, offset, req.size};
+
+    if (previous.size() > 1) {  // usually none or one
+      std::sort(previous.begin(), previous.end(),
+                [&](uint32_t a, uint32_t b) { return transients[a].id < transients[b].id; });
+      previous.erase(std::unique(previous.begin(), previous.end()), previous.end());
+    }
+    for (const uint32_t p : previous) {
+      const TransientLifetime& before = transients[p];
+      if (before.queues != taker) {
+        for (const QueueClass q : kQueues) {
+          if (toMask(q) == taker) availableFrom(before, q, queues, plan.takeOverWaits[t.id]);
+        }
+      }
+      aliasPairs.emplace_back(t.id, before.id);
+      aliasPairs.emplace_back(before.id, t.id);
+    }
+  }
 }
 
 }  // namespace
@@ -88,93 +208,14 @@ void placeTransients(std::span<const TransientLifetime> transients, uint32_t res
     begin = end;
   }
 
-  std::vector<FreeRanges>& freeLists = scratch.freeLists;  // kept for their memory; cleared when a heap reuses one
-  std::vector<uint64_t>& unaliasedSize = scratch.unaliasedSize;
-  std::vector<std::pair<uint32_t, uint32_t>>& aliasPairs = scratch.aliasPairs;
-  std::vector<uint32_t>& previous = scratch.previous;
-  auto& allowances = scratch.allowances;
-  const auto laterFirst = [](const MemoryPlan::Scratch::Allowance& a, const MemoryPlan::Scratch::Allowance& b) {
-    return a.position > b.position;
-  };
-  std::vector<uint32_t>& blocks = scratch.blocks;
-  blocks.resize(transients.size());
-  unaliasedSize.clear();
-  aliasPairs.clear();
-  allowances.clear();
-  std::size_t ended = 0;
-  for (const uint32_t index : byStart) {
-    const TransientLifetime& t = transients[index];
-    // Give back the memory of transients whose last use is behind us, to the
-    // queues they are over for now; the other queues get it as their waits come.
-    for (; ended < byEnd.size() && transients[byEnd[ended]].lastUse < t.firstUse; ++ended) {
-      const uint32_t doneIndex = byEnd[ended];
-      const TransientLifetime& done = transients[doneIndex];
-      const MemoryPlacement& m = plan.placements[done.id];
-      if (!plan.heaps[m.heap].aliasing) continue;
-      QueueMask now = QueueMask::None;
-      for (const QueueClass q : kQueues) {
-        if (!any(used & toMask(q))) continue;
-        PipelineStage unused = PipelineStage::None;
-        const uint32_t from = availableFrom(done, q, queues, unused);
-        if (from <= t.firstUse) {
-          now |= toMask(q);
-        } else if (from != kInvalidIndex) {
-          allowances.push_back({from, doneIndex, toMask(q)});
-          std::push_heap(allowances.begin(), allowances.end(), laterFirst);
-        }
-      }
-      freeLists[m.heap].release(blocks[doneIndex], doneIndex, now);
-    }
-    while (!allowances.empty() && allowances.front().position <= t.firstUse) {
-      const auto a = allowances.front();
-      std::pop_heap(allowances.begin(), allowances.end(), laterFirst);
-      allowances.pop_back();
-      freeLists[plan.placements[transients[a.index].id].heap].allow(a.index, a.queues);
-    }
-
-    const MemoryRequirements& req = requirements[t.id];
-    uint32_t heap = 0;
-    for (; heap < plan.heaps.size(); ++heap) {
-      const Heap& h = plan.heaps[heap];
-      if (h.aliasing == enableAliasing && (h.memoryTypeBits & req.memoryTypeBits) != 0) break;
-    }
-    if (heap == plan.heaps.size()) {
-      plan.heaps.push_back({req.memoryTypeBits, 0, 1, QueueMask::None, enableAliasing});
-      if (freeLists.size() < plan.heaps.size()) freeLists.emplace_back();
-      freeLists[heap].clear(used);
-      unaliasedSize.push_back(0);
-    }
-    Heap& h = plan.heaps[heap];
-    previous.clear();
-    // The queue taking the memory over: its first use's (unknown without `queues` if several use it).
-    QueueMask taker = queueCount(t.queues) == 1 ? t.queues : QueueMask::None;
-    if (queues) taker = toMask(queues->queueAt(t.firstUse));
-    const uint64_t offset = enableAliasing
-                                ? freeLists[heap].allocate(req.size, req.alignment, taker, h.size, previous, blocks[index])
-                                : alignUp(h.size, req.alignment);
-    h.size = std::max(h.size, offset + req.size);
-    h.alignment = std::max(h.alignment, req.alignment);
-    h.memoryTypeBits &= req.memoryTypeBits;
-    h.queues |= t.queues;
-    unaliasedSize[heap] = alignUp(unaliasedSize[heap], req.alignment) + req.size;
-    plan.placements[t.id] = {heap, offset, req.size};
-
-    if (previous.size() > 1) {  // usually none or one
-      std::sort(previous.begin(), previous.end(),
-                [&](uint32_t a, uint32_t b) { return transients[a].id < transients[b].id; });
-      previous.erase(std::unique(previous.begin(), previous.end()), previous.end());
-    }
-    for (const uint32_t p : previous) {
-      const TransientLifetime& before = transients[p];
-      if (before.queues != taker) {
-        for (const QueueClass q : kQueues) {
-          if (toMask(q) == taker) availableFrom(before, q, queues, plan.takeOverWaits[t.id]);
-        }
-      }
-      aliasPairs.emplace_back(t.id, before.id);
-      aliasPairs.emplace_back(before.id, t.id);
-    }
+  // (The free lists are kept for their memory; cleared when a heap reuses one.)
+  if (transients.size() >= kBlockListFrom) {
+    sweep(transients, requirements, enableAliasing, used, queues, plan, scratch.freeLists);
+  } else {
+    sweep(transients, requirements, enableAliasing, used, queues, plan, scratch.linearLists);
   }
+  const std::vector<uint64_t>& unaliasedSize = scratch.unaliasedSize;
+  const std::vector<std::pair<uint32_t, uint32_t>>& aliasPairs = scratch.aliasPairs;
   for (uint32_t heap = 0; heap < plan.heaps.size(); ++heap) {
     plan.heapBytes += plan.heaps[heap].size;
     plan.heapBytesWithoutAliasing += unaliasedSize[heap];

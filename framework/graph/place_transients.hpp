@@ -3,6 +3,7 @@
 #include <shadelgraph/graph/compiled_plan.hpp>
 #include <shadelgraph/graph/cross_queue_order.hpp>
 #include <shadelgraph/graph/free_ranges.hpp>
+#include <shadelgraph/graph/linear_free_ranges.hpp>
 #include <shadelgraph/graph/memory_requirements.hpp>
 
 #include <cstdint>
@@ -39,11 +40,12 @@ struct MemoryPlan {
     std::vector<uint32_t> byStart;  // into transients
     std::vector<uint32_t> byEnd;
     std::vector<uint32_t> bucketStarts;
-    std::vector<FreeRanges> freeLists;        // per heap (aliasing heaps only use theirs)
+    std::vector<FreeRanges> freeLists;        // per heap (aliasing heaps only use theirs), many transients
+    std::vector<LinearFreeRanges> linearLists;  // the same, few transients
     std::vector<uint64_t> unaliasedSize;      // per heap: its size if nothing aliased
     std::vector<std::pair<uint32_t, uint32_t>> aliasPairs;
     std::vector<uint32_t> previous;
-    std::vector<uint32_t> blocks;  // per transient: its block in its heap's FreeRanges
+    std::vector<uint32_t> blocks;  // per transient: its block in its heap's free ranges
     struct Allowance {
       uint32_t position;  // from here on
       uint32_t index;     // into transients

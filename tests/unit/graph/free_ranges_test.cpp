@@ -1,6 +1,5 @@
 #include <shadelgraph/graph/free_ranges.hpp>
-
-#include "linear_free_ranges.hpp"
+#include <shadelgraph/graph/linear_free_ranges.hpp>
 
 #include <gtest/gtest.h>
 
@@ -17,8 +16,9 @@ constexpr QueueMask kCompute = QueueMask::AsyncCompute;
 constexpr QueueMask kBoth = QueueMask::Graphics | QueueMask::AsyncCompute;
 
 // A heap whose allocations are occupants 0, 1, 2, ... in turn (release by occupant).
+template <class Ranges>
 struct TestHeap {
-  FreeRanges ranges;
+  Ranges ranges;
   uint64_t& size;
   std::vector<uint32_t> blocks;  // per occupant
 
@@ -35,8 +35,9 @@ struct TestHeap {
 };
 
 // A heap of `count` ranges of `size` bytes back to back, all in use; occupant i at i * size.
-TestHeap filled(uint32_t count, uint64_t size, uint64_t& heapSize) {
-  TestHeap heap{.ranges = {}, .size = heapSize, .blocks = {}};
+template <class Ranges>
+TestHeap<Ranges> filled(uint32_t count, uint64_t size, uint64_t& heapSize) {
+  TestHeap<Ranges> heap{.ranges = {}, .size = heapSize, .blocks = {}};
   heap.ranges.clear(kBoth);
   std::vector<uint32_t> previous;
   for (uint32_t i = 0; i < count; ++i) EXPECT_EQ(heap.allocate(size, 1, kGraphics, previous), i * size);
@@ -44,9 +45,18 @@ TestHeap filled(uint32_t count, uint64_t size, uint64_t& heapSize) {
   return heap;
 }
 
-TEST(FreeRanges, BestFitTakesTheSmallestRangeThatHolds) {
+// Both implementations of free ranges: the block list and the linear walk.
+template <class Ranges>
+class FreeRangesTest : public ::testing::Test {};
+using Implementations = ::testing::Types<FreeRanges, LinearFreeRanges>;
+TYPED_TEST_SUITE(FreeRangesTest, Implementations);
+
+bool consistent(const FreeRanges& ranges, uint64_t heapSize) { return ranges.consistent(heapSize); }
+bool consistent(const LinearFreeRanges&, uint64_t) { return true; }
+
+TYPED_TEST(FreeRangesTest, BestFitTakesTheSmallestRangeThatHolds) {
   uint64_t heap = 0;
-  TestHeap ranges = filled(6, 100, heap);
+  auto ranges = filled<TypeParam>(6, 100, heap);
   ranges.release(0, kGraphics);    // 100 bytes at 0
   ranges.release(2, kGraphics);  // 200 bytes at 200 (merged with 3)
   ranges.release(3, kGraphics);
@@ -62,9 +72,9 @@ TEST(FreeRanges, BestFitTakesTheSmallestRangeThatHolds) {
   EXPECT_EQ(ranges.rangesFor(QueueClass::Graphics), (std::vector<Span>{{80, 100}, {350, 400}, {500, 600}}));
 }
 
-TEST(FreeRanges, AdjacentRangesMergeForAQueueButKeepTheirLastUsers) {
+TYPED_TEST(FreeRangesTest, AdjacentRangesMergeForAQueueButKeepTheirLastUsers) {
   uint64_t heap = 0;
-  TestHeap ranges = filled(3, 100, heap);
+  auto ranges = filled<TypeParam>(3, 100, heap);
   ranges.release(1, kGraphics);
   ranges.release(0, kGraphics);
   ranges.release(2, kGraphics);
@@ -77,9 +87,9 @@ TEST(FreeRanges, AdjacentRangesMergeForAQueueButKeepTheirLastUsers) {
   EXPECT_EQ(heap, 300u);
 }
 
-TEST(FreeRanges, AQueueTakesOnlyWhatItIsAllowedTo) {
+TYPED_TEST(FreeRangesTest, AQueueTakesOnlyWhatItIsAllowedTo) {
   uint64_t heap = 0;
-  TestHeap ranges = filled(2, 100, heap);
+  auto ranges = filled<TypeParam>(2, 100, heap);
   ranges.release(0, kGraphics);
   std::vector<uint32_t> previous;
   EXPECT_EQ(ranges.allocate(100, 1, kCompute, previous), 200u);  // not allowed: grows
@@ -91,9 +101,9 @@ TEST(FreeRanges, AQueueTakesOnlyWhatItIsAllowedTo) {
   EXPECT_TRUE(ranges.rangesFor(QueueClass::Graphics).empty());  // taken for every queue
 }
 
-TEST(FreeRanges, AllowReachesOnlyWhatIsLeftOfThatOccupant) {
+TYPED_TEST(FreeRangesTest, AllowReachesOnlyWhatIsLeftOfThatOccupant) {
   uint64_t heap = 0;
-  TestHeap ranges = filled(2, 100, heap);
+  auto ranges = filled<TypeParam>(2, 100, heap);
   ranges.release(0, kGraphics);
   ranges.release(1, kGraphics);
   std::vector<uint32_t> previous;
@@ -102,9 +112,9 @@ TEST(FreeRanges, AllowReachesOnlyWhatIsLeftOfThatOccupant) {
   EXPECT_EQ(ranges.rangesFor(QueueClass::AsyncCompute), (std::vector<Span>{{50, 100}}));
 }
 
-TEST(FreeRanges, GrowsFromAFreeRangeAtTheTopAndAlignsWithFreePadding) {
+TYPED_TEST(FreeRangesTest, GrowsFromAFreeRangeAtTheTopAndAlignsWithFreePadding) {
   uint64_t heap = 0;
-  TestHeap ranges = filled(2, 100, heap);
+  auto ranges = filled<TypeParam>(2, 100, heap);
   ranges.release(1, kGraphics);
   std::vector<uint32_t> previous;
   // 150 bytes: no range holds them, the top one [100, 200) is extended.
@@ -122,9 +132,9 @@ TEST(FreeRanges, GrowsFromAFreeRangeAtTheTopAndAlignsWithFreePadding) {
 
 // The walk jumps from run to run: a run ending at the top counts only if its
 // last fragment is one the queue may take.
-TEST(FreeRanges, GrowsFromTheTopOnlyThroughARangeTheQueueMayTake) {
+TYPED_TEST(FreeRangesTest, GrowsFromTheTopOnlyThroughARangeTheQueueMayTake) {
   uint64_t heap = 0;
-  TestHeap ranges = filled(3, 100, heap);
+  auto ranges = filled<TypeParam>(3, 100, heap);
   ranges.release(1, kGraphics);
   ranges.release(2, kCompute);  // the top: async compute's only
   std::vector<uint32_t> previous;
@@ -136,9 +146,9 @@ TEST(FreeRanges, GrowsFromTheTopOnlyThroughARangeTheQueueMayTake) {
   EXPECT_EQ(previous, (std::vector<uint32_t>{1, 2}));
 }
 
-TEST(FreeRanges, AlignmentDecidesWhichRangeFits) {
+TYPED_TEST(FreeRangesTest, AlignmentDecidesWhichRangeFits) {
   uint64_t heap = 0;
-  TestHeap ranges = filled(4, 100, heap);
+  auto ranges = filled<TypeParam>(4, 100, heap);
   ranges.release(1, kGraphics);
   ranges.release(3, kGraphics);
   std::vector<uint32_t> previous;
@@ -148,9 +158,9 @@ TEST(FreeRanges, AlignmentDecidesWhichRangeFits) {
   EXPECT_EQ(ranges.allocate(72, 128, kGraphics, previous), 128u);  // ends at 200 exactly
 }
 
-TEST(FreeRanges, SeveralOrNoQueuesAlwaysGrow) {
+TYPED_TEST(FreeRangesTest, SeveralOrNoQueuesAlwaysGrow) {
   uint64_t heap = 0;
-  TestHeap ranges = filled(1, 100, heap);
+  auto ranges = filled<TypeParam>(1, 100, heap);
   ranges.release(0, kBoth);
   std::vector<uint32_t> previous;
   EXPECT_EQ(ranges.allocate(100, 1, kBoth, previous), 100u);
@@ -160,10 +170,10 @@ TEST(FreeRanges, SeveralOrNoQueuesAlwaysGrow) {
 
 // Random releases, allowances and allocations: every allocation is the best
 // fit over rangesFor(queue) (smallest, then lowest offset), or the top of the heap.
-TEST(FreeRanges, AllocationsAreTheBestFitOfWhatTheQueueMayTake) {
+TYPED_TEST(FreeRangesTest, AllocationsAreTheBestFitOfWhatTheQueueMayTake) {
   std::mt19937 rng(7);
   uint64_t heap = 0;
-  TestHeap ranges{.ranges = {}, .size = heap, .blocks = {}};
+  TestHeap<TypeParam> ranges{.ranges = {}, .size = heap, .blocks = {}};
   ranges.ranges.clear(kBoth);
   struct Live {
     uint64_t offset, size;
@@ -180,11 +190,11 @@ TEST(FreeRanges, AllocationsAreTheBestFitOfWhatTheQueueMayTake) {
       ranges.release(live[i].id, rng() % 2 ? kGraphics : kCompute);
       released.push_back(live[i]);
       live.erase(live.begin() + static_cast<std::ptrdiff_t>(i));
-      ASSERT_TRUE(ranges.ranges.consistent(heap)) << "step " << step;
+      ASSERT_TRUE(consistent(ranges.ranges, heap)) << "step " << step;
     } else if (what == 1 && !released.empty()) {
       const Live& r = released[rng() % released.size()];
       ranges.allow(r.id, kBoth);
-      ASSERT_TRUE(ranges.ranges.consistent(heap)) << "step " << step;
+      ASSERT_TRUE(consistent(ranges.ranges, heap)) << "step " << step;
     } else {
       const QueueClass queue = rng() % 3 ? QueueClass::Graphics : QueueClass::AsyncCompute;
       const uint64_t size = 16 * (1 + rng() % 20);
@@ -206,7 +216,7 @@ TEST(FreeRanges, AllocationsAreTheBestFitOfWhatTheQueueMayTake) {
       previous.clear();
       ASSERT_EQ(ranges.allocate(size, alignment, toMask(queue), previous), expected) << "step " << step;
       ASSERT_EQ(ranges.blocks.size(), next + 1);
-      ASSERT_TRUE(ranges.ranges.consistent(heap)) << "step " << step;
+      ASSERT_TRUE(consistent(ranges.ranges, heap)) << "step " << step;
       EXPECT_EQ(heap, std::max(heapBefore, expected + size));
       // What was taken is free for nobody now.
       for (const QueueClass q : {QueueClass::Graphics, QueueClass::AsyncCompute}) {
@@ -229,7 +239,7 @@ TEST(FreeRanges, AllocationsAreTheBestFitOfWhatTheQueueMayTake) {
 TEST(FreeRanges, PlacesExactlyAsTheLinearWalkOnRandomLifetimes) {
   std::mt19937 rng(2026);
   FreeRanges blocks;
-  testing::LinearFreeRanges linear;
+  LinearFreeRanges linear;
   constexpr QueueClass kAll[] = {QueueClass::Graphics, QueueClass::AsyncCompute, QueueClass::Transfer};
   uint64_t heapsCompared = 0, takeOvers = 0;
   for (int heapIndex = 0; heapIndex < 60; ++heapIndex) {
@@ -259,7 +269,7 @@ TEST(FreeRanges, PlacesExactlyAsTheLinearWalkOnRandomLifetimes) {
     blocks.clear(used);
     linear.clear(used);
     uint64_t heapA = 0, heapB = 0;
-    std::vector<uint32_t> blockOf(count, 0);
+    std::vector<uint32_t> blockOf(count, 0), linearBlockOf(count, 0);
     std::vector<uint32_t> prevA, prevB;
     struct Later {
       uint32_t position, index;
@@ -267,7 +277,6 @@ TEST(FreeRanges, PlacesExactlyAsTheLinearWalkOnRandomLifetimes) {
     };
     std::vector<Later> later;
     std::vector<bool> placed(count, false), done(count, false);
-    std::vector<uint64_t> offsets(count, 0);
     for (uint32_t p = 0; p <= positions + 8; ++p) {
       // Memory whose last use is behind: to its own queues now, to the others later (or never).
       for (uint32_t i = 0; i < count; ++i) {
@@ -275,14 +284,14 @@ TEST(FreeRanges, PlacesExactlyAsTheLinearWalkOnRandomLifetimes) {
         done[i] = true;
         const QueueMask now = transients[i].queues & (rng() % 4 ? ~QueueMask::None : QueueMask::None);
         blocks.release(blockOf[i], i, now);
-        linear.release(offsets[i], transients[i].size, i, now);
+        linear.release(linearBlockOf[i], i, now);
         const QueueMask rest = used & ~now;
         if (any(rest) && rng() % 3) later.push_back({p + 1 + static_cast<uint32_t>(rng() % 5), i, rest});
       }
       for (const Later& l : later) {
         if (l.position != p) continue;
         blocks.allow(l.index, l.queues);
-        linear.allow(offsets[l.index], transients[l.index].size, l.index, l.queues);
+        linear.allow(l.index, l.queues);
       }
       for (uint32_t i = 0; i < count; ++i) {
         const Transient& t = transients[i];
@@ -290,14 +299,13 @@ TEST(FreeRanges, PlacesExactlyAsTheLinearWalkOnRandomLifetimes) {
         prevA.clear();
         prevB.clear();
         const uint64_t a = blocks.allocate(t.size, t.alignment, t.taker, heapA, prevA, blockOf[i]);
-        const uint64_t b = linear.allocate(t.size, t.alignment, t.taker, heapB, prevB);
+        const uint64_t b = linear.allocate(t.size, t.alignment, t.taker, heapB, prevB, linearBlockOf[i]);
         ASSERT_EQ(a, b) << "heap " << heapIndex << ", transient " << i;
         ASSERT_EQ(heapA, heapB) << "heap " << heapIndex << ", transient " << i;
         ASSERT_EQ(prevA, prevB) << "heap " << heapIndex << ", transient " << i;
         ASSERT_TRUE(blocks.consistent(heapA)) << "heap " << heapIndex << ", transient " << i;
         takeOvers += prevA.empty() ? 0 : 1;
         placed[i] = true;
-        offsets[i] = a;
       }
       if (p % 7 == 0) {
         for (const QueueClass q : kAll) ASSERT_EQ(blocks.rangesFor(q), linear.rangesFor(q)) << "heap " << heapIndex;

@@ -1,61 +1,37 @@
-#pragma once
-// The linear FreeRanges that placement used until session 12 (a sorted array
-// of fragments, a walk over all of them per allocation), kept as the oracle
-// the block list must agree with, decision for decision.
-
-#include <shadelgraph/graph/free_ranges.hpp>
+#include <shadelgraph/graph/linear_free_ranges.hpp>
 
 #include <algorithm>
-#include <cstdint>
-#include <vector>
 
-namespace sg::graph::testing {
+namespace sg::graph {
 
-class LinearFreeRanges {
- public:
-  using Span = FreeRanges::Span;
+uint64_t LinearFreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
+                                    std::vector<uint32_t>& previous, uint32_t& block) {
+  if (size == 0) size = 1;  // as FreeRanges
+  const uint64_t offset = allocate(size, alignment, queue, heapSize, previous);
+  block = static_cast<uint32_t>(blocks_.size());
+  blocks_.push_back({offset, offset + size});
+  return offset;
+}
 
-  // Empties the heap; only `queues` will ever take ranges from it.
-  void clear(QueueMask queues);
-  // Best fit: the smallest range `queue` may take (merged across fragments)
-  // holding `size` bytes at `alignment`, the lowest offset on a tie; otherwise
-  // at the top of the heap, starting inside the range `queue` may take that
-  // ends there (`heapSize` grows; alignment padding becomes free for every
-  // queue). `queue` must be one queue; with none or several, always the top.
-  // Appends the last users of the bytes taken to `previous`.
-  uint64_t allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
-                    std::vector<uint32_t>& previous);
-  // [offset, offset + size), last used by `occupant`, is free for `queues`.
-  void release(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues);
-  // What is still free of `occupant`'s range [offset, offset + size) may now be taken by `queues` too.
-  void allow(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues);
+void LinearFreeRanges::release(uint32_t block, uint32_t occupant, QueueMask queues) {
+  const Span span = blocks_[block];
+  if (occupant >= occupants_.size()) occupants_.resize(occupant + 1);
+  occupants_[occupant] = span;
+  release(span.begin, span.end - span.begin, occupant, queues);
+}
 
-  // The ranges `queue` may take, adjacent fragments merged, by offset (for tests and dumps).
-  std::vector<Span> rangesFor(QueueClass queue) const;
-  std::size_t fragmentCount() const { return fragments_.size(); }
+void LinearFreeRanges::allow(uint32_t occupant, QueueMask queues) {
+  const Span span = occupants_[occupant];
+  allow(span.begin, span.end - span.begin, occupant, queues);
+}
 
- private:
-  static constexpr uint32_t kNobody = ~0u;  // alignment padding: never used
-  struct Fragment {
-    uint64_t begin;
-    uint64_t end;
-    uint32_t occupant;
-    QueueMask queues;  // may take it over
-  };
-
-  // Replaces fragments [first, last) with `rest` (0 to 2 fragments).
-  void splice(std::size_t first, std::size_t last, const Fragment* rest, std::size_t count);
-
-  std::vector<Fragment> fragments_;
-  QueueMask queues_ = ~QueueMask::None;
-};
-
-inline void LinearFreeRanges::clear(QueueMask queues) {
+void LinearFreeRanges::clear(QueueMask queues) {
   fragments_.clear();
+  blocks_.clear();
   queues_ = queues;
 }
 
-inline uint64_t LinearFreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
+uint64_t LinearFreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
                               std::vector<uint32_t>& previous) {
   const QueueMask taker = queueCount(queue) == 1 ? queue : QueueMask::None;
   // One walk over runs of adjacent fragments `taker` may take, the best fitting kept.
@@ -124,13 +100,13 @@ inline uint64_t LinearFreeRanges::allocate(uint64_t size, uint64_t alignment, Qu
   return offset;
 }
 
-inline void LinearFreeRanges::release(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues) {
+void LinearFreeRanges::release(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues) {
   const auto at = std::lower_bound(fragments_.begin(), fragments_.end(), offset,
                                    [](const Fragment& f, uint64_t o) { return f.begin < o; });
   fragments_.insert(at, {offset, offset + size, occupant, queues & queues_});
 }
 
-inline void LinearFreeRanges::allow(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues) {
+void LinearFreeRanges::allow(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues) {
   queues &= queues_;
   if (!any(queues)) return;
   auto it = std::lower_bound(fragments_.begin(), fragments_.end(), offset,
@@ -140,7 +116,7 @@ inline void LinearFreeRanges::allow(uint64_t offset, uint64_t size, uint32_t occ
   }
 }
 
-inline std::vector<LinearFreeRanges::Span> LinearFreeRanges::rangesFor(QueueClass queue) const {
+std::vector<LinearFreeRanges::Span> LinearFreeRanges::rangesFor(QueueClass queue) const {
   std::vector<Span> spans;
   for (const Fragment& f : fragments_) {
     if (!any(f.queues & toMask(queue))) continue;
@@ -153,7 +129,7 @@ inline std::vector<LinearFreeRanges::Span> LinearFreeRanges::rangesFor(QueueClas
   return spans;
 }
 
-inline void LinearFreeRanges::splice(std::size_t first, std::size_t last, const Fragment* rest, std::size_t count) {
+void LinearFreeRanges::splice(std::size_t first, std::size_t last, const Fragment* rest, std::size_t count) {
   const std::size_t removed = last - first;
   const auto at = fragments_.begin() + static_cast<std::ptrdiff_t>(first);
   if (count <= removed) {
@@ -165,4 +141,4 @@ inline void LinearFreeRanges::splice(std::size_t first, std::size_t last, const 
   }
 }
 
-}  // namespace sg::graph::testing
+}  // namespace sg::graph
