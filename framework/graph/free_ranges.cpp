@@ -8,12 +8,11 @@
 namespace sg::graph {
 namespace {
 
-// Size class of a run's length: exact below 4, else a power of two split in
-// quarters (monotonic in the length, 256 classes for 64-bit lengths).
+// Size class of a run's length: a power of two in quarters (monotonic in the
+// length, 4 to 255 for 64-bit lengths; lengths below 8 each their own).
 inline uint32_t sizeClass(uint64_t length) {
-  if (length < 4) return static_cast<uint32_t>(length);
-  const auto log = static_cast<uint32_t>(63 - std::countl_zero(length));
-  return log * 4 + static_cast<uint32_t>((length >> (log - 2)) & 3);
+  const auto log = static_cast<uint32_t>(63 - std::countl_zero(length | 4));
+  return 4 * (log - 1) + static_cast<uint32_t>(length >> (log - 2));
 }
 
 }  // namespace
@@ -40,6 +39,7 @@ SG_FREE_RANGES_INLINE void FreeRanges::bin(uint32_t head, uint32_t queue, uint64
   const uint32_t c = sizeClass(end - blocks_[head].begin);
   RunLink& link = blocks_[head].runs[queue];
   link.end = end;
+  blocks_[head].runClass[queue] = static_cast<uint8_t>(c);
   link.binPrev = kNone;
   uint64_t& word = bins.nonEmpty[c / 64];
   const uint64_t bit = uint64_t{1} << (c % 64);
@@ -57,15 +57,14 @@ SG_FREE_RANGES_INLINE void FreeRanges::unbin(uint32_t head, uint32_t queue) {
     blocks_[link.binPrev].runs[queue].binNext = link.binNext;
     return;
   }
-  const uint32_t c = sizeClass(link.end - blocks_[head].begin);
+  const uint32_t c = blocks_[head].runClass[queue];
   bins.first[c] = link.binNext;
   if (link.binNext == kNone) bins.nonEmpty[c / 64] &= ~(uint64_t{1} << (c % 64));
 }
 
 SG_FREE_RANGES_INLINE void FreeRanges::resize(uint32_t head, uint32_t queue, uint64_t end) {
   RunLink& link = blocks_[head].runs[queue];
-  const uint64_t begin = blocks_[head].begin;
-  if (sizeClass(end - begin) == sizeClass(link.end - begin)) {
+  if (sizeClass(end - blocks_[head].begin) == blocks_[head].runClass[queue]) {
     link.end = end;
     return;
   }

@@ -25,7 +25,7 @@ inline uint64_t alignUp(uint64_t value, uint64_t alignment) {
 // taken over) and holds the queues allowed to take it over yet: its last
 // user's at once, the others once a semaphore wait proves that work done. A
 // queue sees adjacent free blocks it may take as one range, a *run*; each
-// queue's runs sit in size-class bins (a power of two in quarters, a bitmap
+// queue's runs sit in size-class bins (powers of two in quarters, a bitmap
 // of the non-empty ones), so best fit looks at one or two bins instead of
 // every fragment. Placement decisions are those of a walk over all fragments
 // by offset (tests/unit/graph/linear_free_ranges.hpp, the oracle).
@@ -65,7 +65,6 @@ class FreeRanges {
   static constexpr uint32_t kNone = ~0u;
   static constexpr uint32_t kNobody = ~0u;  // alignment padding: never used
   static constexpr uint32_t kBins = 256;
-  static constexpr uint16_t kUnbinned = 0xffff;
 
   // Where a block heading a run of one queue sits in that queue's bins.
   struct RunLink {
@@ -83,6 +82,7 @@ class FreeRanges {
     uint32_t pieceNext = kNone;
     QueueMask queues = QueueMask::None;  // free: who may take it over
     bool used = false;
+    std::array<uint8_t, kQueueClassCount> runClass{};  // the size class of the run it heads, per queue
     std::array<RunLink, kQueueClassCount> runs{};  // valid where it heads a run of that queue
   };
   struct Bins {
