@@ -28,7 +28,8 @@ inline uint64_t alignUp(uint64_t value, uint64_t alignment) {
 // queue's runs sit in size-class bins (powers of two in quarters, a bitmap
 // of the non-empty ones), so best fit looks at one or two bins instead of
 // every fragment. Placement decisions are those of a walk over all fragments
-// by offset (tests/unit/graph/linear_free_ranges.hpp, the oracle).
+// by offset (LinearFreeRanges, the oracle in the tests and the cheaper choice
+// for small heaps).
 class FreeRanges {
  public:
   struct Span {
