@@ -130,6 +130,7 @@ const std::map<std::string, size_t> kSharedRecords = {
     {"SgDecoupledParams", sizeof(shader::SgDecoupledParams)},
     {"SgLayerShadePush", sizeof(shader::SgLayerShadePush)},
     {"SgOccupancyPush", sizeof(shader::SgOccupancyPush)},
+    {"SgEntrySpan", sizeof(shader::SgEntrySpan)},
     {"SgExposure", sizeof(shader::SgExposure)},
     {"SgExposureParams", sizeof(shader::SgExposureParams)},
     {"SgEnvironmentPush", sizeof(shader::SgEnvironmentPush)},
@@ -246,7 +247,7 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   errors += mismatches("object-pick", passes::objectPickPipeline());
   for (bool passthrough : {false, true})
     errors += mismatches("tonemap", passes::tonemapPipeline(VK_FORMAT_R8G8B8A8_SRGB, passthrough));
-  errors += mismatches("shadel-clear", passes::shadelClearPipeline());
+  for (bool entries : {false, true}) errors += mismatches("shadel-clear", passes::shadelClearPipeline(entries));
   for (int filter : {0, 1, 2})
     for (bool baseline : {false, true})
       for (bool alphaTest : {false, true})
