@@ -305,13 +305,13 @@ TEST_F(ShaderInterface, ReportsABindingTypePushConstantAndUnusedBindingThatDrift
   ASSERT_EQ(mismatches("shadel-allocate", desc), "");
   desc.layout.bindings.front().type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;  // kBindParams is a uniform buffer
   desc.layout.bindings.push_back({shader::kBindIdMaps, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
-  desc.layout.pushConstantBytes = 4;
+  desc.layout.pushConstantBytes = 4;  // the shaders push an SgEntrySpan (8 bytes)
   std::string errors = mismatches("shadel-allocate", desc);
   errors += unused();
   EXPECT_NE(errors.find("binding 1 is a uniform buffer in the shaders but declared a storage buffer"), std::string::npos)
       << errors;
   EXPECT_NE(errors.find("declares set 0 binding 10 (storage buffer), which no variant uses"), std::string::npos) << errors;
-  EXPECT_NE(errors.find("push constants are 0 bytes in the shaders but declared 4"), std::string::npos) << errors;
+  EXPECT_NE(errors.find("push constants are 8 bytes in the shaders but declared 4"), std::string::npos) << errors;
 
   gpu::ComputePipelineDesc missing = passes::shadelAllocatePipeline();
   missing.layout.bindings.pop_back();
