@@ -17,7 +17,7 @@ void main() {
 #if SG_PHASE == 0
   if (i < kWorkSlotsPerObject * params.objectCount + kWorkGlobalSlots) work[i] = 0u;
 #else
-  i = sgSpanEntry();
+  i = sgSpanEntry(64u);
   if (!sgInSpan(i)) return;
   SgOwnedEntry owned = ownedEntries[i];
   SgRemapEntry entry = remap[owned.entryIndex];

@@ -29,7 +29,7 @@ uint bitsSet(uint64_t bits) {
 }
 
 void main() {
-  uint i = sgSpanEntry();
+  uint i = sgSpanEntry(64u);
   if (!sgInSpan(i)) return;
   SgOwnedEntry owned = ownedEntries[i];
   uint64_t occupancy = remap[owned.entryIndex].occupancy;

@@ -14,7 +14,7 @@ layout(local_size_x = 64) in;
 #include <framework/shadel/shaders/entry_span.glsl>
 
 void main() {
-  uint i = sgSpanEntry();
+  uint i = sgSpanEntry(64u);
   if (!sgInSpan(i)) return;
   SgOwnedEntry owned = ownedEntries[i];
   remap[owned.entryIndex].storageBase = i * SG_CHUNKS_PER_ENTRY;

@@ -80,7 +80,7 @@ uint64_t sgMarkedInSpan(ivec2 entry, ivec2 begin, ivec2 end) {
 }
 
 void main() {
-  uint ownedIndex = sgSpanEntry();
+  uint ownedIndex = sgSpanEntry(64u);
   if (!sgInSpan(ownedIndex)) return;
   SgOwnedEntry owned = ownedEntries[ownedIndex];
   uint radius = owned.instanceId < params.objectCount ? min(objects[owned.instanceId].supportChunks, SG_MAX_SUPPORT_CHUNKS) : 0u;
@@ -111,7 +111,7 @@ void main() {
 layout(local_size_x = 64) in;
 
 void main() {
-  uint ownedIndex = sgSpanEntry();
+  uint ownedIndex = sgSpanEntry(64u);
   if (!sgInSpan(ownedIndex)) return;
   uint entry = ownedEntries[ownedIndex].entryIndex;
   uint64_t occupancy = remap[entry].occupancy;

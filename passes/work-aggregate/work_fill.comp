@@ -13,7 +13,7 @@
 layout(local_size_x = 64) in;
 
 void main() {
-  uint i = sgSpanEntry();
+  uint i = sgSpanEntry(64u);
   if (!sgInSpan(i)) return;
   SgOwnedEntry owned = ownedEntries[i];
   SgRemapEntry entry = remap[owned.entryIndex];

@@ -13,8 +13,9 @@ uint sgSpanWorkgroup() { return gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkG
 // The first owned entry of this workgroup, which covers `perGroup` entries.
 uint sgSpanGroupFirst(uint perGroup) { return sgEntrySpan.begin + sgSpanWorkgroup() * perGroup; }
 
-// The owned entry of this invocation (one entry per invocation).
-uint sgSpanEntry() { return sgSpanGroupFirst(gl_WorkGroupSize.x) + gl_LocalInvocationIndex; }
+// The owned entry of this invocation, one entry per invocation of workgroups
+// of `groupSize` (given: gl_WorkGroupSize is not yet declared where this is included).
+uint sgSpanEntry(uint groupSize) { return sgSpanGroupFirst(groupSize) + gl_LocalInvocationIndex; }
 
 bool sgInSpan(uint ownedIndex) { return ownedIndex < sgEntrySpan.end; }
 
