@@ -1,5 +1,6 @@
 #include <decoupled_frame.hpp>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -66,6 +67,18 @@ void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const Decoup
   }
   vkCmdBindPipeline(ctx.cmd(), pipeline.bindPoint(), pipeline.handle());
   ctx.descriptors().bind(ctx.cmd(), pipeline, writes);
+}
+
+void dispatchEntrySpans(PassContext& ctx, const gpu::Pipeline& pipeline, std::span<const SgEntrySpan> spans,
+                        uint32_t entriesPerGroup) {
+  constexpr uint32_t kMaxGroupsPerRow = 65535;  // maxComputeWorkGroupCount[0]'s guaranteed minimum
+  for (const SgEntrySpan& span : spans) {
+    if (span.end <= span.begin) continue;
+    const uint32_t groups = (span.end - span.begin + entriesPerGroup - 1) / entriesPerGroup;
+    const uint32_t x = std::min(groups, kMaxGroupsPerRow);
+    vkCmdPushConstants(ctx.cmd(), pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof span, &span);
+    vkCmdDispatch(ctx.cmd(), x, (groups + x - 1) / x, 1);
+  }
 }
 
 void drawDecoupled(PassContext& ctx, const DecoupledFrame& frame, std::span<const uint32_t> bindings, VkBuffer indirect,

@@ -36,6 +36,11 @@ struct DecoupledFrame {
   const gpu::Buffer& idMaps;
   uint32_t ownedEntryCount = 0;
   uint32_t objectCount = 0;
+  // The owned entries the per-entry passes visit this frame, as runs
+  // (sg::shadel::liveEntrySpans): those of the objects shaded this frame and
+  // of those still holding stored chunks. Culled objects' entries are left
+  // alone. Empty: those passes dispatch nothing.
+  std::span<const SgEntrySpan> liveSpans;
   // The composite filter (0 point, 1 bilinear, 2 trilinear), which is also
   // what shadel-mark marks: both pipelines get it only as filterDefine(filter).
   // Settled in the prepare step (the renderer's setting or composite's
@@ -78,6 +83,12 @@ gpu::PipelineLayoutDesc decoupledLayout(std::span<const uint32_t> bindings, bool
 // pass's own `extra` ones.
 void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const DecoupledFrame& frame,
                    std::span<const uint32_t> bindings, std::span<const gpu::DescriptorWrite> extra = {});
+
+// One dispatch of the bound per-entry `pipeline` per live span, each
+// (span length / entriesPerGroup) workgroups as a 2D grid, its span pushed
+// (SgEntrySpan, entry_span.glsl). Nothing for an empty span.
+void dispatchEntrySpans(PassContext& ctx, const gpu::Pipeline& pipeline, std::span<const SgEntrySpan> spans,
+                        uint32_t entriesPerGroup = 64);
 
 // Draws the frame's decoupled objects as their decoupled object ids (culled
 // by `indirect` when set): the opaque ones with pipeline(false), then the

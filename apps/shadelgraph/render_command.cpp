@@ -125,6 +125,9 @@ void writeStats(const std::string& path, const AppSession& session, const render
                        {"history_bytes", d.historyBytes},
                        {"support_chunks", d.counters.supportChunks},
                        {"layer_dispatches", d.layerDispatches},
+                       {"owned_entries", d.ownedEntries},
+                       {"live_entries", d.liveEntries},
+                       {"live_spans", d.liveSpans},
                        {"layers", d.layers},
                        {"layer_reuse", layerReuse},
                        {"device", session.context->deviceName()}};

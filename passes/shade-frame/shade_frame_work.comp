@@ -6,6 +6,9 @@
 // nothing reused) then lay the list out as for a raster frame.
 #include <framework/shadel/shaders/decoupled.glsl>
 #include <framework/shadel/shaders/work.glsl>
+#if SG_PHASE != 0
+#include <framework/shadel/shaders/entry_span.glsl>
+#endif
 
 layout(local_size_x = 64) in;
 
@@ -14,7 +17,8 @@ void main() {
 #if SG_PHASE == 0
   if (i < kWorkSlotsPerObject * params.objectCount + kWorkGlobalSlots) work[i] = 0u;
 #else
-  if (i >= params.ownedEntryCount) return;
+  i = sgSpanEntry(64u);
+  if (!sgInSpan(i)) return;
   SgOwnedEntry owned = ownedEntries[i];
   SgRemapEntry entry = remap[owned.entryIndex];
   uvec2 halves = unpackUint2x32(entry.occupancy & sgStoredMask(i));

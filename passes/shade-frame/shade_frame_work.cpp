@@ -23,7 +23,7 @@ void computeToCompute(VkCommandBuffer cmd) {
 
 gpu::ComputePipelineDesc shadeFramePhasePipeline(int phase) {
   return {.shader = {.path = "passes/shade-frame/shade_frame_work.comp", .defines = {{"SG_PHASE", std::to_string(phase)}}},
-          .layout = decoupledLayout(kBindings)};
+          .layout = decoupledLayout(kBindings, false, phase == 0 ? 0 : sizeof(SgEntrySpan))};
 }
 
 gpu::ComputePipelineDesc shadeFrameFillPipeline() {
@@ -51,13 +51,13 @@ void addShadeFrameWork(graph::RenderGraph& graph, DecoupledFrame& shadeFrame) {
     vkCmdDispatch(ctx.cmd(), (slots + 63) / 64, 1, 1);
     computeToCompute(ctx.cmd());
     bindDecoupled(ctx, count, frame, kBindings);
-    if (frame.ownedEntryCount) vkCmdDispatch(ctx.cmd(), (frame.ownedEntryCount + 63) / 64, 1, 1);
+    dispatchEntrySpans(ctx, count, frame.liveSpans);
     computeToCompute(ctx.cmd());
     bindDecoupled(ctx, offsets, frame, kOffsetBindings);
     vkCmdDispatch(ctx.cmd(), 1, 1, 1);
     computeToCompute(ctx.cmd());
     bindDecoupled(ctx, fill, frame, workFillBindings());
-    if (frame.ownedEntryCount) vkCmdDispatch(ctx.cmd(), (frame.ownedEntryCount + 63) / 64, 1, 1);
+    dispatchEntrySpans(ctx, fill, frame.liveSpans);
   });
 }
 

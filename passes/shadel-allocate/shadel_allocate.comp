@@ -13,6 +13,7 @@
 //   more than its count. Step 2 also counts the chunks that keep their
 //   shading (reuse.glsl) apart from those to shade.
 #include <framework/shadel/shaders/decoupled.glsl>
+#include <framework/shadel/shaders/entry_span.glsl>
 #include <framework/shadel/shaders/reuse.glsl>
 #include <framework/shadel/shaders/work.glsl>
 
@@ -28,8 +29,8 @@ uint bitsSet(uint64_t bits) {
 }
 
 void main() {
-  uint i = gl_GlobalInvocationID.x;
-  if (i >= params.ownedEntryCount) return;
+  uint i = sgSpanEntry(64u);
+  if (!sgInSpan(i)) return;
   SgOwnedEntry owned = ownedEntries[i];
   uint64_t occupancy = remap[owned.entryIndex].occupancy;
   uint base = i * SG_CHUNKS_PER_ENTRY;

@@ -28,7 +28,7 @@ void computeToCompute(VkCommandBuffer cmd) {
 gpu::ComputePipelineDesc shadelAllocatePipeline(int phase) {
   return {.shader = {.path = "passes/shadel-allocate/shadel_allocate.comp",
                      .defines = {{"SG_PHASE", std::to_string(phase)}}},
-          .layout = decoupledLayout(phaseBindings(phase))};
+          .layout = decoupledLayout(phaseBindings(phase), false, sizeof(SgEntrySpan))};
 }
 
 void addShadelAllocate(graph::RenderGraph& graph, DecoupledFrame& frame) {
@@ -39,15 +39,14 @@ void addShadelAllocate(graph::RenderGraph& graph, DecoupledFrame& frame) {
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);
   frame.work = pass.write(frame.work, graph::Access::StorageReadWrite);
   pass.execute([frame](PassContext& ctx) {
-    if (!frame.ownedEntryCount) return;
-    const uint32_t groups = (frame.ownedEntryCount + 63) / 64;
+    if (frame.liveSpans.empty()) return;
     const auto& release = ctx.device().pipeline("shadel-allocate-free", [] { return shadelAllocatePipeline(1); });
     bindDecoupled(ctx, release, frame, kFreeBindings);
-    vkCmdDispatch(ctx.cmd(), groups, 1, 1);
+    dispatchEntrySpans(ctx, release, frame.liveSpans);
     computeToCompute(ctx.cmd());
     const auto& take = ctx.device().pipeline("shadel-allocate", [] { return shadelAllocatePipeline(2); });
     bindDecoupled(ctx, take, frame, kTakeBindings);
-    vkCmdDispatch(ctx.cmd(), groups, 1, 1);
+    dispatchEntrySpans(ctx, take, frame.liveSpans);
   });
 }
 

@@ -1,22 +1,29 @@
 #version 460
-// Resets the remap entries of allocated instances only (cost follows the
-// allocated entries, not the virtual sheet), the shade counters, the
-// per-object work counts and the reuse list's. An owned entry's storageBase
-// is its first chunk slot (chunk_slots.glsl): where its chunks' storage is
-// kept from frame to frame.
+// With SG_CLEAR_ENTRIES: resets the remap entries of the frame's live span
+// only (entry_span.glsl: cost follows the live entries, not the allocated
+// ones nor the virtual sheet). An owned entry's storageBase is its first
+// chunk slot (chunk_slots.glsl): where its chunks' storage is kept from frame
+// to frame. Without: the shade counters, the per-object work counts and the
+// reuse list's.
 #include <framework/shadel/shaders/decoupled.glsl>
 #include <framework/shadel/shaders/work.glsl>
 
 layout(local_size_x = 64) in;
 
+#ifdef SG_CLEAR_ENTRIES
+#include <framework/shadel/shaders/entry_span.glsl>
+
+void main() {
+  uint i = sgSpanEntry(64u);
+  if (!sgInSpan(i)) return;
+  SgOwnedEntry owned = ownedEntries[i];
+  remap[owned.entryIndex].storageBase = i * SG_CHUNKS_PER_ENTRY;
+  remap[owned.entryIndex].objectInstanceId = owned.instanceId;
+  remap[owned.entryIndex].occupancy = uint64_t(0);
+}
+#else
 void main() {
   uint i = gl_GlobalInvocationID.x;
-  if (i < params.ownedEntryCount) {
-    SgOwnedEntry owned = ownedEntries[i];
-    remap[owned.entryIndex].storageBase = i * SG_CHUNKS_PER_ENTRY;
-    remap[owned.entryIndex].objectInstanceId = owned.instanceId;
-    remap[owned.entryIndex].occupancy = uint64_t(0);
-  }
   if (i < params.objectCount) {
     work[sgObjectChunksSlot(i)] = 0u;
     work[sgObjectFillSlot(i)] = 0u;
@@ -42,3 +49,4 @@ void main() {
     counters.shadelsSkipped = 0u;
   }
 }
+#endif

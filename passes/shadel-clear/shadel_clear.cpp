@@ -10,8 +10,11 @@ namespace {
 constexpr std::array kBindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindCounters, kBindWork};
 }  // namespace
 
-gpu::ComputePipelineDesc shadelClearPipeline() {
-  return {.shader = {.path = "passes/shadel-clear/shadel_clear.comp"}, .layout = decoupledLayout(kBindings)};
+gpu::ComputePipelineDesc shadelClearPipeline(bool entries) {
+  gpu::ComputePipelineDesc desc{.shader = {.path = "passes/shadel-clear/shadel_clear.comp"},
+                                .layout = decoupledLayout(kBindings, false, entries ? sizeof(SgEntrySpan) : 0)};
+  if (entries) desc.shader.defines.push_back({"SG_CLEAR_ENTRIES", "1"});
+  return desc;
 }
 
 void addShadelClear(graph::RenderGraph& graph, DecoupledFrame& frame) {
@@ -20,10 +23,14 @@ void addShadelClear(graph::RenderGraph& graph, DecoupledFrame& frame) {
   frame.counters = pass.write(frame.counters, graph::Access::StorageWrite);
   frame.work = pass.write(frame.work, graph::Access::StorageWrite);
   pass.execute([frame](PassContext& ctx) {
-    const auto& pipeline = ctx.device().pipeline("shadel-clear", shadelClearPipeline);
-    bindDecoupled(ctx, pipeline, frame, kBindings);
-    const uint32_t n = std::max({frame.ownedEntryCount, frame.objectCount, 64u});
+    const auto& counters = ctx.device().pipeline("shadel-clear", [] { return shadelClearPipeline(false); });
+    bindDecoupled(ctx, counters, frame, kBindings);
+    const uint32_t n = std::max(frame.objectCount, 64u);
     vkCmdDispatch(ctx.cmd(), (n + 63) / 64, 1, 1);
+    // The remap entries of the live span only (the two dispatches write apart: no barrier).
+    const auto& entries = ctx.device().pipeline("shadel-clear-entries", [] { return shadelClearPipeline(true); });
+    bindDecoupled(ctx, entries, frame, kBindings);
+    dispatchEntrySpans(ctx, entries, frame.liveSpans);
   });
 }
 

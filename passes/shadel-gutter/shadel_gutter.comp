@@ -6,10 +6,11 @@
 // level's edge, or where that neighbour chunk has no storage this frame (no
 // pixel's footprint started in it: the edge of what is visible at this level),
 // the gutter repeats the chunk's own edge shadel, as if clamped there.
-// 32 owned remap entries per workgroup (a workgroup per entry cost more in
+// 32 owned remap entries of the live span per workgroup (a workgroup per entry cost more in
 // dispatch than the copies); its 64 lanes share their stored chunks' 17
 // gutter texels each.
 #include <framework/shadel/shaders/decoupled.glsl>
+#include <framework/shadel/shaders/entry_span.glsl>
 
 layout(local_size_x = 64) in;
 layout(set = 0, binding = kBindLayerImage, rgba16f) uniform image2D shaded;
@@ -28,11 +29,11 @@ uint storedChunk(uvec2 shadel, SgLevelRect rect) {
 
 void main() {
   uint lane = gl_LocalInvocationIndex;
-  uint first = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * kEntriesPerGroup;
+  uint first = sgSpanGroupFirst(kEntriesPerGroup);
   if (lane == 0u) chunkCount = 0u;
   barrier();
   // Each lane lists its entry's stored chunks.
-  if (lane < kEntriesPerGroup && first + lane < params.ownedEntryCount) {
+  if (lane < kEntriesPerGroup && sgInSpan(first + lane)) {
     SgRemapEntry entry = remap[ownedEntries[first + lane].entryIndex];
     uint64_t stored = entry.occupancy & sgStoredMask(first + lane);
     uvec2 halves = unpackUint2x32(stored);

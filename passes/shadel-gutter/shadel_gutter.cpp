@@ -9,12 +9,11 @@ namespace sg::passes {
 namespace {
 constexpr std::array kBindings{kBindParams, kBindShadelInstances, kBindLevelRects, kBindRemap, kBindOwnedEntries,
                                kBindChunkSlots, kBindLayerImage};
-constexpr uint32_t kMaxGroupsPerRow = 65535;  // maxComputeWorkGroupCount[0]'s guaranteed minimum
 }  // namespace
 
 gpu::ComputePipelineDesc shadelGutterPipeline() {
   return {.shader = {.path = "passes/shadel-gutter/shadel_gutter.comp"},
-          .layout = decoupledLayout(kBindings, /*layerImageStorage*/ true)};
+          .layout = decoupledLayout(kBindings, /*layerImageStorage*/ true, sizeof(SgEntrySpan))};
 }
 
 void addShadelGutter(graph::RenderGraph& graph, DecoupledFrame& frame) {
@@ -25,9 +24,7 @@ void addShadelGutter(graph::RenderGraph& graph, DecoupledFrame& frame) {
   pass.execute([frame](PassContext& ctx) {
     const auto& pipeline = ctx.device().pipeline("shadel-gutter", shadelGutterPipeline);
     bindDecoupled(ctx, pipeline, frame, kBindings);
-    const uint32_t groups = (frame.ownedEntryCount + 31) / 32;  // 32 owned entries each (the shader's kEntriesPerGroup)
-    if (groups)
-      vkCmdDispatch(ctx.cmd(), std::min(groups, kMaxGroupsPerRow), (groups + kMaxGroupsPerRow - 1) / kMaxGroupsPerRow, 1);
+    dispatchEntrySpans(ctx, pipeline, frame.liveSpans, 32);  // 32 owned entries each (the shader's kEntriesPerGroup)
   });
 }
 

@@ -40,13 +40,18 @@ gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline, bool alp
 void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle depth) {
   const bool masks = frame.shadelMasks && !frame.baseline;
   if (masks) {
-    // One 64-bit mask per chunk slot (64 per owned entry), zeroed every frame.
+    // One 64-bit mask per chunk slot (64 per owned entry), zeroed every frame
+    // in the live spans (only their entries are marked and shaded).
     frame.masks = graph.createBuffer(
         "shadel masks", {.size = sizeof(uint64_t) * kChunkSlotsPerEntry * std::max(frame.ownedEntryCount, 1u)});
     auto& clear = graph.addPass("shadel-mask-clear", graph::QueueClass::Graphics, graph::PassKind::Transfer);
     frame.masks = clear.write(frame.masks, graph::Access::TransferDst);
-    clear.execute([buffer = frame.masks](PassContext& ctx) {
-      vkCmdFillBuffer(ctx.cmd(), ctx.buffer(buffer).handle(), 0, VK_WHOLE_SIZE, 0);
+    clear.execute([buffer = frame.masks, spans = frame.liveSpans](PassContext& ctx) {
+      constexpr VkDeviceSize kEntryBytes = sizeof(uint64_t) * kChunkSlotsPerEntry;
+      for (const SgEntrySpan& span : spans)
+        if (span.end > span.begin)
+          vkCmdFillBuffer(ctx.cmd(), ctx.buffer(buffer).handle(), kEntryBytes * span.begin,
+                          kEntryBytes * (span.end - span.begin), 0);
     });
   } else {
     frame.masks = {};

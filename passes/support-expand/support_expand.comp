@@ -7,7 +7,7 @@
 //
 // Two dispatches of this file, so that nothing cascades: a chunk is added only
 // because a chunk marked *by shadel-mark* is near it.
-//   gather (the default): a thread per owned entry; reads the original
+//   gather (the default): a thread per owned entry of the live span (entry_span.glsl); reads the original
 //     occupancy of its entry and of the 8 around it (radius <= 8 chunks, an
 //     entry's side), dilates it with 64-bit row and column shifts (a box:
 //     rows, then columns) and writes the entry's mask to supportMasks. It
@@ -16,15 +16,13 @@
 //     neighbours, read each neighbour's remap entry once per chunk.)
 //   apply (SG_SUPPORT_APPLY defined): a thread per owned entry ORs its mask into the entry
 //     (owned entries are distinct: no atomics) and counts the new bits.
-// The workgroups of both form a 2D grid (x up to 65535) read back as one index.
 #include <framework/shadel/shaders/decoupled.glsl>
+#include <framework/shadel/shaders/entry_span.glsl>
 
 // The transient buffer of the masks, one per owned entry.
 layout(set = 0, binding = kBindSupportMasks, std430) buffer SupportMasks { uint64_t supportMasks[]; };
 
 const uint SG_MAX_SUPPORT_CHUNKS = 8u;  // sg::shadel::kMaxSupportChunks
-
-uint sgWorkgroupIndex() { return gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x; }
 
 #ifndef SG_SUPPORT_APPLY
 layout(local_size_x = 64) in;
@@ -82,8 +80,8 @@ uint64_t sgMarkedInSpan(ivec2 entry, ivec2 begin, ivec2 end) {
 }
 
 void main() {
-  uint ownedIndex = sgWorkgroupIndex() * 64u + gl_LocalInvocationIndex;
-  if (ownedIndex >= params.ownedEntryCount) return;
+  uint ownedIndex = sgSpanEntry(64u);
+  if (!sgInSpan(ownedIndex)) return;
   SgOwnedEntry owned = ownedEntries[ownedIndex];
   uint radius = owned.instanceId < params.objectCount ? min(objects[owned.instanceId].supportChunks, SG_MAX_SUPPORT_CHUNKS) : 0u;
   uint64_t mask = uint64_t(0);
@@ -113,8 +111,8 @@ void main() {
 layout(local_size_x = 64) in;
 
 void main() {
-  uint ownedIndex = sgWorkgroupIndex() * 64u + gl_LocalInvocationIndex;
-  if (ownedIndex >= params.ownedEntryCount) return;
+  uint ownedIndex = sgSpanEntry(64u);
+  if (!sgInSpan(ownedIndex)) return;
   uint entry = ownedEntries[ownedIndex].entryIndex;
   uint64_t occupancy = remap[entry].occupancy;
   uint64_t added = supportMasks[ownedIndex] & ~occupancy;

@@ -17,19 +17,11 @@ const gpu::Pipeline& supportPipeline(PassContext& ctx, bool apply) {
                                [&] { return supportExpandPipeline(apply); });
 }
 
-// `groups` workgroups as a 2D grid (x within the 65535 every device allows);
-// the shader reads them back as one index and drops those past the end.
-void dispatchGroups(VkCommandBuffer cmd, uint32_t groups) {
-  const uint32_t x = std::min(groups, 65535u);
-  vkCmdDispatch(cmd, x, (groups + x - 1) / x, 1);
-}
-
-
 }  // namespace
 
 gpu::ComputePipelineDesc supportExpandPipeline(bool apply) {
   gpu::ComputePipelineDesc desc{.shader = {.path = "passes/support-expand/support_expand.comp"},
-                                .layout = decoupledLayout(kBindings)};
+                                .layout = decoupledLayout(kBindings, false, sizeof(SgEntrySpan))};
   if (apply) desc.shader.defines.push_back({"SG_SUPPORT_APPLY", "1"});
   return desc;
 }
@@ -42,12 +34,13 @@ void addSupportExpand(graph::RenderGraph& graph, DecoupledFrame& frame) {
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);
   masks = pass.write(masks, graph::Access::StorageReadWrite);
   pass.execute([frame, masks](PassContext& ctx) {
-    if (frame.ownedEntryCount == 0) return;
+    if (frame.liveSpans.empty()) return;
     const VkBuffer maskBuffer = ctx.buffer(masks).handle();
     const std::array extra{gpu::DescriptorWrite{kBindSupportMasks, gpu::BufferBinding{maskBuffer}}};
 
-    bindDecoupled(ctx, supportPipeline(ctx, false), frame, kBindings, extra);
-    dispatchGroups(ctx.cmd(), (frame.ownedEntryCount + 63) / 64);  // a thread per owned entry
+    const gpu::Pipeline& gather = supportPipeline(ctx, false);
+    bindDecoupled(ctx, gather, frame, kBindings, extra);
+    dispatchEntrySpans(ctx, gather, frame.liveSpans);  // a thread per live owned entry
 
     // Apply may start only when all of gather is done: apply reads the masks
     // gather wrote (a memory dependency), and writes occupancy gather read in
@@ -58,8 +51,9 @@ void addSupportExpand(graph::RenderGraph& graph, DecoupledFrame& frame) {
                        {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
 
-    bindDecoupled(ctx, supportPipeline(ctx, true), frame, kBindings, extra);
-    dispatchGroups(ctx.cmd(), (frame.ownedEntryCount + 63) / 64);  // a thread per owned entry
+    const gpu::Pipeline& apply = supportPipeline(ctx, true);
+    bindDecoupled(ctx, apply, frame, kBindings, extra);
+    dispatchEntrySpans(ctx, apply, frame.liveSpans);
   });
 }
 

@@ -19,7 +19,8 @@ gpu::ComputePipelineDesc workOffsetsPipeline() {
 std::span<const uint32_t> workFillBindings() { return kFillBindings; }
 
 gpu::ComputePipelineDesc workFillPipeline() {
-  return {.shader = {.path = "passes/work-aggregate/work_fill.comp"}, .layout = decoupledLayout(kFillBindings)};
+  return {.shader = {.path = "passes/work-aggregate/work_fill.comp"},
+          .layout = decoupledLayout(kFillBindings, false, sizeof(SgEntrySpan))};
 }
 
 void addWorkAggregate(graph::RenderGraph& graph, DecoupledFrame& frame) {
@@ -40,7 +41,7 @@ void addWorkAggregate(graph::RenderGraph& graph, DecoupledFrame& frame) {
                        {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
     bindDecoupled(ctx, fill, frame, kFillBindings);
-    if (frame.ownedEntryCount) vkCmdDispatch(ctx.cmd(), (frame.ownedEntryCount + 63) / 64, 1, 1);
+    dispatchEntrySpans(ctx, fill, frame.liveSpans);
   });
 }
 

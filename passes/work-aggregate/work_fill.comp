@@ -6,14 +6,15 @@
 // frame, and counts the oldest kept shading, the chunks shaded for their age
 // and (budget mode) the reusable chunks by age.
 #include <framework/shadel/shaders/decoupled.glsl>
+#include <framework/shadel/shaders/entry_span.glsl>
 #include <framework/shadel/shaders/reuse.glsl>
 #include <framework/shadel/shaders/work.glsl>
 
 layout(local_size_x = 64) in;
 
 void main() {
-  uint i = gl_GlobalInvocationID.x;
-  if (i >= params.ownedEntryCount) return;
+  uint i = sgSpanEntry(64u);
+  if (!sgInSpan(i)) return;
   SgOwnedEntry owned = ownedEntries[i];
   SgRemapEntry entry = remap[owned.entryIndex];
   uint base = i * SG_CHUNKS_PER_ENTRY;

@@ -237,6 +237,7 @@ void DecoupledShading::uploadTables(gpu::Device& device) {
   std::vector<DecoupledObject> objects;
   for (const auto& slot : slots_) objects.push_back(slot.record);
   ownedEntryCount_ = uint32_t(tables.ownedEntries.size());
+  ownedRuns_ = shadel::ownedEntryRuns(tables);
   idMapBytes_ = idTexels_.size() * 4;
   // Earlier frames have completed (the executor waits for each), so the old tables are free.
   for (auto& buffer : objects_) buffer = upload(device, objects, "decoupled objects");
@@ -377,6 +378,17 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
 
   const auto objectCount = uint32_t(slots_.size());
   selectFrameObjects(ctx);
+  // Only the entries of objects shaded now or holding stored chunks: culled
+  // objects cost the per-entry passes nothing. The debug views of the sheet
+  // show every entry, so they get them all.
+  const std::vector<uint32_t> live = liveInstances_.next(frameObjects_);
+  std::vector<shadel::EntrySpan>& spans = liveSpans_[ring()];
+  const bool everyEntry = !settings_.liveEntrySpans || settings_.view == DebugView::Occupancy ||
+                          settings_.view == DebugView::Sheet;
+  if (everyEntry)
+    spans.assign(ownedEntryCount_ ? 1 : 0, shadel::EntrySpan{0, ownedEntryCount_});
+  else
+    spans = shadel::liveEntrySpans(ownedRuns_, live);
   const plugin::Registry& materials = ctx.registry();
   layerPlan_ = planLayers(materials, frameObjects_, frameMaterials_);
 
@@ -406,6 +418,7 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
                                         .params = params_[ring()], .objects = objects_[ring()], .shadelInstances = shadelInstances_,
                                         .levelRects = levelRects_, .ownedEntries = ownedEntries_, .idMaps = idMapBuffer_,
                                         .ownedEntryCount = ownedEntryCount_, .objectCount = objectCount,
+                                        .liveSpans = liveSpans_[ring()],
                                         .filter = settings_.filter,
                                         .baseline = settings_.baseline,
                                         .levelView = settings_.view == DebugView::Level,
@@ -566,6 +579,9 @@ DecoupledStats DecoupledShading::stats() const {
   s.remapBytes = remapBytes_;
   s.historyBytes = history_.bytes();
   s.layerDispatches = layerPlan_.dispatches;
+  s.ownedEntries = ownedEntryCount_;
+  s.liveEntries = uint32_t(shadel::entriesIn(liveSpans_[ring()]));
+  s.liveSpans = uint32_t(liveSpans_[ring()].size());
   for (const auto& steps : layerPlan_.depths)
     for (const auto& step : steps) s.layers.push_back(step.layer);
   for (uint32_t slot = 0; slot < layerPlan_.persistent.size(); ++slot)

@@ -16,6 +16,7 @@
 #include <shadelgraph/gpu/buffer.hpp>
 #include <decoupled_frame.hpp>
 #include <shadelgraph/render/frame_context.hpp>
+#include <shadelgraph/shadel/live_entry_spans.hpp>
 #include <shadelgraph/shadel/shadel_space.hpp>
 #include <shadelgraph/shadel/shadel_storage.hpp>
 
@@ -71,6 +72,10 @@ struct DecoupledSettings {
   // object (shadel::screenRateLevel0Size); false: from textures and triangle
   // count only, as before (comparisons).
   bool screenRateLevel0 = true;
+  // The per-entry passes visit only the owned entries of objects shaded this
+  // frame or still holding stored chunks (shadel::liveEntrySpans); false:
+  // every allocated object's, culled or not, as before (comparisons).
+  bool liveEntrySpans = true;
   DebugView view = DebugView::Final;
   ShadeSpaceAdjusterOptions adjuster;
 };
@@ -91,6 +96,9 @@ struct DecoupledStats {
   uint64_t idMapBytes = 0;
   uint64_t historyBytes = 0;  // persistent layers' images and last frame's remap
   uint32_t layerDispatches = 0;  // indirect layer-shade dispatches of the frame
+  // Owned remap entries allocated, and those the per-entry passes visited in
+  // that frame (live spans), in how many runs (dispatches per such pass).
+  uint32_t ownedEntries = 0, liveEntries = 0, liveSpans = 0;
   std::vector<std::string> layers;  // layers the frame ran decoupled, in pass order
   std::vector<LayerReuse> layerReuse;  // per persistent layer
   bool shadeFrame = true;  // the last frame was a shade frame
@@ -230,6 +238,9 @@ class DecoupledShading {
   graph::ResourceHandle readbackHandle_;
   std::unique_ptr<shadel::ShadelSpace> space_;
   uint32_t ownedEntryCount_ = 0;
+  std::vector<shadel::EntrySpan> ownedRuns_;  // per object (instance id): its owned entries
+  shadel::LiveInstances liveInstances_;       // shaded this frame or holding stored chunks
+  std::vector<shadel::EntrySpan> liveSpans_[2];  // the frame's (DecoupledFrame::liveSpans), per frame in flight
   ChunkSlots chunkSlots_;  // stable allocation: where each stored chunk is, kept across frames
   shadel::StorageLayout storage_;
   uint64_t idMapBytes_ = 0;

@@ -119,6 +119,15 @@ struct SgLayerShadePush {
   uint countSkipped;     // 1: this step counts the shadels it leaves out (the material's last layer)
 };
 
+// Push constants of the passes that run per owned remap entry (shadel-clear,
+// shadel-allocate, work-fill, shadel-gutter, support-expand, shade-frame):
+// the owned entries [begin, end) this dispatch covers, one run of the frame's
+// live entries (sg::shadel::liveEntrySpans; entry_span.glsl).
+struct SgEntrySpan {
+  uint begin;
+  uint end;
+};
+
 // Push constants of the occupancy debug view: the sheet window it shows.
 struct SgOccupancyPush {
   uvec2 originChunks;

@@ -130,6 +130,7 @@ const std::map<std::string, size_t> kSharedRecords = {
     {"SgDecoupledParams", sizeof(shader::SgDecoupledParams)},
     {"SgLayerShadePush", sizeof(shader::SgLayerShadePush)},
     {"SgOccupancyPush", sizeof(shader::SgOccupancyPush)},
+    {"SgEntrySpan", sizeof(shader::SgEntrySpan)},
     {"SgExposure", sizeof(shader::SgExposure)},
     {"SgExposureParams", sizeof(shader::SgExposureParams)},
     {"SgEnvironmentPush", sizeof(shader::SgEnvironmentPush)},
@@ -246,7 +247,7 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   errors += mismatches("object-pick", passes::objectPickPipeline());
   for (bool passthrough : {false, true})
     errors += mismatches("tonemap", passes::tonemapPipeline(VK_FORMAT_R8G8B8A8_SRGB, passthrough));
-  errors += mismatches("shadel-clear", passes::shadelClearPipeline());
+  for (bool entries : {false, true}) errors += mismatches("shadel-clear", passes::shadelClearPipeline(entries));
   for (int filter : {0, 1, 2})
     for (bool baseline : {false, true})
       for (bool alphaTest : {false, true})
@@ -304,13 +305,13 @@ TEST_F(ShaderInterface, ReportsABindingTypePushConstantAndUnusedBindingThatDrift
   ASSERT_EQ(mismatches("shadel-allocate", desc), "");
   desc.layout.bindings.front().type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;  // kBindParams is a uniform buffer
   desc.layout.bindings.push_back({shader::kBindIdMaps, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
-  desc.layout.pushConstantBytes = 4;
+  desc.layout.pushConstantBytes = 4;  // the shaders push an SgEntrySpan (8 bytes)
   std::string errors = mismatches("shadel-allocate", desc);
   errors += unused();
   EXPECT_NE(errors.find("binding 1 is a uniform buffer in the shaders but declared a storage buffer"), std::string::npos)
       << errors;
   EXPECT_NE(errors.find("declares set 0 binding 10 (storage buffer), which no variant uses"), std::string::npos) << errors;
-  EXPECT_NE(errors.find("push constants are 0 bytes in the shaders but declared 4"), std::string::npos) << errors;
+  EXPECT_NE(errors.find("push constants are 8 bytes in the shaders but declared 4"), std::string::npos) << errors;
 
   gpu::ComputePipelineDesc missing = passes::shadelAllocatePipeline();
   missing.layout.bindings.pop_back();

@@ -84,7 +84,8 @@ class SupportExpandDeviceTest : public DeviceTest {
                                                       {5},
                                                       {6},
                                                       {7},
-                                                      {kBindSupportMasks}}};
+                                                      {kBindSupportMasks}},
+                                         .pushConstantBytes = sizeof(shader::SgEntrySpan)};
     gpu::Pipeline gather(*context, *compiler, *pipelineCache,
                          gpu::ComputePipelineDesc{.shader = {.path = kShader}, .layout = layout});
     gpu::Pipeline apply(*context, *compiler, *pipelineCache,
@@ -123,8 +124,11 @@ class SupportExpandDeviceTest : public DeviceTest {
         {5, gpu::BufferBinding{remap.handle()}},          {6, gpu::BufferBinding{ownedBuffer.handle()}},
         {7, gpu::BufferBinding{countersBuffer.handle()}}, {kBindSupportMasks, gpu::BufferBinding{masks.handle()}}};
     gpu::DescriptorArena descriptors(*context);
-    auto dispatchGroups = [](VkCommandBuffer cmd, uint32_t groups) {  // as the pass does
+    // As the pass does over one span of every owned entry (passes::dispatchEntrySpans).
+    const shader::SgEntrySpan span{0, ownedCount};
+    auto dispatchGroups = [&span](VkCommandBuffer cmd, const gpu::Pipeline& pipeline, uint32_t groups) {
       const uint32_t x = std::min(groups, 65535u);
+      vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof span, &span);
       vkCmdDispatch(cmd, x, (groups + x - 1) / x, 1);
     };
     // The pass's barrier: the masks from gather to apply, gather's remap reads before apply's writes.
@@ -140,11 +144,11 @@ class SupportExpandDeviceTest : public DeviceTest {
     context->submitAndWait([&](VkCommandBuffer cmd) {
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, gather.handle());
       descriptors.bind(cmd, gather, writes);
-      dispatchGroups(cmd, (ownedCount + 63) / 64);
+      dispatchGroups(cmd, gather, (ownedCount + 63) / 64);
       gatherToApply(cmd);
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, apply.handle());
       descriptors.bind(cmd, apply, writes);
-      dispatchGroups(cmd, (ownedCount + 63) / 64);
+      dispatchGroups(cmd, apply, (ownedCount + 63) / 64);
       hostBarrier(cmd);
     });
     plugins::ShadeCounters after{};
