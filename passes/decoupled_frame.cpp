@@ -98,7 +98,8 @@ void drawDecoupled(PassContext& ctx, const DecoupledFrame& frame, std::span<cons
         const VkDescriptorSet set = frame.view.scene.materialSet(draw.material);
         vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 1, 1, &set, 0, nullptr);
       }
-      render::drawItem(ctx.cmd(), *bound, draw, frame.objectIds[i], indirect, frame.view.draws[i]);
+      render::drawItem(ctx.cmd(), *bound, draw, frame.objectIds[i], indirect, frame.view.draws[i],
+                       render::backFacesHidden(frame.view, frame.view.draws[i]));
     }
   }
 }

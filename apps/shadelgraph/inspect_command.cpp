@@ -50,6 +50,10 @@ void addInspectCommand(CLI::App& app) {
         std::printf("\n  density: %s%s", density.describe().c_str(),
                     density.even ? "" : " (uneven: decoupled shading charts it anew, auto mode shades it forward)");
       }
+      size_t closed = 0;
+      for (const auto& p : mesh.primitives) closed += p.closedSurface ? 1 : 0;
+      // Closed surfaces have their back faces culled while seen from outside, double-sided or not.
+      std::printf("\n  closed surfaces: %zu of %zu primitives", closed, mesh.primitives.size());
       std::printf("\n  materials:");
       for (int m : materials) std::printf(" '%s'", s.materials[size_t(m)].name.c_str());
       std::printf("\n");

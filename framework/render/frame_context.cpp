@@ -10,7 +10,8 @@ FrameContext::FrameContext(graph::RenderGraph& graph, const FrameInputs& inputs,
     : graph_(graph), inputs_(inputs), all_(allDraws), states_(states) {}
 
 SceneView FrameContext::view(std::span<const uint32_t> draws) const {
-  return {all_.scene, all_.frameUniforms, all_.lights, all_.noLightGrid, draws, all_.materials, all_.layerTextures, resources_, &drawCommands_};
+  return {all_.scene,     all_.frameUniforms, all_.lights, all_.noLightGrid, draws, all_.materials,
+          all_.layerTextures, resources_,       &drawCommands_, VK_NULL_HANDLE, all_.backFacesHidden};
 }
 
 std::span<const uint32_t> FrameContext::visibleDraws() {

@@ -15,4 +15,9 @@ bool sphereInFrustum(const glm::mat4& m, const glm::vec4& sphere) {
   return true;
 }
 
+bool sphereBeyondNearPlane(const glm::mat4& m, const glm::vec4& sphere) {
+  const glm::vec4 near(m[0][2], m[1][2], m[2][2], m[3][2]);  // row 2: clip z >= 0
+  return glm::dot(glm::vec3(near), glm::vec3(sphere)) + near.w > sphere.w * glm::length(glm::vec3(near));
+}
+
 }  // namespace sg::render

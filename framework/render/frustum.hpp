@@ -7,4 +7,8 @@ namespace sg::render {
 
 bool sphereInFrustum(const glm::mat4& viewProjection, const glm::vec4& sphere);
 
+// Is the sphere wholly beyond the near plane (so the camera is outside it and
+// near clipping cannot cut into what it holds)?
+bool sphereBeyondNearPlane(const glm::mat4& viewProjection, const glm::vec4& sphere);
+
 }  // namespace sg::render

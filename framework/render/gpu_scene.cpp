@@ -115,8 +115,11 @@ void GpuScene::uploadGeometry(gpu::Context& context, gpu::MemoryAllocator& memor
       const bool textured = m.baseColorTexture.present() || m.metallicRoughnessTexture.present() ||
                             m.normalTexture.present() || m.occlusionTexture.present() || m.emissiveTexture.present();
       const bool plain = !textured && mesh.primitives[p].colors.empty();
+      // Skins and morphs may fold a closed surface; blending and alpha masks show what is behind the front.
+      const bool closed = mesh.primitives[p].closedSurface && !deforms && m.alphaMode == scene::AlphaMode::Opaque;
       draws_.push_back({r.firstIndex, r.indexCount, r.vertexOffset, uint32_t(r.material), i, inst.world, m.alphaMode,
-                        m.doubleSided, plain, inst.material.empty() ? gltfMaterialStack(m) : inst.material, uint32_t(p)});
+                        m.doubleSided, plain, inst.material.empty() ? gltfMaterialStack(m) : inst.material, uint32_t(p),
+                        closed});
     }
   }
   if (vertices.empty()) throw gpu::GpuError("the scene has no triangles to draw");

@@ -45,6 +45,10 @@ struct DrawItem {
   bool plainSurface = false;
   std::string materialStack;  // the instance's layer stack ("gltf-pbr" unless the scene says otherwise)
   uint32_t primitive = 0;     // which primitive of the instance's mesh
+  // An opaque, rigid primitive whose mesh is a closed outward surface
+  // (scene::Primitive::closedSurface): seen from outside, its back faces are
+  // hidden even when the material is double-sided (SceneView::backFacesHidden).
+  bool closedSurface = false;
 };
 
 // Push constants of object.glsl.

@@ -36,6 +36,7 @@ struct Renderer::Frame {
   graph::ResourceHandle output;
   std::optional<DeformationFrame> deformation;
   std::vector<ShadowView> shadows;  // inputs.shadowViews
+  std::vector<uint8_t> backFacesHidden;  // view.backFacesHidden
   graph::ResourceHandle pick;       // with a pick pending: the readback as imported
   bool pickAnswered = false;        // a pass wrote it
 };
@@ -169,6 +170,12 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
        settings.width, settings.height, settings.occlusionCulling ? &culling_ : nullptr},
       {}, {}, {}, {}, std::move(shadows)});
   frame->inputs.shadowViews = frame->shadows;
+  // Closed surfaces wholly beyond the near plane: the camera is outside, and clipping cannot open them.
+  const auto& draws = gpuScene_.draws();
+  frame->backFacesHidden.resize(draws.size());
+  for (uint32_t d = 0; d < draws.size(); ++d)
+    frame->backFacesHidden[d] = draws[d].closedSurface && sphereBeyondNearPlane(uniforms.viewProjection, drawSpheres_[d]);
+  frame->view.backFacesHidden = frame->backFacesHidden;
   frame->inputs.pick = settings.pick;
   frame->output = frame->graph.importImage(
       "output", {.format = graph::Format::RGBA8Srgb, .size = graph::Size::absolute(settings.width, settings.height)},

@@ -18,10 +18,10 @@ void readSceneGeometry(graph::Pass& pass, const SceneView& view, graph::Access a
 }
 
 void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const DrawItem& draw, uint32_t objectId,
-              VkBuffer indirect, uint32_t drawIndex) {
+              VkBuffer indirect, uint32_t drawIndex, bool hiddenBackFaces) {
   const ObjectConstants constants{draw.world, objectId, draw.material};
   vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof constants, &constants);
-  vkCmdSetCullMode(cmd, draw.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
+  vkCmdSetCullMode(cmd, draw.doubleSided && !hiddenBackFaces ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
   // A mirroring world matrix turns counter-clockwise triangles clockwise on screen.
   const bool mirrored = glm::determinant(glm::mat3(draw.world)) < 0.0f;
   vkCmdSetFrontFace(cmd, mirrored ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
@@ -34,7 +34,8 @@ void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const DrawItem
 
 void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const SceneView& view, uint32_t drawIndex,
               uint32_t objectId) {
-  drawItem(cmd, pipeline, view.scene.draws()[drawIndex], objectId, view.indirect, drawIndex);
+  drawItem(cmd, pipeline, view.scene.draws()[drawIndex], objectId, view.indirect, drawIndex,
+           backFacesHidden(view, drawIndex));
 }
 
 }  // namespace sg::render

@@ -30,7 +30,16 @@ struct SceneView {
   const DrawCommands* commands = nullptr;
   // Set by readDrawCommands: the draws' instance counts come from here.
   VkBuffer indirect = VK_NULL_HANDLE;
+  // Per draw of the scene (index into scene.draws()), this frame: 1 when the
+  // camera sees its closed surface from outside, so back faces may be culled
+  // whatever the material says. Empty: none.
+  std::span<const uint8_t> backFacesHidden = {};
 };
+
+// Does this frame's camera see draw `drawIndex` (into view.scene.draws()) from outside its closed surface?
+inline bool backFacesHidden(const SceneView& view, uint32_t drawIndex) {
+  return drawIndex < view.backFacesHidden.size() && view.backFacesHidden[drawIndex] != 0;
+}
 
 // The frame resource of the scene vertex buffer: present only in frames whose
 // skinning pass deformed a visible object this frame (it writes it).
@@ -50,9 +59,12 @@ SceneView readDrawCommands(graph::Pass& pass, SceneView view);
 // Push constants, cull mode and front face (clockwise when the world matrix
 // mirrors) for one draw, then the indexed draw: from indirect draw command
 // `drawIndex` of `indirect` when it is set (culled draws have instance count 0).
+// Back faces are culled when the material is single-sided or `hiddenBackFaces`
+// (the camera is outside the draw's closed surface: backFacesHidden()).
 void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const DrawItem& draw, uint32_t objectId,
-              VkBuffer indirect = VK_NULL_HANDLE, uint32_t drawIndex = 0);
-// Draw `drawIndex` of the view's scene as `objectId`, culled when the view read draw commands.
+              VkBuffer indirect = VK_NULL_HANDLE, uint32_t drawIndex = 0, bool hiddenBackFaces = false);
+// Draw `drawIndex` of the view's scene as `objectId`, culled when the view read
+// draw commands, its back faces culled when single-sided or backFacesHidden().
 void drawItem(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const SceneView& view, uint32_t drawIndex,
               uint32_t objectId);
 

@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include <shadelgraph/scene/closed_surface.hpp>
 #include <shadelgraph/scene/gltf_accessor.hpp>
 #include <shadelgraph/scene/gltf_mesh.hpp>
 #include <shadelgraph/scene/input_limits.hpp>
@@ -100,6 +101,7 @@ class PrimitiveBuilder {
     }
     warnMissingTexCoords(out);
     for (const glm::vec3& p : out.positions) out.bounds.extend(p);
+    out.closedSurface = isClosedSurface(out.positions, out.indices);
     return out;
   }
 

@@ -38,6 +38,9 @@ struct Primitive {
   std::vector<MorphTarget> targets;  // morph targets, weighted by the instance's morph weights
   int material = 0;                 // always a valid index into Scene::materials
   Bounds bounds;                    // of positions, in mesh space
+  // The closed, outward-wound surface of a solid (closed_surface.hpp): its back
+  // faces are hidden from outside. Set by the glTF loader; false: not known.
+  bool closedSurface = false;
 
   size_t vertexCount() const { return positions.size(); }
   size_t triangleCount() const { return indices.size() / 3; }

@@ -15,7 +15,8 @@ void drawDepth(PassContext& ctx, const render::SceneView& view, VkBuffer indirec
   view.scene.bindGeometry(ctx.cmd());
   const auto& draws = view.scene.draws();
   for (uint32_t i : view.draws)
-    if (draws[i].alphaMode == scene::AlphaMode::Opaque) render::drawItem(ctx.cmd(), pipeline, draws[i], i, indirect, i);
+    if (draws[i].alphaMode == scene::AlphaMode::Opaque)
+      render::drawItem(ctx.cmd(), pipeline, draws[i], i, indirect, i, render::backFacesHidden(view, i));
   if (alphaTested.empty()) return;
   const auto& tested = ctx.device().pipeline(
       "z-prepass/alpha-test", [&] { return zPrepassAlphaTestPipeline(view.scene.materialSetLayout()); });
@@ -23,7 +24,7 @@ void drawDepth(PassContext& ctx, const render::SceneView& view, VkBuffer indirec
   for (uint32_t i : alphaTested) {
     const VkDescriptorSet set = view.scene.materialSet(draws[i].material);
     vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, tested.layout(), 1, 1, &set, 0, nullptr);
-    render::drawItem(ctx.cmd(), tested, draws[i], i, indirect, i);
+    render::drawItem(ctx.cmd(), tested, draws[i], i, indirect, i, render::backFacesHidden(view, i));
   }
 }
 

@@ -22,5 +22,17 @@ TEST(Frustum, InsideOutsideAndStraddling) {
   EXPECT_TRUE(sphereInFrustum(camera(), {0.0f, 0.0f, 0.5f, 1.0f})) << "around the eye";
 }
 
+TEST(Frustum, SphereBeyondNearPlane) {
+  EXPECT_TRUE(sphereBeyondNearPlane(camera(), {0.0f, 0.0f, -10.0f, 1.0f}));
+  EXPECT_TRUE(sphereBeyondNearPlane(camera(), {0.0f, 0.0f, -1.2f, 1.0f})) << "its nearest point 0.2 away, near 0.1";
+  EXPECT_FALSE(sphereBeyondNearPlane(camera(), {0.0f, 0.0f, -1.05f, 1.0f})) << "the near plane cuts it";
+  EXPECT_FALSE(sphereBeyondNearPlane(camera(), {0.0f, 0.0f, -0.5f, 1.0f})) << "the eye is inside";
+  EXPECT_FALSE(sphereBeyondNearPlane(camera(), {0.0f, 0.0f, 10.0f, 1.0f})) << "behind";
+  EXPECT_TRUE(sphereBeyondNearPlane(camera(), {30.0f, 0.0f, -10.0f, 1.0f})) << "outside the view, still beyond";
+  const glm::mat4 ortho = glm::orthoRH_ZO(-5.0f, 5.0f, -5.0f, 5.0f, 1.0f, 50.0f);
+  EXPECT_TRUE(sphereBeyondNearPlane(ortho, {0.0f, 0.0f, -3.0f, 1.5f}));
+  EXPECT_FALSE(sphereBeyondNearPlane(ortho, {0.0f, 0.0f, -2.0f, 1.5f})) << "orthographic near plane at 1 cuts it";
+}
+
 }  // namespace
 }  // namespace sg::render
