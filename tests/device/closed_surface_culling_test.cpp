@@ -114,10 +114,7 @@ TEST_P(ClosedSurfaceCulling, BackFacesAreCulledFromOutside) {
 
 INSTANTIATE_TEST_SUITE_P(Paths, ClosedSurfaceCulling,
                          ::testing::Values(scene::ShadingMode::Forward, scene::ShadingMode::Decoupled),
-                         [](const auto& param) {
-                           return param.param == scene::ShadingMode::Forward ? std::string("Forward")
-                                                                             : std::string("Decoupled");
-                         });
+                         pathName);
 
 }  // namespace
 }  // namespace sg::test

@@ -27,6 +27,11 @@ inline scene::Camera panCamera(int frame, float step = 0.15f) {
   return camera;
 }
 
+// Test-name suffix of a test parameterized on both paths (Forward / Decoupled).
+inline std::string pathName(const ::testing::TestParamInfo<scene::ShadingMode>& info) {
+  return info.param == scene::ShadingMode::Forward ? "Forward" : "Decoupled";
+}
+
 // The index of the object called `name` (a test failure and 0 if there is none).
 inline uint32_t instanceNamed(const scene::Scene& scene, const std::string& name) {
   for (uint32_t i = 0; i < scene.instances.size(); ++i)

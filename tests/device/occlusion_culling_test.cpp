@@ -106,10 +106,7 @@ TEST_P(OcclusionCulling, AMovedObjectIsTestedWhereItIsNow) {
 
 INSTANTIATE_TEST_SUITE_P(Paths, OcclusionCulling,
                          ::testing::Values(scene::ShadingMode::Forward, scene::ShadingMode::Decoupled),
-                         [](const auto& param) {
-                           return param.param == scene::ShadingMode::Forward ? std::string("Forward")
-                                                                             : std::string("Decoupled");
-                         });
+                         pathName);
 
 }  // namespace
 }  // namespace sg::test
