@@ -12,8 +12,11 @@
 #include <builtin_plugins.hpp>
 #include <builtin_shaders.hpp>
 #include <decoupled/decoupled_package.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <shadelgraph/gpu/device.hpp>
 #include <shadelgraph/render/renderer.hpp>
+#include <shadelgraph/scene/default_scene.hpp>
+#include <shadelgraph/scene/procedural_meshes.hpp>
 
 #include "device_fixture.hpp"
 
@@ -30,6 +33,21 @@ inline scene::Camera panCamera(int frame, float step = 0.15f) {
 // Test-name suffix of a test parameterized on both paths (Forward / Decoupled).
 inline std::string pathName(const ::testing::TestParamInfo<scene::ShadingMode>& info) {
   return info.param == scene::ShadingMode::Forward ? "Forward" : "Decoupled";
+}
+
+// The default courtyard (64² chart) plus `count` spheres (radius 0.6) in a row
+// along x from `first`, 2 apart, named "<name> <i>", shaded in `mode`.
+inline scene::Scene courtyardWithSphereRow(const std::string& name, int count, glm::vec3 first, scene::ShadingMode mode) {
+  scene::Scene s = scene::makeDefaultScene(64);
+  scene::Primitive sphere = scene::makeSphere(0.6f, 24, 12);
+  sphere.material = 0;
+  scene::Mesh mesh{.name = name, .bounds = sphere.bounds};
+  mesh.primitives.push_back(std::move(sphere));
+  s.meshes.push_back(std::move(mesh));
+  for (int i = 0; i < count; ++i)
+    s.instances.push_back({int(s.meshes.size() - 1), glm::translate(glm::mat4(1.0f), first + glm::vec3(2.0f * float(i), 0, 0)),
+                           name + " " + std::to_string(i), mode});
+  return s;
 }
 
 // The index of the object called `name` (a test failure and 0 if there is none).

@@ -21,16 +21,7 @@ namespace {
 
 // The default courtyard with a row of spheres behind the default camera's back.
 scene::Scene courtyardWithSpheresBehind() {
-  scene::Scene s = scene::makeDefaultScene(64);
-  scene::Primitive sphere = scene::makeSphere(0.6f, 24, 12);
-  sphere.material = 0;
-  scene::Mesh mesh{.name = "sphere behind", .bounds = sphere.bounds};
-  mesh.primitives.push_back(std::move(sphere));
-  s.meshes.push_back(std::move(mesh));
-  for (int i = 0; i < 4; ++i)
-    s.instances.push_back({int(s.meshes.size() - 1), glm::translate(glm::mat4(1.0f), {-3.0f + 2.0f * float(i), 1.0f, 10.0f}),
-                           "sphere behind " + std::to_string(i), scene::ShadingMode::Decoupled});
-  return s;
+  return courtyardWithSphereRow("sphere behind", 4, {-3.0f, 1.0f, 10.0f}, scene::ShadingMode::Decoupled);
 }
 
 scene::Camera looking(glm::vec3 target) {

@@ -23,17 +23,7 @@ constexpr int kHiddenSpheres = 6;
 
 // The default courtyard with a row of spheres behind its back wall (z = -8, 4 high).
 scene::Scene courtyardWithHiddenSpheres() {
-  scene::Scene s = scene::makeDefaultScene(64);
-  scene::Primitive sphere = scene::makeSphere(0.6f, 24, 12);
-  sphere.material = 0;
-  scene::Mesh mesh{.name = "hidden sphere", .bounds = sphere.bounds};
-  mesh.primitives.push_back(std::move(sphere));
-  s.meshes.push_back(std::move(mesh));
-  for (int i = 0; i < kHiddenSpheres; ++i)
-    s.instances.push_back({int(s.meshes.size() - 1),
-                           glm::translate(glm::mat4(1.0f), {-5.0f + 2.0f * float(i), 1.0f, -10.5f}),
-                           "hidden sphere " + std::to_string(i), scene::ShadingMode::Auto});
-  return s;
+  return courtyardWithSphereRow("hidden sphere", kHiddenSpheres, {-5.0f, 1.0f, -10.5f}, scene::ShadingMode::Auto);
 }
 
 scene::Camera camera(glm::vec3 eye, glm::vec3 target) {
