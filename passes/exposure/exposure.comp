@@ -1,44 +1,42 @@
 #version 460
 // Exposure as an exposure value at ISO 100 (EV100), manual or automatic.
-// Automatic: the log-average luminance of the HDR image, reduced by one
-// workgroup (the image is strided over its 256 invocations), metered so the
-// average lands on middle grey 0.18, then approached from last frame's EV100
-// by `adaptation` of the gap (a first-order filter: it cannot overshoot).
+// Automatic: the log-average luminance of the HDR image (exposure-meter's
+// per-band sums, added here in a fixed order), metered so the average lands
+// on middle grey 0.18, then approached from last frame's EV100 by
+// `adaptation` of the gap (a first-order filter: it cannot overshoot).
+// SG_EXPOSURE_MANUAL: the manual variant, which reads no image.
 // exposure = 1 / (1.2 * 2^EV100), the saturation-based sensor model (ISO 12232, S = 100).
 #extension GL_EXT_scalar_block_layout : require
 #include "exposure_interface.h"
 
-layout(local_size_x = 256) in;
-layout(set = 0, binding = kBindExposureHdr) uniform sampler2D hdr;
+layout(local_size_x = kExposureMeterBands) in;
 layout(set = 0, binding = kBindExposure, scalar) buffer Exposure { SgExposure result; };
 layout(push_constant, scalar) uniform Params { SgExposureParams params; };
+#ifndef SG_EXPOSURE_MANUAL
+layout(set = 0, binding = kBindExposureHdr) uniform sampler2D hdr;
+layout(set = 0, binding = kBindExposureMeter, std430) readonly buffer Meter { float bandLogSums[]; };
 
-shared float partial[256];
+shared float partial[kExposureMeterBands];
+#endif
 
 float exposureAt(float ev100) { return 1.0 / (1.2 * exp2(ev100)); }
 
 void main() {
-  if (params.mode == kExposureManual) {  // uniform: the whole group returns
-    if (gl_LocalInvocationIndex == 0u) {
-      result.logAverage = 0.0;
-      result.pixels = 0.0;
-      result.targetEv100 = params.ev100;
-      result.ev100 = params.ev100;
-      result.exposure = exposureAt(params.ev100);
-      result.frames = min(result.frames, 0xfffffffeu) + 1u;
-    }
-    return;
+#ifdef SG_EXPOSURE_MANUAL
+  if (gl_LocalInvocationIndex == 0u) {
+    result.logAverage = 0.0;
+    result.pixels = 0.0;
+    result.targetEv100 = params.ev100;
+    result.ev100 = params.ev100;
+    result.exposure = exposureAt(params.ev100);
+    result.frames = min(result.frames, 0xfffffffeu) + 1u;
   }
+#else
   ivec2 size = textureSize(hdr, 0);
   uint count = uint(size.x * size.y);
-  float sum = 0.0;
-  for (uint i = gl_LocalInvocationIndex; i < count; i += 256u) {
-    vec3 c = texelFetch(hdr, ivec2(i % uint(size.x), i / uint(size.x)), 0).rgb;
-    sum += log(max(dot(c, vec3(0.2126, 0.7152, 0.0722)), 1e-4));
-  }
-  partial[gl_LocalInvocationIndex] = sum;
+  partial[gl_LocalInvocationIndex] = bandLogSums[gl_LocalInvocationIndex];
   barrier();
-  for (uint s = 128u; s > 0u; s >>= 1) {
+  for (uint s = kExposureMeterBands / 2u; s > 0u; s >>= 1) {
     if (gl_LocalInvocationIndex < s) partial[gl_LocalInvocationIndex] += partial[gl_LocalInvocationIndex + s];
     barrier();
   }
@@ -57,4 +55,5 @@ void main() {
     result.exposure = exposureAt(ev);
     result.frames = min(result.frames, 0xfffffffeu) + 1u;
   }
+#endif
 }

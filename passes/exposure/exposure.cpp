@@ -17,12 +17,27 @@ void check(bool ok, const std::string& what) {
   if (!ok) throw std::runtime_error("pass 'exposure': parameter " + what);
 }
 
+gpu::ImageBinding hdrBinding(const PassContext& ctx, graph::ResourceHandle hdr) {
+  return {ctx.image(hdr).view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, ctx.device().nearestSampler()};
+}
+
 }  // namespace
 
-gpu::ComputePipelineDesc exposurePipeline() {
+gpu::ComputePipelineDesc exposureMeterPipeline() {
+  return {.shader = {.path = "passes/exposure/exposure_meter.comp"},
+          .layout = {.bindings = {{shader::kBindExposureHdr, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+                                  {shader::kBindExposureMeter, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}}};
+}
+
+gpu::ComputePipelineDesc exposurePipeline(bool manual) {
+  if (manual)
+    return {.shader = {.path = "passes/exposure/exposure.comp", .defines = {{"SG_EXPOSURE_MANUAL", "1"}}},
+            .layout = {.bindings = {{shader::kBindExposure, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}},
+                       .pushConstantBytes = sizeof(shader::SgExposureParams)}};
   return {.shader = {.path = "passes/exposure/exposure.comp"},
           .layout = {.bindings = {{shader::kBindExposureHdr, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
-                                  {shader::kBindExposure, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}},
+                                  {shader::kBindExposure, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                  {shader::kBindExposureMeter, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}},
                      .pushConstantBytes = sizeof(shader::SgExposureParams)}};
 }
 
@@ -61,15 +76,37 @@ graph::ResourceHandle addExposure(render::FrameContext& frame, graph::ResourceHa
   auto exposure = frame.graph().importPersistentBuffer("exposure history", {.size = sizeof(shader::SgExposure)},
                                                        resting);
   in.executor.bindBuffer(exposure, history.buffer);
-  auto& pass = frame.graph().addPass("exposure", graph::QueueClass::AsyncCompute);
+  auto& graph = frame.graph();
+  if (params.mode == shader::kExposureManual) {
+    auto& pass = graph.addPass("exposure", graph::QueueClass::AsyncCompute);
+    exposure = pass.write(exposure, graph::Access::StorageReadWrite);
+    pass.execute([exposure, params](PassContext& ctx) {
+      const auto& pipeline = ctx.device().pipeline("exposure/manual", [] { return exposurePipeline(true); });
+      ctx.bind(pipeline, {{shader::kBindExposure, gpu::BufferBinding{ctx.buffer(exposure).handle()}}});
+      vkCmdPushConstants(ctx.cmd(), pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof params, &params);
+      vkCmdDispatch(ctx.cmd(), 1, 1, 1);
+    });
+    return exposure;
+  }
+  auto meter = graph.createBuffer("exposure meter", {.size = sizeof(float) * shader::kExposureMeterBands});
+  auto& metering = graph.addPass("exposure-meter", graph::QueueClass::AsyncCompute);
+  metering.read(hdr, graph::Access::Sampled);
+  meter = metering.write(meter, graph::Access::StorageWrite);
+  metering.execute([hdr, meter](PassContext& ctx) {
+    const auto& pipeline = ctx.device().pipeline("exposure-meter", exposureMeterPipeline);
+    ctx.bind(pipeline, {{shader::kBindExposureHdr, hdrBinding(ctx, hdr)},
+                        {shader::kBindExposureMeter, gpu::BufferBinding{ctx.buffer(meter).handle()}}});
+    vkCmdDispatch(ctx.cmd(), shader::kExposureMeterBands, 1, 1);
+  });
+  auto& pass = graph.addPass("exposure", graph::QueueClass::AsyncCompute);
   pass.read(hdr, graph::Access::Sampled);
+  pass.read(meter, graph::Access::StorageRead);
   exposure = pass.write(exposure, graph::Access::StorageReadWrite);
-  pass.execute([hdr, exposure, params](PassContext& ctx) {
-    const auto& pipeline = ctx.device().pipeline("exposure", exposurePipeline);
-    ctx.bind(pipeline, {{shader::kBindExposureHdr, gpu::ImageBinding{ctx.image(hdr).view(),
-                                                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                                                     ctx.device().nearestSampler()}},
-                        {shader::kBindExposure, gpu::BufferBinding{ctx.buffer(exposure).handle()}}});
+  pass.execute([hdr, meter, exposure, params](PassContext& ctx) {
+    const auto& pipeline = ctx.device().pipeline("exposure", [] { return exposurePipeline(false); });
+    ctx.bind(pipeline, {{shader::kBindExposureHdr, hdrBinding(ctx, hdr)},
+                        {shader::kBindExposure, gpu::BufferBinding{ctx.buffer(exposure).handle()}},
+                        {shader::kBindExposureMeter, gpu::BufferBinding{ctx.buffer(meter).handle()}}});
     vkCmdPushConstants(ctx.cmd(), pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof params, &params);
     vkCmdDispatch(ctx.cmd(), 1, 1, 1);
   });

@@ -9,6 +9,11 @@ SG_SHARED_BEGIN
 
 SG_CONST uint kBindExposureHdr = 0u;  // the HDR image exposure measures and tonemap maps (sampled)
 SG_CONST uint kBindExposure = 1u;     // SgExposure
+SG_CONST uint kBindExposureMeter = 2u;  // auto: exposure-meter's log-luminance sum per row band (float[kExposureMeterBands])
+
+// exposure-meter's workgroups: one per band of rows, so the image's reduction
+// spreads over every CPU/GPU core rather than one workgroup.
+SG_CONST uint kExposureMeterBands = 64u;
 
 SG_CONST uint kExposureAuto = 0u;
 SG_CONST uint kExposureManual = 1u;

@@ -235,7 +235,9 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   std::string errors;
   errors += mismatches("z-prepass", passes::zPrepassPipeline());
   errors += mismatches("z-prepass alpha-test", passes::zPrepassAlphaTestPipeline(VK_NULL_HANDLE));
-  errors += mismatches("exposure", passes::exposurePipeline());
+  errors += mismatches("exposure-meter", passes::exposureMeterPipeline());
+  errors += mismatches("exposure", passes::exposurePipeline(false));
+  errors += mismatches("exposure manual", passes::exposurePipeline(true));
   errors += mismatches("shadows", passes::shadowMapPipeline());
   errors += mismatches("skinning", passes::skinningPipeline());
   errors += mismatches("environment-prefilter", passes::environmentPrefilterPipeline());

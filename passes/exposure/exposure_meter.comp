@@ -1,0 +1,32 @@
+#version 460
+// The first half of automatic exposure: workgroup b sums the natural log of
+// the luminance of band b of the image's rows (kExposureMeterBands bands).
+// exposure.comp adds the bands in a fixed order, so the result does not
+// depend on which workgroup finishes first.
+#include "exposure_interface.h"
+
+layout(local_size_x = 256) in;
+layout(set = 0, binding = kBindExposureHdr) uniform sampler2D hdr;
+layout(set = 0, binding = kBindExposureMeter, std430) writeonly buffer Meter { float bandLogSums[]; };
+
+shared float partial[256];
+
+void main() {
+  ivec2 size = textureSize(hdr, 0);
+  uint band = gl_WorkGroupID.x;
+  uint firstRow = uint(size.y) * band / kExposureMeterBands;
+  uint rows = uint(size.y) * (band + 1u) / kExposureMeterBands - firstRow;
+  uint count = rows * uint(size.x);
+  float sum = 0.0;
+  for (uint i = gl_LocalInvocationIndex; i < count; i += 256u) {
+    vec3 c = texelFetch(hdr, ivec2(i % uint(size.x), firstRow + i / uint(size.x)), 0).rgb;
+    sum += log(max(dot(c, vec3(0.2126, 0.7152, 0.0722)), 1e-4));
+  }
+  partial[gl_LocalInvocationIndex] = sum;
+  barrier();
+  for (uint s = 128u; s > 0u; s >>= 1) {
+    if (gl_LocalInvocationIndex < s) partial[gl_LocalInvocationIndex] += partial[gl_LocalInvocationIndex + s];
+    barrier();
+  }
+  if (gl_LocalInvocationIndex == 0u) bandLogSums[band] = partial[0];
+}
