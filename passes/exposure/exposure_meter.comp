@@ -15,12 +15,14 @@ void main() {
   ivec2 size = textureSize(hdr, 0);
   uint band = gl_WorkGroupID.x;
   uint firstRow = uint(size.y) * band / kExposureMeterBands;
-  uint rows = uint(size.y) * (band + 1u) / kExposureMeterBands - firstRow;
-  uint count = rows * uint(size.x);
+  uint endRow = uint(size.y) * (band + 1u) / kExposureMeterBands;
   float sum = 0.0;
-  for (uint i = gl_LocalInvocationIndex; i < count; i += 256u) {
-    vec3 c = texelFetch(hdr, ivec2(i % uint(size.x), firstRow + i / uint(size.x)), 0).rgb;
-    sum += log(max(dot(c, vec3(0.2126, 0.7152, 0.0722)), 1e-4));
+  // Row by row, no division per pixel (integer division is slow on SIMD CPUs).
+  for (uint y = firstRow; y < endRow; ++y) {
+    for (uint x = gl_LocalInvocationIndex; x < uint(size.x); x += 256u) {
+      vec3 c = texelFetch(hdr, ivec2(x, y), 0).rgb;
+      sum += log(max(dot(c, vec3(0.2126, 0.7152, 0.0722)), 1e-4));
+    }
   }
   partial[gl_LocalInvocationIndex] = sum;
   barrier();
