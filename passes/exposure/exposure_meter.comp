@@ -3,13 +3,14 @@
 // the luminance of band b of the image's rows (kExposureMeterBands bands).
 // exposure.comp adds the bands in a fixed order, so the result does not
 // depend on which workgroup finishes first.
+#extension GL_KHR_shader_subgroup_arithmetic : require
 #include "exposure_interface.h"
 
-layout(local_size_x = 256) in;
+layout(local_size_x = 64) in;
 layout(set = 0, binding = kBindExposureHdr) uniform sampler2D hdr;
 layout(set = 0, binding = kBindExposureMeter, std430) writeonly buffer Meter { float bandLogSums[]; };
 
-shared float partial[256];
+shared float partial[64];  // one per subgroup (at least 1 lane each)
 
 void main() {
   ivec2 size = textureSize(hdr, 0);
@@ -19,16 +20,20 @@ void main() {
   float sum = 0.0;
   // Row by row, no division per pixel (integer division is slow on SIMD CPUs).
   for (uint y = firstRow; y < endRow; ++y) {
-    for (uint x = gl_LocalInvocationIndex; x < uint(size.x); x += 256u) {
+    for (uint x = gl_LocalInvocationIndex; x < uint(size.x); x += 64u) {
       vec3 c = texelFetch(hdr, ivec2(x, y), 0).rgb;
       sum += log(max(dot(c, vec3(0.2126, 0.7152, 0.0722)), 1e-4));
     }
   }
-  partial[gl_LocalInvocationIndex] = sum;
+  // A subgroup sum, then one barrier: llvmpipe runs every barrier as a switch
+  // of each subgroup's coroutine, so a shared-memory tree costs more than the
+  // pixels of a small band.
+  sum = subgroupAdd(sum);
+  if (subgroupElect()) partial[gl_SubgroupID] = sum;
   barrier();
-  for (uint s = 128u; s > 0u; s >>= 1) {
-    if (gl_LocalInvocationIndex < s) partial[gl_LocalInvocationIndex] += partial[gl_LocalInvocationIndex + s];
-    barrier();
+  if (gl_LocalInvocationIndex == 0u) {
+    float total = 0.0;
+    for (uint i = 0u; i < gl_NumSubgroups; ++i) total += partial[i];
+    bandLogSums[band] = total;
   }
-  if (gl_LocalInvocationIndex == 0u) bandLogSums[band] = partial[0];
 }
