@@ -76,6 +76,16 @@ struct QueueSync {
   bool transitioned = false;  // the layout changed here since the last write
 };
 
+// What each queue knows right after a write on queue w: nothing on w, and all
+// of it on the others (they get it through semaphores). One copy per write.
+using QueueSyncs = std::array<QueueSync, kQueueClassCount>;
+constexpr std::array<QueueSyncs, kQueueClassCount> kAfterWriteOn = [] {
+  std::array<QueueSyncs, kQueueClassCount> table{};
+  for (uint32_t w = 0; w < kQueueClassCount; ++w)
+    for (uint32_t q = 0; q < kQueueClassCount; ++q) table[w][q].allVisible = q != w;
+  return table;
+}();
+
 // Walks one resource's uses and emits its barriers.
 class ResourceBarrierPlanner {
  public:
@@ -178,10 +188,7 @@ class ResourceBarrierPlanner {
     writeStages_ = u.stages;
     writeAccess_ = writeBits(u.access);
     externalWait_ = PipelineStage::None;
-    for (uint32_t q = 0; q < kQueueClassCount; ++q) {
-      queues_[q] = QueueSync{};
-      queues_[q].allVisible = q != queueIndex(u.queue);  // other queues get it through semaphores
-    }
+    queues_ = kAfterWriteOn[queueIndex(u.queue)];
   }
 
   // A read of a version only one queue reads.
@@ -303,7 +310,7 @@ class ResourceBarrierPlanner {
   PipelineStage writeStages_ = PipelineStage::None;
   AccessFlag writeAccess_ = AccessFlag::None;
   PipelineStage externalWait_ = PipelineStage::None;  // read-only initial state's stages
-  std::array<QueueSync, kQueueClassCount> queues_{};
+  QueueSyncs queues_{};
 };
 
 }  // namespace
