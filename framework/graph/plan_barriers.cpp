@@ -37,9 +37,15 @@ UseTable collectUses(const RenderGraph& graph, std::span<const PassId> order, ui
   uses.resize(first[resourceCount]);
   std::vector<uint32_t>& cursor = scratch.cursor;
   cursor.assign(first.begin(), first.end() - 1);
+  // Every stage and write of each resource, on the way: what a transient taking over its memory waits for.
+  std::vector<BarrierPlan::Scratch::Footprint>& footprints = scratch.footprints;
+  footprints.assign(resourceCount, {});
   for (const PassId p : order) {
     const QueueClass queue = graph.pass(p).queue;
     for (const ResourceAccess& a : graph.accessesOf(p)) {
+      BarrierPlan::Scratch::Footprint& footprint = footprints[a.resource.index];
+      footprint.stages |= a.stages;
+      footprint.writes |= writeBits(a.accessFlags);
       uint32_t& next = cursor[a.resource.index];
       if (next > first[a.resource.index] && uses[next - 1].pass == p) {
         Use& use = uses[next - 1];
@@ -329,16 +335,8 @@ void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::
   BarrierPlan::Scratch& scratch = plan.scratch;
   const UseTable uses = collectUses(graph, order, resourceCount, scratch);
 
-  // Every stage and write of each resource: what a transient taking over its memory waits for.
   using Footprint = BarrierPlan::Scratch::Footprint;
-  std::vector<Footprint>& footprints = scratch.footprints;
-  footprints.assign(resourceCount, Footprint{});
-  for (uint32_t r = 0; r < resourceCount; ++r) {
-    for (const Use& u : uses.of(r)) {
-      footprints[r].stages |= u.stages;
-      footprints[r].writes |= writeBits(u.access);
-    }
-  }
+  const std::vector<Footprint>& footprints = scratch.footprints;
 
   plan.finals.clear();
   plan.handoffs.clear();
