@@ -1,5 +1,7 @@
 #include <shadelgraph/graph/dependencies.hpp>
 
+#include <algorithm>
+
 namespace sg::graph {
 namespace {
 
@@ -50,7 +52,7 @@ void buildDependencies(const RenderGraph& graph, const VersionTable& versions, c
   for (uint32_t p = 0; p < passCount; ++p) deps.firstEdge[p + 1] += deps.firstEdge[p];
   deps.edges.resize(found.size());
   for (const Dependency& e : found) deps.edges[deps.firstEdge[e.from.index]++] = e;
-  for (uint32_t p = passCount; p > 0; --p) deps.firstEdge[p] = deps.firstEdge[p - 1];
+  std::copy_backward(deps.firstEdge.begin(), deps.firstEdge.end() - 1, deps.firstEdge.end());  // one memmove
   deps.firstEdge[0] = 0;
 }
 

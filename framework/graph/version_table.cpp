@@ -53,7 +53,7 @@ void indexVersions(const RenderGraph& graph, VersionTable& table) {
   // Readers (counting sort: firstReader[s] serves as the cursor, then is restored).
   table.readers.resize(reads.size());
   for (const VersionTable::Read& r : reads) table.readers[table.firstReader[r.slot]++] = r.pass;
-  for (uint32_t s = slots; s > 0; --s) table.firstReader[s] = table.firstReader[s - 1];
+  std::copy_backward(table.firstReader.begin(), table.firstReader.end() - 1, table.firstReader.end());  // one memmove
   table.firstReader[0] = 0;
 }
 
