@@ -1,6 +1,7 @@
 #include <shadelgraph/graph/cross_queue_order.hpp>
 
 #include <algorithm>
+#include <bit>
 
 namespace sg::graph {
 
@@ -51,9 +52,12 @@ uint32_t CrossQueueOrder::availableFrom(uint32_t last, QueueMask used, QueueClas
                                         PipelineStage& waitStages) const {
   uint32_t position = last + 1;
   const uint32_t waiting = queueIndex(queue);
+  // Only the other queues in `used` (each bit of the mask is a queue index).
+  auto others = static_cast<uint32_t>(used & ~toMask(queue)) & ((1u << kQueueClassCount) - 1);
+  if (others == 0) return position;
   const Batch& lastBatch = batches[batchAt[last]];
-  for (uint32_t producer = 0; producer < kQueueClassCount; ++producer) {
-    if (producer == waiting || !any(used & toMask(static_cast<QueueClass>(producer)))) continue;
+  for (; others != 0; others &= others - 1) {
+    const auto producer = static_cast<uint32_t>(std::countr_zero(others));
     // The value of the producer's last batch at or before `last`.
     const uint32_t needed = lastBatch.submitted[producer];
     if (needed == 0) continue;  // not used there before `last`

@@ -15,7 +15,8 @@ void cullPasses(const RenderGraph& graph, const VersionTable& versions, bool ext
   culled.assign(passCount, true);
   std::vector<PassId> needed;
   needed.reserve(passCount);
-  const auto keep = [&](PassId p) {
+  // Inline: it runs once per access of every kept pass.
+  const auto keep = [&](PassId p) __attribute__((always_inline)) {
     if (p.valid() && culled[p.index]) {
       culled[p.index] = false;
       needed.push_back(p);

@@ -1,5 +1,7 @@
 #include <shadelgraph/graph/dependencies.hpp>
 
+#include <algorithm>
+
 namespace sg::graph {
 namespace {
 
@@ -37,18 +39,20 @@ DependencyGraph buildDependencies(const RenderGraph& graph, const VersionTable& 
 
 void buildDependencies(const RenderGraph& graph, const VersionTable& versions, const std::vector<bool>& culled,
                        DependencyGraph& deps) {
-  // Two walks: count each source's edges, then place them (grouped by source,
-  // each source's in declaration order).
+  // One walk over the accesses (in `to` order), then a stable counting sort of
+  // the edges by source: grouped by source, each source's in declaration order.
   const uint32_t passCount = graph.passCount();
+  std::vector<Dependency>& found = deps.scratch;
+  found.clear();
   deps.firstEdge.assign(passCount + 1, 0);
-  forEachDependency(graph, versions, culled,
-                    [&](PassId from, PassId, const ResourceAccess&) { ++deps.firstEdge[from.index + 1]; });
-  for (uint32_t p = 0; p < passCount; ++p) deps.firstEdge[p + 1] += deps.firstEdge[p];
-  deps.edges.resize(deps.firstEdge[passCount]);
   forEachDependency(graph, versions, culled, [&](PassId from, PassId to, const ResourceAccess& a) {
-    deps.edges[deps.firstEdge[from.index]++] = {from, to, a.resource, a.stages};
+    found.push_back({from, to, a.resource, a.stages});
+    ++deps.firstEdge[from.index + 1];
   });
-  for (uint32_t p = passCount; p > 0; --p) deps.firstEdge[p] = deps.firstEdge[p - 1];
+  for (uint32_t p = 0; p < passCount; ++p) deps.firstEdge[p + 1] += deps.firstEdge[p];
+  deps.edges.resize(found.size());
+  for (const Dependency& e : found) deps.edges[deps.firstEdge[e.from.index]++] = e;
+  std::copy_backward(deps.firstEdge.begin(), deps.firstEdge.end() - 1, deps.firstEdge.end());  // one memmove
   deps.firstEdge[0] = 0;
 }
 

@@ -23,6 +23,7 @@ struct Dependency {
 struct DependencyGraph {
   std::vector<Dependency> edges;
   std::vector<uint32_t> firstEdge;  // per pass, plus one: successors of p are edges[firstEdge[p] .. firstEdge[p + 1])
+  std::vector<Dependency> scratch;  // buildDependencies()'s working memory, kept for the next call
 
   uint32_t passCount() const { return firstEdge.empty() ? 0 : static_cast<uint32_t>(firstEdge.size() - 1); }
   std::span<const Dependency> successors(PassId p) const {

@@ -59,15 +59,23 @@ void planFrameBoundary(const RenderGraph& graph, const std::vector<bool>& needed
   }
 
   // External resources: first and last batch per queue, in resource order.
+  // A frame has few (imports, persistent and history resources): a table of
+  // those alone (found by binary search), not one entry per resource.
   plan.externalUses.clear();
   std::vector<std::array<ExternalUse, kQueueClassCount>> uses;
+  std::vector<ResourceId> externals;  // uses[i] is externals[i]'s
+  for (uint32_t r = 0; r < declared.traits.size(); ++r)
+    if (isExternal(declared.traits[r].kind)) externals.push_back(ResourceId{r});
+  if (externals.empty()) return;
+  uses.resize(externals.size());
   for (const PassId p : plan.order) {
     const QueueClass queue = graph.pass(p).queue;
     const uint32_t batch = passBatch[p.index];
     for (const ResourceAccess& a : graph.accessesOf(p)) {
       if (!isExternal(declared.traits[a.resource.index].kind)) continue;
-      if (uses.empty()) uses.resize(graph.resourceCount());
-      ExternalUse& use = uses[a.resource.index][queueIndex(queue)];
+      const auto external = static_cast<std::size_t>(
+          std::lower_bound(externals.begin(), externals.end(), a.resource) - externals.begin());
+      ExternalUse& use = uses[external][queueIndex(queue)];
       if (use.firstBatch == kInvalidIndex) {
         use = {a.resource, queue, batch, batch, a.stages};
       } else if (use.firstBatch == batch) {
@@ -76,8 +84,8 @@ void planFrameBoundary(const RenderGraph& graph, const std::vector<bool>& needed
       use.lastBatch = batch;
     }
   }
-  for (uint32_t r = 0; r < uses.size(); ++r)
-    for (const ExternalUse& use : uses[r])
+  for (const auto& ofResource : uses)
+    for (const ExternalUse& use : ofResource)
       if (use.firstBatch != kInvalidIndex) plan.externalUses.push_back(use);
 }
 

@@ -35,7 +35,6 @@ class Pass {
 
  private:
   const PassDecl& decl() const { return declaration_->passes[id_.index]; }
-  void record(ResourceHandle resource, Access access, ShaderStage stages, bool write);
 
   GraphDeclaration* declaration_;
   PassId id_;

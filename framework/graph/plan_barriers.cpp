@@ -37,9 +37,15 @@ UseTable collectUses(const RenderGraph& graph, std::span<const PassId> order, ui
   uses.resize(first[resourceCount]);
   std::vector<uint32_t>& cursor = scratch.cursor;
   cursor.assign(first.begin(), first.end() - 1);
+  // Every stage and write of each resource, on the way: what a transient taking over its memory waits for.
+  std::vector<BarrierPlan::Scratch::Footprint>& footprints = scratch.footprints;
+  footprints.assign(resourceCount, {});
   for (const PassId p : order) {
     const QueueClass queue = graph.pass(p).queue;
     for (const ResourceAccess& a : graph.accessesOf(p)) {
+      BarrierPlan::Scratch::Footprint& footprint = footprints[a.resource.index];
+      footprint.stages |= a.stages;
+      footprint.writes |= writeBits(a.accessFlags);
       uint32_t& next = cursor[a.resource.index];
       if (next > first[a.resource.index] && uses[next - 1].pass == p) {
         Use& use = uses[next - 1];
@@ -75,6 +81,16 @@ struct QueueSync {
   bool writeChained = false;  // a barrier here already waited for the last write; later ones chain through waitStages
   bool transitioned = false;  // the layout changed here since the last write
 };
+
+// What each queue knows right after a write on queue w: nothing on w, and all
+// of it on the others (they get it through semaphores). One copy per write.
+using QueueSyncs = std::array<QueueSync, kQueueClassCount>;
+constexpr std::array<QueueSyncs, kQueueClassCount> kAfterWriteOn = [] {
+  std::array<QueueSyncs, kQueueClassCount> table{};
+  for (uint32_t w = 0; w < kQueueClassCount; ++w)
+    for (uint32_t q = 0; q < kQueueClassCount; ++q) table[w][q].allVisible = q != w;
+  return table;
+}();
 
 // Walks one resource's uses and emits its barriers.
 class ResourceBarrierPlanner {
@@ -178,10 +194,7 @@ class ResourceBarrierPlanner {
     writeStages_ = u.stages;
     writeAccess_ = writeBits(u.access);
     externalWait_ = PipelineStage::None;
-    for (uint32_t q = 0; q < kQueueClassCount; ++q) {
-      queues_[q] = QueueSync{};
-      queues_[q].allVisible = q != queueIndex(u.queue);  // other queues get it through semaphores
-    }
+    queues_ = kAfterWriteOn[queueIndex(u.queue)];
   }
 
   // A read of a version only one queue reads.
@@ -303,7 +316,7 @@ class ResourceBarrierPlanner {
   PipelineStage writeStages_ = PipelineStage::None;
   AccessFlag writeAccess_ = AccessFlag::None;
   PipelineStage externalWait_ = PipelineStage::None;  // read-only initial state's stages
-  std::array<QueueSync, kQueueClassCount> queues_{};
+  QueueSyncs queues_{};
 };
 
 }  // namespace
@@ -322,16 +335,8 @@ void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::
   BarrierPlan::Scratch& scratch = plan.scratch;
   const UseTable uses = collectUses(graph, order, resourceCount, scratch);
 
-  // Every stage and write of each resource: what a transient taking over its memory waits for.
   using Footprint = BarrierPlan::Scratch::Footprint;
-  std::vector<Footprint>& footprints = scratch.footprints;
-  footprints.assign(resourceCount, Footprint{});
-  for (uint32_t r = 0; r < resourceCount; ++r) {
-    for (const Use& u : uses.of(r)) {
-      footprints[r].stages |= u.stages;
-      footprints[r].writes |= writeBits(u.access);
-    }
-  }
+  const std::vector<Footprint>& footprints = scratch.footprints;
 
   plan.finals.clear();
   plan.handoffs.clear();

@@ -8,7 +8,10 @@ namespace {
 
 uint32_t scaleExtent(uint32_t extent, float scale) {
   if (extent == 0 || !(scale > 0.0f)) return 0;
-  const double scaled = std::floor(static_cast<double>(extent) * static_cast<double>(scale));
+  const double product = static_cast<double>(extent) * static_cast<double>(scale);
+  // Positive and below 2^32 (every real extent): truncation is the floor, without a libm call.
+  if (product < 4294967296.0) return std::max(static_cast<uint32_t>(product), 1u);
+  const double scaled = std::floor(product);
   return static_cast<uint32_t>(std::max(1.0, scaled));
 }
 

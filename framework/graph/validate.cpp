@@ -84,11 +84,12 @@ class Validator {
         error(nameOf(id), "", "uses an invalid resource handle");
         continue;
       }
-      // The common case (nothing to report but maybe the version) without the calls that build messages.
-      if (accessLooksFine(pass, graph_.declaration().traits[a.resource.index], a)) {
-        checkVersion(id, a);
-      } else {
+      // The common case (nothing to report) without the calls that build messages.
+      const ResourceTraits& traits = graph_.declaration().traits[a.resource.index];
+      if (!accessLooksFine(pass, traits, a)) {
         checkAccess(id, a);
+      } else if (!versionLooksFine(id, traits, a)) {
+        checkVersion(id, a);
       }
       // Compare with earlier accesses of the same resource in this pass (passes touch few resources).
       for (std::size_t j = 0; j < i; ++j) {
@@ -178,6 +179,15 @@ class Validator {
     }
   }
 
+  // True when checkVersion() finds nothing: the same conditions, as one test.
+  bool versionLooksFine(PassId passId, const ResourceTraits& r, const ResourceAccess& a) const {
+    if (a.version == 0) return a.write || !isTransient(r.kind);
+    const uint32_t slot = versions_.slot(a.resource, a.version);
+    if (slot == kInvalidIndex) return false;
+    const PassId producer = versions_.producer[slot];
+    return producer.valid() && (producer != passId || a.write);
+  }
+
   void checkVersion(PassId passId, const ResourceAccess& a) {
     const ResourceKind kind = graph_.declaration().traits[a.resource.index].kind;
     const uint32_t slot = versions_.slot(a.resource, a.version);
@@ -241,6 +251,8 @@ class Validator {
 
   void checkCycles() {
     const DependencyGraph& deps = deps_;
+    // The usual case: every pass declared after the passes it depends on, so no cycle.
+    if (std::all_of(deps.edges.begin(), deps.edges.end(), [](const Dependency& e) { return e.from < e.to; })) return;
     const std::vector<PassId> order = orderPasses(deps);
     if (order.size() == graph_.passCount()) return;
 

@@ -24,16 +24,20 @@ void indexVersions(const RenderGraph& graph, VersionTable& table) {
   for (uint32_t r = 0; r < resourceCount; ++r) table.firstSlot[r + 1] = table.firstSlot[r] + versionCounts[r];
   const uint32_t slots = table.firstSlot[resourceCount];
 
-  // Producers (a second writer of the same version is branching) and reader counts.
+  // Producers (a second writer of the same version is branching) and reader
+  // counts, in one walk that also lists the reads for placing them below.
   table.producer.assign(slots, PassId{});
   table.firstReader.assign(slots + 1, 0);
   table.branches.clear();
+  std::vector<VersionTable::Read>& reads = table.scratch;
+  reads.clear();
   for (uint32_t p = 0; p < passCount; ++p) {
     for (const ResourceAccess& a : graph.accessesOf(PassId{p})) {
       if (!indexed(a)) continue;
       const uint32_t slot = table.firstSlot[a.resource.index] + a.version;
       if (!a.write) {
         ++table.firstReader[slot + 1];
+        reads.push_back({slot, PassId{p}});
         continue;
       }
       PassId& producer = table.producer[slot + 1];
@@ -47,14 +51,9 @@ void indexVersions(const RenderGraph& graph, VersionTable& table) {
   for (uint32_t s = 0; s < slots; ++s) table.firstReader[s + 1] += table.firstReader[s];
 
   // Readers (counting sort: firstReader[s] serves as the cursor, then is restored).
-  table.readers.resize(table.firstReader[slots]);
-  for (uint32_t p = 0; p < passCount; ++p) {
-    for (const ResourceAccess& a : graph.accessesOf(PassId{p})) {
-      if (a.write || !indexed(a)) continue;
-      table.readers[table.firstReader[table.firstSlot[a.resource.index] + a.version]++] = PassId{p};
-    }
-  }
-  for (uint32_t s = slots; s > 0; --s) table.firstReader[s] = table.firstReader[s - 1];
+  table.readers.resize(reads.size());
+  for (const VersionTable::Read& r : reads) table.readers[table.firstReader[r.slot]++] = r.pass;
+  std::copy_backward(table.firstReader.begin(), table.firstReader.end() - 1, table.firstReader.end());  // one memmove
   table.firstReader[0] = 0;
 }
 

@@ -29,6 +29,12 @@ struct VersionTable {
   std::vector<uint32_t> firstReader;
   std::vector<PassId> readers;
   std::vector<BranchingWrite> branches;
+  // indexVersions()'s working memory (the reads in declaration order), kept for the next call.
+  struct Read {
+    uint32_t slot;
+    PassId pass;
+  };
+  std::vector<Read> scratch;
 
   uint32_t versionCount(ResourceId r) const { return firstSlot[r.index + 1] - firstSlot[r.index]; }
   // kInvalidIndex if the version was never referenced.
