@@ -44,27 +44,32 @@ scene::Scene courtyardWithDenseSphere(uint32_t segments) {
   return s;
 }
 
+// Planned (not rendered) at 640x360: 230k pixels.
+render::RenderSettings planned(render::ZPrepass zPrepass) { return {.width = 640, .height = 360, .zPrepass = zPrepass}; }
+
 TEST(ZPrepassRule, KeepsItOnLargeTrianglesAndDropsItWhereTrianglesOutnumberPixels) {
+  // The courtyard: 7k triangles, 0.03 a pixel.
   Session sparse(scene::makeDefaultScene(64), scene::ShadingMode::Forward);
-  const auto kept = sparse.renderer().plan(settings(render::ZPrepass::Auto));
+  const auto kept = sparse.renderer().plan(planned(render::ZPrepass::Auto));
   EXPECT_TRUE(hasPass(kept, "z-prepass"));
+  EXPECT_TRUE(hasPass(kept, "z-prepass (late)"));
   EXPECT_FALSE(hasPass(kept, "forward-opaque (late)"));
-  // 256 x 128 quads: 65k triangles over 19k pixels.
-  Session dense(courtyardWithDenseSphere(256), scene::ShadingMode::Forward);
-  const auto dropped = dense.renderer().plan(settings(render::ZPrepass::Auto));
+  // With a sphere of 512 x 256 quads in front: 269k triangles, 1.2 a pixel.
+  Session dense(courtyardWithDenseSphere(512), scene::ShadingMode::Forward);
+  const auto dropped = dense.renderer().plan(planned(render::ZPrepass::Auto));
   EXPECT_FALSE(hasPass(dropped, "z-prepass"));
   EXPECT_FALSE(hasPass(dropped, "z-prepass (late)"));
   EXPECT_TRUE(hasPass(dropped, "forward-opaque"));
   EXPECT_TRUE(hasPass(dropped, "forward-opaque (late)")) << "occlusion culling moves into forward-opaque";
   EXPECT_TRUE(hasPass(dropped, "occlusion-cull"));
   // Forced either way.
-  EXPECT_TRUE(hasPass(dense.renderer().plan(settings(render::ZPrepass::On)), "z-prepass"));
-  EXPECT_FALSE(hasPass(sparse.renderer().plan(settings(render::ZPrepass::Off)), "z-prepass"));
+  EXPECT_TRUE(hasPass(dense.renderer().plan(planned(render::ZPrepass::On)), "z-prepass"));
+  EXPECT_FALSE(hasPass(sparse.renderer().plan(planned(render::ZPrepass::Off)), "z-prepass"));
 }
 
 TEST(ZPrepassRule, FramesWithDecoupledObjectsKeepIt) {
-  Session decoupled(courtyardWithDenseSphere(256), scene::ShadingMode::Decoupled);
-  const auto plan = decoupled.renderer().plan(settings(render::ZPrepass::Off));
+  Session decoupled(courtyardWithDenseSphere(512), scene::ShadingMode::Decoupled);
+  const auto plan = decoupled.renderer().plan(planned(render::ZPrepass::Off));
   EXPECT_TRUE(hasPass(plan, "z-prepass")) << "shadel-mark and composite test its depth";
   EXPECT_TRUE(hasPass(plan, "shadel-mark"));
   EXPECT_FALSE(hasPass(plan, "forward-opaque (late)"));
