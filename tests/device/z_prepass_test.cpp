@@ -75,6 +75,26 @@ TEST(ZPrepassRule, FramesWithDecoupledObjectsKeepIt) {
   EXPECT_FALSE(hasPass(plan, "forward-opaque (late)"));
 }
 
+// A pass between z-prepass and forward-opaque that reads the depth (as the
+// ssao plugin's does) keeps the pre-pass, whatever the setting: it reads depth
+// the pre-pass drew (version above 0), not an unwritten image.
+TEST(ZPrepassRule, APassReadingTheDepthBeforeForwardOpaqueKeepsIt) {
+  plugin::Registry registry = plugins::builtinRegistry();
+  uint32_t depthVersionRead = 0;
+  registry.addPass({.name = "depth-reader",
+                    .description = "reads the depth before forward-opaque",
+                    .reads = {"scene.depth"},
+                    .declare = [&](render::FrameContext& ctx) { depthVersionRead = ctx.read("scene.depth").version; }});
+  registry.addFrame({.name = "depth-read", .base = "forward",
+                     .passes = {{.pass = "depth-reader", .after = {"z-prepass"}, .before = {"forward-opaque"}}}});
+  Session reading(courtyardWithDenseSphere(512), scene::ShadingMode::Forward, {}, registry, "depth-read");
+  const auto plan = reading.renderer().plan(planned(render::ZPrepass::Off));
+  EXPECT_TRUE(hasPass(plan, "z-prepass"));
+  EXPECT_GT(depthVersionRead, 0u);
+  Session plain(courtyardWithDenseSphere(512), scene::ShadingMode::Forward, {}, registry, "forward");
+  EXPECT_FALSE(hasPass(plain.renderer().plan(planned(render::ZPrepass::Off)), "z-prepass"));
+}
+
 // 2CylinderEngine: 82 parts, one hiding another; frames 1 (nothing visible
 // last frame: all drawn late) and 2 (last frame's visible drawn first).
 TEST(ForwardWithoutZPrepass, SameImageAsWithItOnARealModel) {
