@@ -60,7 +60,7 @@ bool occlusionCulled(FrameContext& ctx) {
   return ctx.inputs().culling && ctx.visibleDraws().size() > 1;  // one draw has nothing to hide behind
 }
 
-render::DrawCommands& importDrawCommands(FrameContext& ctx, render::DrawCulling& culling) {
+void importDrawCommands(FrameContext& ctx, render::DrawCulling& culling) {
   // Where the draw commands rest between frames: read as indirect arguments and written by the cull.
   const graph::ResourceState resting{graph::Layout::General, graph::PipelineStage::AllCommands,
                                      graph::AccessFlag::IndirectCommandRead | graph::AccessFlag::ShaderStorageRead |
@@ -69,7 +69,6 @@ render::DrawCommands& importDrawCommands(FrameContext& ctx, render::DrawCulling&
   commands.handle = ctx.graph().importPersistentBuffer("draw commands", {.size = culling.commandBytes()}, resting);
   commands.buffer = culling.commands().handle();
   ctx.inputs().executor.bindBuffer(commands.handle, culling.commands());
-  return commands;
 }
 
 // The second half: every draw tested against `depth` (hi-z, occlusion-cull);
