@@ -59,7 +59,9 @@ nlohmann::json measureSceneRatios(gpu::Device& device, const std::vector<LoadedS
                         .cameraOverride = loaded[0].cameraPaths.empty()
                                               ? sessions[s * configs].renderer->camera({.width = width, .height = height})
                                               : baselineCamera(loaded[0], *sessions[0].renderer, width, height),
-                        .occlusionCulling = !kConfigs[i % configs].asBefore};
+                        .occlusionCulling = !kConfigs[i % configs].asBefore,
+                        // Before issue 14 every frame had the depth pre-pass.
+                        .zPrepass = kConfigs[i % configs].asBefore ? render::ZPrepass::On : render::ZPrepass::Auto};
     timed.push_back(&sessions[i]);
   }
   std::fprintf(stderr, "[bench] scene ratios %ux%u: %zu sessions, %d rounds\n", width, height, sessions.size(),

@@ -94,6 +94,10 @@ void addFrameSetupOptions(CLI::App& command, RenderArgs& args) {
   command.add_option("--animation", args.animation, "which glTF animations play: all, none, an index or a name")
       ->capture_default_str();
   command.add_flag("--no-aliasing", args.noAliasing, "give every transient its own memory");
+  command.add_option("--z-prepass", args.zPrepass,
+                     "depth pre-pass of frames without decoupled objects: auto (where overdraw pays for it), on, off")
+      ->check(CLI::IsMember({"auto", "on", "off"}))
+      ->capture_default_str();
   addMaterialOptions(command, args.materials);
   addFrameOptions(command, args.frameGraph);
 }

@@ -54,6 +54,7 @@ struct RenderArgs {
   std::string soakReport;
   int soakEvery = 100;
   bool noAliasing = false;
+  std::string zPrepass = "auto";  // the forward frame's depth pre-pass: auto, on, off
   MaterialArgs materials;
   FrameArgs frameGraph;
 };

@@ -30,6 +30,9 @@ render::RenderSettings renderSettings(const RenderArgs& args) {
   if (args.camera) settings.camera = *args.camera;
   settings.aliasing = !args.noAliasing;
   settings.framesInFlight = uint32_t(args.framesInFlight);
+  settings.zPrepass = args.zPrepass == "on"    ? render::ZPrepass::On
+                      : args.zPrepass == "off" ? render::ZPrepass::Off
+                                               : render::ZPrepass::Auto;
   return settings;
 }
 

@@ -6,8 +6,18 @@
 namespace sg::render {
 
 FrameContext::FrameContext(graph::RenderGraph& graph, const FrameInputs& inputs, const SceneView& allDraws,
-                           std::map<std::string, std::shared_ptr<void>>& states)
-    : graph_(graph), inputs_(inputs), all_(allDraws), states_(states) {}
+                           std::map<std::string, std::shared_ptr<void>>& states, const plugin::ResolvedFrame* frame)
+    : graph_(graph), inputs_(inputs), all_(allDraws), states_(states), frame_(frame) {}
+
+std::span<const plugin::ResolvedPass> FrameContext::passesBetween(const std::string& until) const {
+  if (!frame_ || !pass_) return {};
+  const auto& passes = frame_->passes;
+  auto begin = std::find_if(passes.begin(), passes.end(), [&](const plugin::ResolvedPass& p) { return &p == pass_; });
+  if (begin == passes.end()) return {};
+  ++begin;
+  const auto end = std::find_if(begin, passes.end(), [&](const plugin::ResolvedPass& p) { return p.pass->name == until; });
+  return {begin, end};
+}
 
 SceneView FrameContext::view(std::span<const uint32_t> draws) const {
   return {all_.scene,     all_.frameUniforms, all_.lights, all_.noLightGrid, draws, all_.materials,

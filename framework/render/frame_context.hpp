@@ -23,6 +23,11 @@
 
 namespace sg::render {
 
+// Whether the forward frame draws a depth pre-pass before forward-opaque:
+// Auto decides per frame (passes/z-prepass/z_prepass_rule.hpp); frames with
+// decoupled objects always have it (shadel-mark and composite test its depth).
+enum class ZPrepass { Auto, On, Off };
+
 // The camera and output of one frame.
 struct FrameInputs {
   const scene::Scene& scene;
@@ -38,6 +43,7 @@ struct FrameInputs {
   uint32_t width = 0, height = 0;
   // Occlusion culling's per-renderer state; null when the frame is not to be occlusion-culled.
   DrawCulling* culling = nullptr;
+  ZPrepass zPrepass = ZPrepass::Auto;
   // This frame's joint matrices and morph weights; null when the scene has no skinned or morphed object.
   const DeformationFrame* deformation = nullptr;
   // This frame's shadow maps (the frame uniforms hold their matrices and slots); empty: no shadows.
@@ -55,8 +61,9 @@ struct FrameDraws {
 
 class FrameContext {
  public:
+  // `frame`: the passes being declared (passesBetween); null: none known.
   FrameContext(graph::RenderGraph& graph, const FrameInputs& inputs, const SceneView& allDraws,
-               std::map<std::string, std::shared_ptr<void>>& states);
+               std::map<std::string, std::shared_ptr<void>>& states, const plugin::ResolvedFrame* frame = nullptr);
 
   graph::RenderGraph& graph() { return graph_; }
   const FrameInputs& inputs() const { return inputs_; }
@@ -102,6 +109,10 @@ class FrameContext {
   }
 
   void setPass(const plugin::ResolvedPass* pass) { pass_ = pass; }
+  // The frame's passes after the running one and before the one named
+  // `until` (every later one when the frame has none of that name): e.g.
+  // what reads a resource before a later pass could write it.
+  std::span<const plugin::ResolvedPass> passesBetween(const std::string& until) const;
 
  private:
   void* stateOrThrow(const std::string& key) const;
@@ -115,6 +126,7 @@ class FrameContext {
   std::vector<uint32_t> visible_;
   std::map<std::string, graph::ResourceHandle> resources_;
   const plugin::ResolvedPass* pass_ = nullptr;
+  const plugin::ResolvedFrame* frame_ = nullptr;
 };
 
 }  // namespace sg::render

@@ -170,6 +170,7 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
        settings.width, settings.height, settings.occlusionCulling ? &culling_ : nullptr},
       {}, {}, {}, {}, std::move(shadows)});
   frame->inputs.shadowViews = frame->shadows;
+  frame->inputs.zPrepass = settings.zPrepass;
   // Closed surfaces wholly beyond the near plane: the camera is outside, and clipping cannot open them.
   const auto& draws = gpuScene_.draws();
   frame->backFacesHidden.resize(draws.size());
@@ -185,7 +186,7 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
     frame->deformation.emplace(deformation_.write(slot));
     frame->inputs.deformation = &*frame->deformation;
   }
-  FrameContext& context = frame->context.emplace(frame->graph, frame->inputs, frame->view, states_);
+  FrameContext& context = frame->context.emplace(frame->graph, frame->inputs, frame->view, states_, &frame_);
   for (uint32_t d = 0; d < drawSpheres_.size(); ++d)
     if (sphereInFrustum(uniforms.viewProjection, drawSpheres_[d])) context.draws().forward.push_back(d);
   context.write(plugin::kOutputResource, frame->output);

@@ -33,6 +33,8 @@ struct RenderSettings {
   std::optional<float> time;
   // Skip draws hidden behind others (tested against this frame's depth of the draws visible last frame).
   bool occlusionCulling = true;
+  // The depth pre-pass: per frame (Auto), or forced on or off to compare (frames with decoupled objects keep it).
+  ZPrepass zPrepass = ZPrepass::Auto;
   // Frames recorded while earlier ones run (a frame's tail, e.g. a shade
   // frame, left running): 1 or 2.
   uint32_t framesInFlight = 1;

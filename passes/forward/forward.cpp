@@ -31,4 +31,38 @@ ForwardTargets addForwardOpaque(graph::RenderGraph& graph, const render::SceneVi
   return targets;
 }
 
+ForwardTargets addForwardOpaqueWithDepth(graph::RenderGraph& graph, const render::SceneView& view,
+                                         ForwardTargets targets, glm::vec3 background) {
+  auto& pass = graph.addPass("forward-opaque", graph::QueueClass::Graphics);
+  targets.color = pass.write(targets.color, graph::Access::ColorAttachment);
+  targets.depth = pass.write(targets.depth, graph::Access::DepthAttachment);
+  readFrameInputs(pass, view, view.draws);
+  render::readSceneGeometry(pass, view);
+  pass.execute([view = render::readDrawCommands(pass, view), targets, background](PassContext& ctx) {
+    ctx.beginRendering({ColorTarget{targets.color, VkClearColorValue{{background.r, background.g, background.b, 1.0f}}}},
+                       DepthTarget{targets.depth, 1.0f}, true);
+    drawForward(ctx, view, drawsWithAlphaMode(view, scene::AlphaMode::Opaque), false);
+    ctx.endRendering();
+  });
+  return targets;
+}
+
+ForwardTargets addForwardOpaqueLate(graph::RenderGraph& graph, const render::SceneView& view, ForwardTargets targets,
+                                    graph::ResourceHandle late) {
+  auto& pass = graph.addPass("forward-opaque (late)", graph::QueueClass::Graphics);
+  pass.read(late, graph::Access::IndirectArgs);
+  targets.color = pass.write(targets.color, graph::Access::ColorAttachment);
+  targets.depth = pass.write(targets.depth, graph::Access::DepthAttachment);
+  readFrameInputs(pass, view, view.draws);
+  render::readSceneGeometry(pass, view);
+  pass.execute([view, targets, late](PassContext& ctx) {
+    render::SceneView lateView = view;
+    lateView.indirect = ctx.buffer(late).handle();
+    ctx.beginRendering({ColorTarget{targets.color, {}}}, DepthTarget{targets.depth, {}}, true);
+    drawForward(ctx, lateView, drawsWithAlphaMode(lateView, scene::AlphaMode::Opaque), false);
+    ctx.endRendering();
+  });
+  return targets;
+}
+
 }  // namespace sg::passes

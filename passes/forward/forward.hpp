@@ -27,5 +27,15 @@ std::optional<VkClearColorValue> clearIfUnwritten(graph::ResourceHandle color, g
 // depth; clears the colour.
 ForwardTargets addForwardOpaque(graph::RenderGraph& graph, const render::SceneView& view, ForwardTargets targets,
                                 glm::vec3 background);
+// Without a z-prepass: the same draws, writing the depth themselves (cleared
+// first, tested LESS_OR_EQUAL), so a pixel is shaded once per surface that is
+// nearest when it is drawn.
+ForwardTargets addForwardOpaqueWithDepth(graph::RenderGraph& graph, const render::SceneView& view,
+                                         ForwardTargets targets, glm::vec3 background);
+// Without a z-prepass, after occlusion-cull: adds to colour and depth the
+// opaque draws of `view` that `late` (indirect draw commands by draw index)
+// keeps, the draws found visible that the first half did not draw.
+ForwardTargets addForwardOpaqueLate(graph::RenderGraph& graph, const render::SceneView& view, ForwardTargets targets,
+                                    graph::ResourceHandle late);
 
 }  // namespace sg::passes

@@ -60,7 +60,8 @@ void registerDecoupledPackage(plugin::Registry& registry) {
                     }});
   registry.addPass({.name = "shadel-mark",
                     .description = "rasterizes decoupled objects against the depth and marks the chunks composite will read",
-                    .reads = {"scene.depth", "shadel.remap"},
+                    // view.decoupled: it draws only decoupled objects (a frame without them may skip the z-prepass).
+                    .reads = {"scene.depth", "shadel.remap", plugin::kDecoupledDrawsResource},
                     .writes = {"shadel.remap"},
                     .prepare = prepare,
                     .declare = [](FrameContext& ctx) {

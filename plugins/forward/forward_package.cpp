@@ -25,6 +25,7 @@
 #include "occlusion-cull/occlusion_cull.hpp"
 #include "tonemap/tonemap.hpp"
 #include "z-prepass/z_prepass.hpp"
+#include "z-prepass/z_prepass_rule.hpp"
 
 namespace sg::plugins {
 namespace {
@@ -50,29 +51,88 @@ std::vector<uint32_t> alphaTestedDraws(FrameContext& ctx) {
   return tested;
 }
 
-// The depth pre-pass, occlusion-culled: the draws visible last frame first,
-// then every draw tested against that depth, then the draws found visible
-// that were not drawn yet. The passes after it draw only the visible ones.
-graph::ResourceHandle culledZPrepass(FrameContext& ctx, render::DrawCulling& culling) {
+glm::vec3 background(FrameContext& ctx) { return passes::hdrBackground(ctx.inputs().scene.lights); }
+
+// Occlusion culling in two halves around the first pass that draws depth:
+// the frame's draw commands start as the persistent ones (last frame's
+// visibility), so that pass draws the draws visible last frame.
+bool occlusionCulled(FrameContext& ctx) {
+  return ctx.inputs().culling && ctx.visibleDraws().size() > 1;  // one draw has nothing to hide behind
+}
+
+void importDrawCommands(FrameContext& ctx, render::DrawCulling& culling) {
   // Where the draw commands rest between frames: read as indirect arguments and written by the cull.
   const graph::ResourceState resting{graph::Layout::General, graph::PipelineStage::AllCommands,
                                      graph::AccessFlag::IndirectCommandRead | graph::AccessFlag::ShaderStorageRead |
                                          graph::AccessFlag::ShaderStorageWrite};
-  const auto& in = ctx.inputs();
   render::DrawCommands& commands = ctx.drawCommands();
   commands.handle = ctx.graph().importPersistentBuffer("draw commands", {.size = culling.commandBytes()}, resting);
   commands.buffer = culling.commands().handle();
-  in.executor.bindBuffer(commands.handle, culling.commands());
-  const auto view = ctx.view(ctx.visibleDraws());
-  const auto tested = alphaTestedDraws(ctx);
-  auto depth = passes::addZPrepass(ctx.graph(), view, depthTarget(ctx), tested);
-  const auto cull = passes::addOcclusionCull(ctx.graph(), culling, in.viewProjection, in.width, in.height, depth,
-                                             commands.handle);
-  commands.handle = cull.commands;
-  return passes::addZPrepassLate(ctx.graph(), view, depth, cull.late, tested);
+  ctx.inputs().executor.bindBuffer(commands.handle, culling.commands());
 }
 
-glm::vec3 background(FrameContext& ctx) { return passes::hdrBackground(ctx.inputs().scene.lights); }
+// The second half: every draw tested against `depth` (hi-z, occlusion-cull);
+// the passes after it draw only the visible ones. Returns the late commands
+// (draws found visible that the first half did not draw).
+graph::ResourceHandle occlusionCull(FrameContext& ctx, graph::ResourceHandle depth) {
+  const auto& in = ctx.inputs();
+  render::DrawCommands& commands = ctx.drawCommands();
+  const auto cull = passes::addOcclusionCull(ctx.graph(), *in.culling, in.viewProjection, in.width, in.height, depth,
+                                             commands.handle);
+  commands.handle = cull.commands;
+  return cull.late;
+}
+
+// The depth pre-pass, occlusion-culled: the draws visible last frame first,
+// then every draw tested against that depth, then the draws found visible
+// that were not drawn yet.
+graph::ResourceHandle culledZPrepass(FrameContext& ctx) {
+  importDrawCommands(ctx, *ctx.inputs().culling);
+  const auto view = ctx.view(ctx.visibleDraws());
+  const auto tested = alphaTestedDraws(ctx);
+  const auto depth = passes::addZPrepass(ctx.graph(), view, depthTarget(ctx), tested);
+  return passes::addZPrepassLate(ctx.graph(), view, depth, occlusionCull(ctx, depth), tested);
+}
+
+uint64_t opaqueTriangles(FrameContext& ctx) {
+  uint64_t triangles = 0;
+  for (const uint32_t d : ctx.draws().forward) {
+    const auto& draw = ctx.gpuScene().draws()[d];
+    if (draw.alphaMode == scene::AlphaMode::Opaque) triangles += draw.indexCount / 3;
+  }
+  return triangles;
+}
+
+// Does this frame draw the depth pre-pass? Always with decoupled objects
+// visible (shadel-mark and composite test its depth), after an earlier pass
+// drew depth, or when a pass before forward-opaque reads the depth (e.g. the
+// ssao plugin) other than one drawing only decoupled objects (it reads
+// view.decoupled; there are none). Otherwise as the setting says, Auto by
+// passes::zPrepassPays; without it forward-opaque writes the depth.
+bool drawsZPrepass(FrameContext& ctx) {
+  if (!ctx.draws().decoupled.empty() || ctx.has("scene.depth")) return true;
+  const auto reads = [](const plugin::PassPlugin& p, const char* resource) {
+    return std::find(p.reads.begin(), p.reads.end(), resource) != p.reads.end();
+  };
+  for (const auto& later : ctx.passesBetween("forward-opaque"))
+    if (reads(*later.pass, "scene.depth") && !reads(*later.pass, plugin::kDecoupledDrawsResource)) return true;
+  switch (ctx.inputs().zPrepass) {
+    case render::ZPrepass::On: return true;
+    case render::ZPrepass::Off: return false;
+    case render::ZPrepass::Auto: break;
+  }
+  return passes::zPrepassPays(opaqueTriangles(ctx), uint64_t(ctx.inputs().width) * ctx.inputs().height);
+}
+
+// forward-opaque where no pre-pass drew the depth (its version is 0): it
+// draws and writes the depth itself, occlusion-culled in the same two halves.
+passes::ForwardTargets forwardOpaqueWithDepth(FrameContext& ctx, const render::SceneView& view,
+                                              passes::ForwardTargets t) {
+  if (!occlusionCulled(ctx)) return passes::addForwardOpaqueWithDepth(ctx.graph(), view, t, background(ctx));
+  importDrawCommands(ctx, *ctx.inputs().culling);
+  t = passes::addForwardOpaqueWithDepth(ctx.graph(), view, t, background(ctx));
+  return passes::addForwardOpaqueLate(ctx.graph(), view, t, occlusionCull(ctx, t.depth));
+}
 
 passes::ForwardTargets targets(FrameContext& ctx) { return {ctx.read("scene.hdr"), ctx.read("scene.depth")}; }
 
@@ -153,13 +213,17 @@ void registerForwardPackage(plugin::Registry& registry) {
                     .writes = {render::kSceneVerticesResource},
                     .declare = declareSkinning});
   registry.addPass({.name = "z-prepass",
-                    .description = "depth of every visible opaque object, forward or decoupled, and of decoupled alpha-mask objects (alpha-tested)",
+                    .description = "depth of every visible opaque object, forward or decoupled, and of decoupled alpha-mask objects (alpha-tested); "
+                                   "without decoupled objects only where overdraw pays for it (else forward-opaque writes the depth)",
                     .reads = {plugin::kForwardDrawsResource},
                     .writes = {"scene.depth"},
                     .declare = [](FrameContext& ctx) {
-                      // One draw has nothing to hide behind.
-                      if (ctx.inputs().culling && ctx.visibleDraws().size() > 1) {
-                        ctx.write("scene.depth", culledZPrepass(ctx, *ctx.inputs().culling));
+                      if (!drawsZPrepass(ctx)) {
+                        ctx.write("scene.depth", depthTarget(ctx));  // unwritten: forward-opaque draws it
+                        return;
+                      }
+                      if (occlusionCulled(ctx)) {
+                        ctx.write("scene.depth", culledZPrepass(ctx));
                         return;
                       }
                       ctx.write("scene.depth",
@@ -222,6 +286,10 @@ void registerForwardPackage(plugin::Registry& registry) {
                       // memory with none of their transients: composite clears it instead.
                       if (!passes::hasAlphaMode(view, scene::AlphaMode::Opaque) && !ctx.draws().decoupled.empty()) {
                         publish(ctx, t);  // unwritten: see passes::clearIfUnwritten
+                        return;
+                      }
+                      if (t.depth.version == 0) {  // the z-prepass left the depth to this pass
+                        publish(ctx, forwardOpaqueWithDepth(ctx, view, t));
                         return;
                       }
                       publish(ctx, passes::addForwardOpaque(ctx.graph(), view, t, background(ctx)));

@@ -2,7 +2,8 @@
 // starts with spheres hidden behind the courtyard's back wall, rises until
 // they show over it, jumps behind the wall and comes back, every frame with
 // culling is the same image as without, forward and decoupled, validation on.
-// The path must also cull something (else it would prove nothing).
+// The path must also cull something (else it would prove nothing). The same
+// with forward-opaque drawing the depth itself (no z-prepass).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -43,18 +44,21 @@ std::vector<scene::Camera> path() {
   return cameras;
 }
 
-class OcclusionCulling : public ::testing::TestWithParam<scene::ShadingMode> {};
-
-TEST_P(OcclusionCulling, SameImagesAsWithoutAlongACameraPath) {
+// Along the path, culled and unculled frames match and the hidden spheres are
+// culled where the wall hides them; `zPrepass` Off: forward-opaque draws the
+// depth and culls in its own two halves.
+void expectSameImagesAlongThePath(scene::ShadingMode mode, render::ZPrepass zPrepass) {
   const scene::Scene scene = courtyardWithHiddenSpheres();
-  Session culled(scene, GetParam()), unculled(scene, GetParam());
+  Session culled(scene, mode), unculled(scene, mode);
   const size_t firstHidden = scene.instances.size() - kHiddenSpheres;
   int framesWithCulledSpheres = 0, framesWithVisibleSpheres = 0;
   const auto cameras = path();
   for (size_t f = 0; f < cameras.size(); ++f) {
-    const auto a = culled.renderer().render({.width = 160, .height = 120, .cameraOverride = cameras[f]}).image;
+    const auto a =
+        culled.renderer().render({.width = 160, .height = 120, .cameraOverride = cameras[f], .zPrepass = zPrepass}).image;
     const auto b = unculled.renderer()
-                       .render({.width = 160, .height = 120, .cameraOverride = cameras[f], .occlusionCulling = false})
+                       .render({.width = 160, .height = 120, .cameraOverride = cameras[f], .occlusionCulling = false,
+                                .zPrepass = zPrepass})
                        .image;
     const auto diff = image::compareRgba8(a.rgba8, b.rgba8);
     EXPECT_EQ(diff.maxAbs, 0) << "frame " << f << ": culled and unculled images differ (mean |d| " << diff.meanAbs
@@ -71,9 +75,20 @@ TEST_P(OcclusionCulling, SameImagesAsWithoutAlongACameraPath) {
   EXPECT_GE(framesWithCulledSpheres, 2);
   // Higher up and behind the wall they are seen, and drawn.
   EXPECT_GE(framesWithVisibleSpheres, 2);
-  if (GetParam() == scene::ShadingMode::Decoupled) {
+  if (mode == scene::ShadingMode::Decoupled) {
     EXPECT_EQ(culled.stats().counters.compositeMisses, 0u);
   }
+}
+
+class OcclusionCulling : public ::testing::TestWithParam<scene::ShadingMode> {};
+
+TEST_P(OcclusionCulling, SameImagesAsWithoutAlongACameraPath) {
+  expectSameImagesAlongThePath(GetParam(), render::ZPrepass::On);
+}
+
+// Without the depth pre-pass (a forward frame where it does not pay).
+TEST(OcclusionCullingWithoutZPrepass, SameImagesAsWithoutAlongACameraPath) {
+  expectSameImagesAlongThePath(scene::ShadingMode::Forward, render::ZPrepass::Off);
 }
 
 // A hidden sphere moved out in front of the wall (Renderer::setObjectTransform)
