@@ -1,6 +1,7 @@
 #include <decoupled_frame.hpp>
 
 #include <algorithm>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,6 +48,8 @@ void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const Decoup
       case kBindChunkSlots: buffer(ctx.buffer(f.slots).handle()); break;
       // Without masks something must be bound; the shaders do not touch it (shadelMasks 0).
       case kBindShadelMasks: buffer(ctx.buffer(f.masks.valid() ? f.masks : f.work).handle()); break;
+      // Without blocks something must be bound; the shaders read it only with SgEntrySpan.blocks.
+      case kBindEntryBlocks: buffer(ctx.buffer(f.entryBlocks.valid() ? f.entryBlocks : f.work).handle()); break;
       case kBindCounters: buffer(ctx.buffer(f.counters).handle()); break;
       case kBindWork: buffer(ctx.buffer(f.work).handle()); break;
       case kBindArgs: buffer(ctx.buffer(f.args).handle()); break;
@@ -69,16 +72,30 @@ void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const Decoup
   ctx.descriptors().bind(ctx.cmd(), pipeline, writes);
 }
 
-void dispatchEntrySpans(PassContext& ctx, const gpu::Pipeline& pipeline, std::span<const SgEntrySpan> spans,
+void dispatchEntrySpans(PassContext& ctx, const gpu::Pipeline& pipeline, const DecoupledFrame& frame,
                         uint32_t entriesPerGroup) {
+  if (frame.entryBlocks.valid()) {
+    const SgEntrySpan blocks{0, 0, 1};
+    vkCmdPushConstants(ctx.cmd(), pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof blocks, &blocks);
+    vkCmdDispatchIndirect(ctx.cmd(), ctx.buffer(frame.entryBlocks).handle(),
+                          entriesPerGroup == 32 ? offsetof(SgEntryBlocksHeader, args32) : offsetof(SgEntryBlocksHeader, args64));
+    return;
+  }
   constexpr uint32_t kMaxGroupsPerRow = 65535;  // maxComputeWorkGroupCount[0]'s guaranteed minimum
-  for (const SgEntrySpan& span : spans) {
+  for (const SgEntrySpan& span : frame.liveSpans) {
     if (span.end <= span.begin) continue;
+    const SgEntrySpan push{span.begin, span.end, 0};
     const uint32_t groups = (span.end - span.begin + entriesPerGroup - 1) / entriesPerGroup;
     const uint32_t x = std::min(groups, kMaxGroupsPerRow);
-    vkCmdPushConstants(ctx.cmd(), pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof span, &span);
+    vkCmdPushConstants(ctx.cmd(), pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof push, &push);
     vkCmdDispatch(ctx.cmd(), x, (groups + x - 1) / x, 1);
   }
+}
+
+void readEntryBlocks(graph::Pass& pass, const DecoupledFrame& frame) {
+  if (!frame.entryBlocks.valid()) return;
+  pass.read(frame.entryBlocks, graph::Access::StorageRead);
+  pass.read(frame.entryBlocks, graph::Access::IndirectArgs);
 }
 
 void drawDecoupled(PassContext& ctx, const DecoupledFrame& frame, std::span<const uint32_t> bindings, VkBuffer indirect,

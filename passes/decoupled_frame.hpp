@@ -41,6 +41,11 @@ struct DecoupledFrame {
   // of those still holding stored chunks. Culled objects' entries are left
   // alone. Empty: those passes dispatch nothing.
   std::span<const SgEntrySpan> liveSpans;
+  // With the occlusion-culled skip (live-entry-blocks): the blocks of the
+  // live spans whose objects the cull did not hide this frame and last frame,
+  // and their indirect dispatch arguments; the per-entry passes dispatch
+  // those instead of the spans. Invalid: the spans.
+  graph::ResourceHandle entryBlocks;
   // The composite filter (0 point, 1 bilinear, 2 trilinear), which is also
   // what shadel-mark marks: both pipelines get it only as filterDefine(filter).
   // Settled in the prepare step (the renderer's setting or composite's
@@ -86,9 +91,12 @@ void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const Decoup
 
 // One dispatch of the bound per-entry `pipeline` per live span, each
 // (span length / entriesPerGroup) workgroups as a 2D grid, its span pushed
-// (SgEntrySpan, entry_span.glsl). Nothing for an empty span.
-void dispatchEntrySpans(PassContext& ctx, const gpu::Pipeline& pipeline, std::span<const SgEntrySpan> spans,
+// (SgEntrySpan, entry_span.glsl); nothing for an empty span. With the frame's
+// entry blocks, one indirect dispatch over them instead. entriesPerGroup: 64 or 32.
+void dispatchEntrySpans(PassContext& ctx, const gpu::Pipeline& pipeline, const DecoupledFrame& frame,
                         uint32_t entriesPerGroup = 64);
+// Declares what dispatchEntrySpans reads: the frame's entry blocks, if any.
+void readEntryBlocks(graph::Pass& pass, const DecoupledFrame& frame);
 
 // Draws the frame's decoupled objects as their decoupled object ids (culled
 // by `indirect` when set): the opaque ones with pipeline(false), then the

@@ -276,7 +276,9 @@ void runBench(const BenchArgs& args) {
     return;
   }
   if (args.sceneRatios) {
-    runSceneRatioBench(context, device, {.scenes = args.scenes, .sizes = args.sizes, .repetitions = args.repetitions},
+    runSceneRatioBench(context, device,
+                       {.scenes = args.scenes, .sizes = args.sizes, .repetitions = args.repetitions,
+                        .withoutOccludedSkip = args.withoutOccludedSkip},
                        out);
     setExitCode(context.validationLog().count() ? 1 : 0);
     return;

@@ -41,7 +41,7 @@ scene::Camera baselineCamera(const LoadedScene& loaded, const render::Renderer& 
 
 nlohmann::json measureSceneRatios(gpu::Device& device, const std::vector<LoadedScene>& loaded,
                                   const std::vector<std::string>& names, uint32_t width, uint32_t height,
-                                  int repetitions, bool withBefore) {
+                                  int repetitions, bool withBefore, bool withoutOccludedSkip) {
   // configs[0, 1]: forward and decoupled now; [2, 3]: the same as before issue 14.
   const size_t configs = withBefore ? kConfigs.size() : 2;
   // sessions[s * configs + c]
@@ -63,6 +63,13 @@ nlohmann::json measureSceneRatios(gpu::Device& device, const std::vector<LoadedS
                         // Before issue 14 every frame had the depth pre-pass.
                         .zPrepass = kConfigs[i % configs].asBefore ? render::ZPrepass::On : render::ZPrepass::Auto};
     timed.push_back(&sessions[i]);
+  }
+  // Decoupled without the occluded-entry skip (DecoupledSettings::skipOccludedEntries), per scene, same view.
+  std::vector<BenchSession> noSkip(withoutOccludedSkip ? loaded.size() : 0);
+  for (size_t s = 0; s < noSkip.size(); ++s) {
+    noSkip[s].make(device, loaded[s].scene, scene::ShadingMode::Decoupled, {.skipOccludedEntries = false});
+    noSkip[s].view = sessions[s * configs + 1].view;
+    timed.push_back(&noSkip[s]);
   }
   std::fprintf(stderr, "[bench] scene ratios %ux%u: %zu sessions, %d rounds\n", width, height, sessions.size(),
                repetitions);
@@ -86,8 +93,27 @@ nlohmann::json measureSceneRatios(gpu::Device& device, const std::vector<LoadedS
                          {"ratio_to_first", baseline > 0.0 ? ms / baseline : 0.0},
                          {"ratio_to_before", withBefore ? nlohmann::json(before > 0.0 ? ms / before : 0.0) : nlohmann::json(nullptr)},
                          {"pass_ms_median", session.passMedians()},
+                         {"visited_entries", stats.visitedEntries},
                          {"composite_misses", stats.counters.compositeMisses}});
     }
+  for (size_t s = 0; s < noSkip.size(); ++s) {
+    const double ms = noSkip[s].frameMedian();
+    const auto stats = noSkip[s].decoupled->stats();
+    results.push_back({{"scene", names[s]},
+                       {"config", "decoupled no skip"},
+                       {"decoupled", true},
+                       {"as_before", false},
+                       {"objects", noSkip[s].scene.instances.size()},
+                       {"frame_ms_median", ms},
+                       {"frame_ms_samples", noSkip[s].frameMs},
+                       {"ratio_to_first", noSkip[0].frameMedian() > 0.0 ? ms / noSkip[0].frameMedian() : 0.0},
+                       {"ratio_to_before", 0.0},
+                       // The same scene's decoupled frame with the skip ÷ this one.
+                       {"skip_ratio", ms > 0.0 ? sessions[s * configs + 1].frameMedian() / ms : 0.0},
+                       {"visited_entries", stats.visitedEntries},
+                       {"pass_ms_median", noSkip[s].passMedians()},
+                       {"composite_misses", stats.counters.compositeMisses}});
+  }
   return {{"width", width}, {"height", height}, {"repetitions", repetitions}, {"configs", results}};
 }
 
@@ -105,7 +131,7 @@ void runSceneRatioBench(gpu::Context& context, gpu::Device& device, const SceneR
   for (const auto& size : args.sizes) {
     uint32_t w = 0, h = 0;
     parseSize("--sizes", size, w, h);
-    runs.push_back(measureSceneRatios(device, loaded, names, w, h, args.repetitions));
+    runs.push_back(measureSceneRatios(device, loaded, names, w, h, args.repetitions, true, args.withoutOccludedSkip));
   }
   writeTextFile(out / "scene-ratios.json", "results",
                 nlohmann::json{{"machine", machineJson(context)}, {"runs", runs}}.dump(2) + "\n");

@@ -26,6 +26,7 @@ struct SceneRatioArgs {
   std::vector<std::string> scenes;  // at least two: the first is the baseline
   std::vector<std::string> sizes;
   int repetitions = 5;
+  bool withoutOccludedSkip = false;  // also decoupled without the occluded-entry skip, alternated
 };
 
 // One size of that bench: the run's JSON (width, height, repetitions and per
@@ -33,7 +34,7 @@ struct SceneRatioArgs {
 // forward and decoupled as now (ratio_to_before null).
 nlohmann::json measureSceneRatios(gpu::Device& device, const std::vector<LoadedScene>& loaded,
                                   const std::vector<std::string>& names, uint32_t width, uint32_t height,
-                                  int repetitions, bool withBefore = true);
+                                  int repetitions, bool withBefore = true, bool withoutOccludedSkip = false);
 
 void runSceneRatioBench(gpu::Context& context, gpu::Device& device, const SceneRatioArgs& args,
                         const std::filesystem::path& out);

@@ -188,6 +188,9 @@ CLI::App* addBenchOptions(CLI::App& command, BenchArgs& args, GraphBenchArgs& gr
                    "the first scene's first camera path, if it has one), forward and decoupled, each also as before issue 14 (without "
                    "occlusion culling), alternated; "
                    "writes scene-ratios.json");
+  command.add_flag("--without-occluded-skip", args.withoutOccludedSkip,
+                   "--scene-ratios: also decoupled without the occluded-entry skip (every entry of objects the "
+                   "occlusion cull hides is visited, as before), alternated; skip_ratio: with ÷ without");
   command.add_flag("--effects", args.effects,
                    "instead of the configuration sweep: what each effect costs, forward and decoupled, alternated "
                    "(shadows per light by type, light culling against brute force by light count, environment light "

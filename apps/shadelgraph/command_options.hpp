@@ -104,6 +104,7 @@ struct BenchArgs {
   std::string rateMaterial;     // the shade-rate sweep: every object's material
   bool unkeptLayers = false;    // the shade-rate sweep: each rate also without keeping view-independent layers
   int framesInFlight = 1;       // the shade-rate sweep: 2 adds each rate above 1 with two frames in flight
+  bool withoutOccludedSkip = false;  // --scene-ratios: also decoupled without the occluded-entry skip
   bool sceneRatios = false;  // each scene against the first instead (bench_scenes.cpp)
   bool effects = false;      // what each effect costs and adds instead (bench_effects.cpp)
   int play = 0;              // > 0: this many frames of the scenes' animations, forward and decoupled, instead (bench_playback.cpp)

@@ -127,6 +127,8 @@ void writeStats(const std::string& path, const AppSession& session, const render
                        {"layer_dispatches", d.layerDispatches},
                        {"owned_entries", d.ownedEntries},
                        {"live_entries", d.liveEntries},
+                       {"visited_entries", d.visitedEntries},
+                       {"visited_entry_groups", d.visitedEntryGroups},
                        {"live_spans", d.liveSpans},
                        {"layers", d.layers},
                        {"layer_reuse", layerReuse},

@@ -20,6 +20,7 @@ using EntrySpan = shader::SgEntrySpan;  // owned entries [begin, end)
 // Runs beyond this many are joined across their smallest gaps: a few entries
 // visited in vain cost less than one more dispatch in every per-entry pass.
 inline constexpr size_t kMaxLiveSpans = 8;
+static_assert(kMaxLiveSpans <= shader::kMaxBlockSpans, "live-entry-blocks takes every span in its push constants");
 
 // Per instance id, its run of owned entries in tables.ownedEntries ({0, 0}: none).
 std::vector<EntrySpan> ownedEntryRuns(const ShadelGpuTables& tables);

@@ -10,7 +10,7 @@
 
 namespace sg::passes {
 namespace {
-constexpr std::array kBindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindWork, kBindChunkSlots};
+constexpr std::array kBindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindWork, kBindChunkSlots, kBindEntryBlocks};
 constexpr std::array kOffsetBindings{kBindParams, kBindWork, kBindArgs};
 
 // Each step reads (and adds to) what the one before wrote.
@@ -41,6 +41,7 @@ void addShadeFrameWork(graph::RenderGraph& graph, DecoupledFrame& shadeFrame) {
   // The fill step stamps every chunk with this frame (it is all shaded now) and may count ages.
   if (shadeFrame.stamps.valid()) shadeFrame.stamps = pass.write(shadeFrame.stamps, graph::Access::StorageReadWrite);
   shadeFrame.counters = pass.write(shadeFrame.counters, graph::Access::StorageReadWrite);
+  readEntryBlocks(pass, shadeFrame);
   pass.execute([frame = shadeFrame](PassContext& ctx) {
     const auto& clear = ctx.device().pipeline("shade-frame-clear", [] { return shadeFramePhasePipeline(0); });
     const auto& count = ctx.device().pipeline("shade-frame-count", [] { return shadeFramePhasePipeline(1); });
@@ -51,13 +52,13 @@ void addShadeFrameWork(graph::RenderGraph& graph, DecoupledFrame& shadeFrame) {
     vkCmdDispatch(ctx.cmd(), (slots + 63) / 64, 1, 1);
     computeToCompute(ctx.cmd());
     bindDecoupled(ctx, count, frame, kBindings);
-    dispatchEntrySpans(ctx, count, frame.liveSpans);
+    dispatchEntrySpans(ctx, count, frame);
     computeToCompute(ctx.cmd());
     bindDecoupled(ctx, offsets, frame, kOffsetBindings);
     vkCmdDispatch(ctx.cmd(), 1, 1, 1);
     computeToCompute(ctx.cmd());
     bindDecoupled(ctx, fill, frame, workFillBindings());
-    dispatchEntrySpans(ctx, fill, frame.liveSpans);
+    dispatchEntrySpans(ctx, fill, frame);
   });
 }
 

@@ -8,9 +8,10 @@
 
 namespace sg::passes {
 namespace {
-constexpr std::array kFreeBindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindChunkSlots};
+constexpr std::array kFreeBindings{kBindParams, kBindRemap, kBindOwnedEntries, kBindChunkSlots, kBindEntryBlocks};
 constexpr std::array kTakeBindings{kBindParams, kBindObjects, kBindRemap,       kBindOwnedEntries,
-                                   kBindCounters, kBindWork,   kBindChunkSlots, kBindShadeStamps};
+                                   kBindCounters, kBindWork,   kBindChunkSlots, kBindShadeStamps,
+                                   kBindEntryBlocks};
 
 std::span<const uint32_t> phaseBindings(int phase) {
   if (phase == 1) return kFreeBindings;
@@ -38,15 +39,16 @@ void addShadelAllocate(graph::RenderGraph& graph, DecoupledFrame& frame) {
   if (frame.stamps.valid()) pass.read(frame.stamps, graph::Access::StorageRead);
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);
   frame.work = pass.write(frame.work, graph::Access::StorageReadWrite);
+  readEntryBlocks(pass, frame);
   pass.execute([frame](PassContext& ctx) {
     if (frame.liveSpans.empty()) return;
     const auto& release = ctx.device().pipeline("shadel-allocate-free", [] { return shadelAllocatePipeline(1); });
     bindDecoupled(ctx, release, frame, kFreeBindings);
-    dispatchEntrySpans(ctx, release, frame.liveSpans);
+    dispatchEntrySpans(ctx, release, frame);
     computeToCompute(ctx.cmd());
     const auto& take = ctx.device().pipeline("shadel-allocate", [] { return shadelAllocatePipeline(2); });
     bindDecoupled(ctx, take, frame, kTakeBindings);
-    dispatchEntrySpans(ctx, take, frame.liveSpans);
+    dispatchEntrySpans(ctx, take, frame);
   });
 }
 

@@ -15,6 +15,10 @@ layout(local_size_x = 64) in;
 
 void main() {
   uint i = sgSpanEntry(64u);
+  if (gl_LocalInvocationIndex == 0u && sgInSpan(i)) {  // what the per-entry passes visit (stats)
+    atomicAdd(counters.entriesVisited, min(sgSpanEnd - i, 64u));
+    atomicAdd(counters.entryGroupsVisited, 1u);
+  }
   if (!sgInSpan(i)) return;
   SgOwnedEntry owned = ownedEntries[i];
   remap[owned.entryIndex].storageBase = i * SG_CHUNKS_PER_ENTRY;
@@ -47,6 +51,8 @@ void main() {
     counters.staleMaxAge = 0u;
     counters.chunksRefreshed = 0u;
     counters.shadelsSkipped = 0u;
+    counters.entriesVisited = 0u;
+    counters.entryGroupsVisited = 0u;
   }
 }
 #endif

@@ -8,7 +8,7 @@
 namespace sg::passes {
 namespace {
 constexpr std::array kBindings{kBindParams, kBindShadelInstances, kBindLevelRects, kBindRemap, kBindOwnedEntries,
-                               kBindChunkSlots, kBindLayerImage};
+                               kBindChunkSlots, kBindLayerImage, kBindEntryBlocks};
 }  // namespace
 
 gpu::ComputePipelineDesc shadelGutterPipeline() {
@@ -21,10 +21,11 @@ void addShadelGutter(graph::RenderGraph& graph, DecoupledFrame& frame) {
   pass.read(frame.remap, graph::Access::StorageRead);
   pass.read(frame.slots, graph::Access::StorageRead);
   frame.shadedColor = pass.write(frame.shadedColor, graph::Access::StorageReadWrite);
+  readEntryBlocks(pass, frame);
   pass.execute([frame](PassContext& ctx) {
     const auto& pipeline = ctx.device().pipeline("shadel-gutter", shadelGutterPipeline);
     bindDecoupled(ctx, pipeline, frame, kBindings);
-    dispatchEntrySpans(ctx, pipeline, frame.liveSpans, 32);  // 32 owned entries each (the shader's kEntriesPerGroup)
+    dispatchEntrySpans(ctx, pipeline, frame, 32);  // 32 owned entries each (the shader's kEntriesPerGroup)
   });
 }
 

@@ -10,7 +10,8 @@ namespace sg::passes {
 namespace {
 
 constexpr std::array kBindings{kBindParams, kBindRemap,    kBindObjects, kBindShadelInstances,
-                               kBindLevelRects, kBindOwnedEntries, kBindCounters, kBindSupportMasks};
+                               kBindLevelRects, kBindOwnedEntries, kBindCounters, kBindSupportMasks,
+                               kBindEntryBlocks};
 
 const gpu::Pipeline& supportPipeline(PassContext& ctx, bool apply) {
   return ctx.device().pipeline(apply ? "support-expand-apply" : "support-expand-gather",
@@ -33,6 +34,7 @@ void addSupportExpand(graph::RenderGraph& graph, DecoupledFrame& frame) {
   frame.remap = pass.write(frame.remap, graph::Access::StorageReadWrite);
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);
   masks = pass.write(masks, graph::Access::StorageReadWrite);
+  readEntryBlocks(pass, frame);
   pass.execute([frame, masks](PassContext& ctx) {
     if (frame.liveSpans.empty()) return;
     const VkBuffer maskBuffer = ctx.buffer(masks).handle();
@@ -40,7 +42,7 @@ void addSupportExpand(graph::RenderGraph& graph, DecoupledFrame& frame) {
 
     const gpu::Pipeline& gather = supportPipeline(ctx, false);
     bindDecoupled(ctx, gather, frame, kBindings, extra);
-    dispatchEntrySpans(ctx, gather, frame.liveSpans);  // a thread per live owned entry
+    dispatchEntrySpans(ctx, gather, frame);  // a thread per live owned entry
 
     // Apply may start only when all of gather is done: apply reads the masks
     // gather wrote (a memory dependency), and writes occupancy gather read in
@@ -53,7 +55,7 @@ void addSupportExpand(graph::RenderGraph& graph, DecoupledFrame& frame) {
 
     const gpu::Pipeline& apply = supportPipeline(ctx, true);
     bindDecoupled(ctx, apply, frame, kBindings, extra);
-    dispatchEntrySpans(ctx, apply, frame.liveSpans);
+    dispatchEntrySpans(ctx, apply, frame);
   });
 }
 

@@ -9,7 +9,8 @@ namespace sg::passes {
 namespace {
 constexpr std::array kOffsetBindings{kBindParams, kBindWork, kBindArgs};
 constexpr std::array kFillBindings{kBindParams, kBindObjects,  kBindRemap,       kBindOwnedEntries,
-                                   kBindWork,   kBindCounters, kBindShadeStamps, kBindChunkSlots};
+                                   kBindWork,   kBindCounters, kBindShadeStamps, kBindChunkSlots,
+                                   kBindEntryBlocks};
 }  // namespace
 
 gpu::ComputePipelineDesc workOffsetsPipeline() {
@@ -31,6 +32,7 @@ void addWorkAggregate(graph::RenderGraph& graph, DecoupledFrame& frame) {
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);  // stale ages
   frame.work = pass.write(frame.work, graph::Access::StorageReadWrite);
   frame.args = pass.write(frame.args, graph::Access::StorageWrite);
+  readEntryBlocks(pass, frame);
   pass.execute([frame](PassContext& ctx) {
     const auto& offsets = ctx.device().pipeline("work-offsets", workOffsetsPipeline);
     const auto& fill = ctx.device().pipeline("work-fill", workFillPipeline);
@@ -41,7 +43,7 @@ void addWorkAggregate(graph::RenderGraph& graph, DecoupledFrame& frame) {
                        {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
     bindDecoupled(ctx, fill, frame, kFillBindings);
-    dispatchEntrySpans(ctx, fill, frame.liveSpans);
+    dispatchEntrySpans(ctx, fill, frame);
   });
 }
 

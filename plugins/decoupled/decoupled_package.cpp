@@ -55,6 +55,7 @@ void registerDecoupledPackage(plugin::Registry& registry) {
                       // With objects allocated but none shaded this frame, the counters are
                       // still cleared and read back (the adjuster and stats see a zero frame).
                       if (!d.hasObjects()) return;
+                      d.addLiveEntryBlocks(ctx);
                       passes::addShadelClear(ctx.graph(), d.frame(ctx));
                       d.publish(ctx, {"shadel.remap", "shadel.counters", "shadel.work"});
                     }});

@@ -14,6 +14,7 @@
 #include <shadelgraph/shadel/shadel_gpu_tables.hpp>
 
 #include "layer-shade/layer_shade.hpp"
+#include "live-entry-blocks/live_entry_blocks.hpp"
 #include "shade-frame/shade_frame_work.hpp"
 #include "id_map_budget.hpp"
 #include "layer_rate.hpp"
@@ -223,6 +224,7 @@ std::vector<DecoupledShading::RunTimeForward> DecoupledShading::runTimeForward()
 
 void DecoupledShading::uploadTables(gpu::Device& device) {
   tablesDirty_ = false;
+  visibilityFrame_ = 0;  // the next live-entry-blocks visits every live object once
   const auto tables = shadel::buildGpuTables(*space_);
   // The occupancy view shows the square around every allocated level.
   glm::uvec2 lo(~0u), hi(0u);
@@ -385,6 +387,7 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
   std::vector<shadel::EntrySpan>& spans = liveSpans_[ring()];
   const bool everyEntry = !settings_.liveEntrySpans || settings_.view == DebugView::Occupancy ||
                           settings_.view == DebugView::Sheet;
+  blocksWanted_ = settings_.skipOccludedEntries && !everyEntry;
   if (everyEntry)
     spans.assign(ownedEntryCount_ ? 1 : 0, shadel::EntrySpan{0, ownedEntryCount_});
   else
@@ -565,6 +568,25 @@ void DecoupledShading::addLayerPasses(graph::RenderGraph& graph, const plugin::R
   }
 }
 
+void DecoupledShading::addLiveEntryBlocks(render::FrameContext& ctx) {
+  passes::DecoupledFrame& frame = this->frame(ctx);
+  if (!blocksWanted_ || passes::entryBlockCandidates(frame.liveSpans) == 0) return;
+  const auto& in = ctx.inputs();
+  const uint64_t bytes = 2ull * sizeof(uint32_t) * std::max<size_t>(slots_.size(), 1);
+  if (!objectVisibility_ || objectVisibility_.size() != bytes) {
+    objectVisibility_ = gpu::Buffer(in.device.context(), in.device.memory(),
+                                    {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryLocation::Device,
+                                     "object visibility", "decoupled tables"});
+    visibilityFrame_ = 0;
+  }
+  const auto visibility = ctx.graph().importPersistentBuffer("object visibility", {.size = bytes}, kResting);
+  in.executor.bindBuffer(visibility, objectVisibility_);
+  // Last frame's half is valid only if last frame wrote it: else every live object is visited once.
+  const bool historyValid = visibilityFrame_ != 0 && visibilityFrame_ + 1 == frames_;
+  passes::addLiveEntryBlocks(ctx.graph(), frame, {visibility, objectVisibility_.handle(), ring(), historyValid});
+  visibilityFrame_ = frames_;
+}
+
 std::map<uint64_t, uint32_t> DecoupledShading::chunkAddresses(gpu::Device& device) const {
   return chunkSlots_.addresses(device);
 }
@@ -581,6 +603,8 @@ DecoupledStats DecoupledShading::stats() const {
   s.layerDispatches = layerPlan_.dispatches;
   s.ownedEntries = ownedEntryCount_;
   s.liveEntries = uint32_t(shadel::entriesIn(liveSpans_[ring()]));
+  s.visitedEntries = s.counters.entriesVisited;
+  s.visitedEntryGroups = s.counters.entryGroupsVisited;
   s.liveSpans = uint32_t(liveSpans_[ring()].size());
   for (const auto& steps : layerPlan_.depths)
     for (const auto& step : steps) s.layers.push_back(step.layer);

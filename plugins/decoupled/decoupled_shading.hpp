@@ -76,6 +76,11 @@ struct DecoupledSettings {
   // frame or still holding stored chunks (shadel::liveEntrySpans); false:
   // every allocated object's, culled or not, as before (comparisons).
   bool liveEntrySpans = true;
+  // Within those spans, the per-entry passes also skip the entries of objects
+  // the occlusion cull hid this frame and last frame, decided on the GPU
+  // (passes::addLiveEntryBlocks: indirect dispatches over the visited blocks
+  // of 64 entries); false: every entry of the spans (comparisons).
+  bool skipOccludedEntries = true;
   DebugView view = DebugView::Final;
   ShadeSpaceAdjusterOptions adjuster;
 };
@@ -99,6 +104,10 @@ struct DecoupledStats {
   // Owned remap entries allocated, and those the per-entry passes visited in
   // that frame (live spans), in how many runs (dispatches per such pass).
   uint32_t ownedEntries = 0, liveEntries = 0, liveSpans = 0;
+  // The entries they did visit, counted on the GPU (fewer than liveEntries
+  // when the occlusion-culled skip left blocks out; a block's whole span
+  // part when not), and in how many workgroups of 64.
+  uint32_t visitedEntries = 0, visitedEntryGroups = 0;
   std::vector<std::string> layers;  // layers the frame ran decoupled, in pass order
   std::vector<LayerReuse> layerReuse;  // per persistent layer
   bool shadeFrame = true;  // the last frame was a shade frame
@@ -133,6 +142,8 @@ class DecoupledShading {
   // One layer-shade pass per depth of the frame's layer plan.
   void addLayerPasses(graph::RenderGraph& graph, const plugin::Registry& materials, const std::string& prefix = "");
   void addCountersReadback(graph::RenderGraph& graph);
+  // With skipOccludedEntries: the live-entry-blocks pass before the first per-entry pass (frame.entryBlocks).
+  void addLiveEntryBlocks(render::FrameContext& ctx);
   // With `overlap`, in a shade frame: its own work list of every stored chunk
   // and the layer passes over it, after composite (the frame's tail).
   void addShadeFrameTail(graph::RenderGraph& graph, const plugin::Registry& materials);
@@ -241,6 +252,11 @@ class DecoupledShading {
   std::vector<shadel::EntrySpan> ownedRuns_;  // per object (instance id): its owned entries
   shadel::LiveInstances liveInstances_;       // shaded this frame or holding stored chunks
   std::vector<shadel::EntrySpan> liveSpans_[2];  // the frame's (DecoupledFrame::liveSpans), per frame in flight
+  // Per object, its occlusion-cull visibility in the last two frames (live-entry-blocks), and the
+  // frame that last wrote it (0: none since it was made or the tables changed).
+  gpu::Buffer objectVisibility_;
+  uint64_t visibilityFrame_ = 0;
+  bool blocksWanted_ = false;  // this frame: skipOccludedEntries, and the spans are not every entry
   ChunkSlots chunkSlots_;  // stable allocation: where each stored chunk is, kept across frames
   shadel::StorageLayout storage_;
   uint64_t idMapBytes_ = 0;

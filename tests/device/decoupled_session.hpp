@@ -37,8 +37,9 @@ inline std::string pathName(const ::testing::TestParamInfo<scene::ShadingMode>& 
 
 // The default courtyard (64² chart) plus `count` spheres (radius 0.6) in a row
 // along x from `first`, 2 apart, named "<name> <i>", shaded in `mode`.
-inline scene::Scene courtyardWithSphereRow(const std::string& name, int count, glm::vec3 first, scene::ShadingMode mode) {
-  scene::Scene s = scene::makeDefaultScene(64);
+inline scene::Scene courtyardWithSphereRow(const std::string& name, int count, glm::vec3 first, scene::ShadingMode mode,
+                                           uint32_t textureSize = 64) {
+  scene::Scene s = scene::makeDefaultScene(textureSize);
   scene::Primitive sphere = scene::makeSphere(0.6f, 24, 12);
   sphere.material = 0;
   scene::Mesh mesh{.name = name, .bounds = sphere.bounds};

@@ -41,6 +41,16 @@ SG_CONST uint kBindChunkSlots = 33u;
 // Which shadels of each chunk composite reads (shadel-mark's 64-bit masks, one
 // per chunk slot: ownedIndex * 64 + chunk); layer-shade shades only those.
 SG_CONST uint kBindShadelMasks = 34u;
+// The frame's live entry blocks (live-entry-blocks): the per-entry passes'
+// indirect dispatch arguments, then one SgEntryBlock per workgroup of 64.
+SG_CONST uint kBindEntryBlocks = 35u;
+// live-entry-blocks: per decoupled object, 1 when the occlusion cull found it
+// visible, in two halves (frames of even and odd parity), persistent.
+SG_CONST uint kBindObjectVisibility = 36u;
+// live-entry-blocks: the frame's draw commands after the occlusion cull
+// (VkDrawIndexedIndirectCommand per draw, a decoupled object's index is its
+// draw's; instance count 0: culled).
+SG_CONST uint kBindCulledDraws = 37u;
 // A chunk slot: the physical chunk; kNoSlot: no storage.
 SG_CONST uint kNoSlot = 0xFFFFFFFFu;
 SG_CONST uint kStaleAgeBins = 16u;  // SgShadeCounters.staleAgeChunks: ages 0..14, then 15 or more
@@ -91,6 +101,11 @@ struct SgShadeCounters {
   uint chunksRefreshed;              // chunks that could have been reused but were shaded for their age (budget mode)
   uint staleAgeChunks[kStaleAgeBins];  // reusable chunks by the age they would have if reused (budget mode)
   uint shadelsSkipped;               // shadels of shaded chunks layer-shade left out: no pixel reads them
+  // Owned entries the per-entry passes visited (counted by shadel-clear's
+  // entry step: live spans, or with the occlusion-culled skip the live entry
+  // blocks), and in how many workgroups of 64.
+  uint entriesVisited;
+  uint entryGroupsVisited;
 };
 
 // The frame's parameters (uniform).
@@ -122,10 +137,42 @@ struct SgLayerShadePush {
 // Push constants of the passes that run per owned remap entry (shadel-clear,
 // shadel-allocate, work-fill, shadel-gutter, support-expand, shade-frame):
 // the owned entries [begin, end) this dispatch covers, one run of the frame's
-// live entries (sg::shadel::liveEntrySpans; entry_span.glsl).
+// live entries (sg::shadel::liveEntrySpans; entry_span.glsl). With `blocks`
+// 1, an indirect dispatch over the frame's live entry blocks instead
+// (kBindEntryBlocks): each workgroup finds its entries there.
 struct SgEntrySpan {
   uint begin;
   uint end;
+  uint blocks;
+};
+
+// The live entry blocks buffer (kBindEntryBlocks): indirect dispatch
+// arguments for the per-entry passes with 64 and with 32 entries per
+// workgroup, then the blocks. A block is up to 64 owned entries of a live
+// span, [first, first + 64) cut at the span's end.
+SG_CONST uint kEntryBlockSize = 64u;
+SG_CONST uint kMaxBlockSpans = 8u;  // sg::shadel::kMaxLiveSpans
+struct SgEntryBlock {
+  uint first;
+  uint spanEnd;
+};
+struct SgEntryBlocksHeader {
+  uint args64[3];  // VkDispatchIndirectCommand: a workgroup per block
+  uint args32[3];  // two per block
+  uint blockCount;
+  uint pad;
+};
+
+// Push constants of live-entry-blocks: the frame's live spans (CPU: objects
+// shaded now or last frame) and what the occlusion cull adds.
+struct SgEntryBlocksPush {
+  SgEntrySpan spans[kMaxBlockSpans];  // .blocks: the span's first candidate block
+  uint spanCount;
+  uint candidateBlocks;  // blocks of 64 over all spans
+  uint objectCount;
+  uint parity;           // this frame's half of the visibility buffer
+  uint historyValid;     // 1: the other half holds last frame's visibility
+  uint culled;           // 1: the draw commands hold this frame's occlusion cull (else all visible)
 };
 
 // Push constants of the occupancy debug view: the sheet window it shows.

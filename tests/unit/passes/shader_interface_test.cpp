@@ -26,6 +26,7 @@
 #include <forward/forward_material.hpp>
 #include <layer-shade/layer_shade.hpp>
 #include <light-cull/light_cull.hpp>
+#include <live-entry-blocks/live_entry_blocks.hpp>
 #include <object-pick/object_pick.hpp>
 #include <shadel-allocate/shadel_allocate.hpp>
 #include <shadel-clear/shadel_clear.hpp>
@@ -131,6 +132,9 @@ const std::map<std::string, size_t> kSharedRecords = {
     {"SgLayerShadePush", sizeof(shader::SgLayerShadePush)},
     {"SgOccupancyPush", sizeof(shader::SgOccupancyPush)},
     {"SgEntrySpan", sizeof(shader::SgEntrySpan)},
+    {"SgEntryBlock", sizeof(shader::SgEntryBlock)},
+    {"SgEntryBlocksHeader", sizeof(shader::SgEntryBlocksHeader)},
+    {"SgEntryBlocksPush", sizeof(shader::SgEntryBlocksPush)},
     {"SgExposure", sizeof(shader::SgExposure)},
     {"SgExposureParams", sizeof(shader::SgExposureParams)},
     {"SgEnvironmentPush", sizeof(shader::SgEnvironmentPush)},
@@ -257,6 +261,7 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
           errors += mismatches("shadel-mark filter=" + std::to_string(filter) + (alphaTest ? " alpha-test" : "") +
                                    (masks ? " masks" : ""),
                                passes::shadelMarkPipeline(filter, baseline, alphaTest, VK_NULL_HANDLE, masks));
+  for (bool header : {false, true}) errors += mismatches("live-entry-blocks", passes::liveEntryBlocksPipeline(header));
   for (bool apply : {false, true}) errors += mismatches("support-expand", passes::supportExpandPipeline(apply));
   for (int phase : {1, 2}) errors += mismatches("shadel-allocate", passes::shadelAllocatePipeline(phase));
   errors += mismatches("work-offsets", passes::workOffsetsPipeline());
@@ -307,13 +312,13 @@ TEST_F(ShaderInterface, ReportsABindingTypePushConstantAndUnusedBindingThatDrift
   ASSERT_EQ(mismatches("shadel-allocate", desc), "");
   desc.layout.bindings.front().type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;  // kBindParams is a uniform buffer
   desc.layout.bindings.push_back({shader::kBindIdMaps, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
-  desc.layout.pushConstantBytes = 4;  // the shaders push an SgEntrySpan (8 bytes)
+  desc.layout.pushConstantBytes = 4;  // the shaders push an SgEntrySpan (12 bytes)
   std::string errors = mismatches("shadel-allocate", desc);
   errors += unused();
   EXPECT_NE(errors.find("binding 1 is a uniform buffer in the shaders but declared a storage buffer"), std::string::npos)
       << errors;
   EXPECT_NE(errors.find("declares set 0 binding 10 (storage buffer), which no variant uses"), std::string::npos) << errors;
-  EXPECT_NE(errors.find("push constants are 8 bytes in the shaders but declared 4"), std::string::npos) << errors;
+  EXPECT_NE(errors.find("push constants are 12 bytes in the shaders but declared 4"), std::string::npos) << errors;
 
   gpu::ComputePipelineDesc missing = passes::shadelAllocatePipeline();
   missing.layout.bindings.pop_back();

@@ -26,6 +26,7 @@ namespace {
 
 constexpr const char* kShader = "passes/support-expand/support_expand.comp";
 using shader::kBindSupportMasks;
+using shader::kBindEntryBlocks;
 
 struct Case {
   shadel::ShadelGpuTables tables;
@@ -84,7 +85,8 @@ class SupportExpandDeviceTest : public DeviceTest {
                                                       {5},
                                                       {6},
                                                       {7},
-                                                      {kBindSupportMasks}},
+                                                      {kBindSupportMasks},
+                                                      {kBindEntryBlocks}},
                                          .pushConstantBytes = sizeof(shader::SgEntrySpan)};
     gpu::Pipeline gather(*context, *compiler, *pipelineCache,
                          gpu::ComputePipelineDesc{.shader = {.path = kShader}, .layout = layout});
@@ -122,10 +124,12 @@ class SupportExpandDeviceTest : public DeviceTest {
         {1, gpu::BufferBinding{paramsBuffer.handle()}},   {2, gpu::BufferBinding{objectsBuffer.handle()}},
         {3, gpu::BufferBinding{instancesBuffer.handle()}}, {4, gpu::BufferBinding{rectsBuffer.handle()}},
         {5, gpu::BufferBinding{remap.handle()}},          {6, gpu::BufferBinding{ownedBuffer.handle()}},
-        {7, gpu::BufferBinding{countersBuffer.handle()}}, {kBindSupportMasks, gpu::BufferBinding{masks.handle()}}};
+        {7, gpu::BufferBinding{countersBuffer.handle()}}, {kBindSupportMasks, gpu::BufferBinding{masks.handle()}},
+        // Not read: the spans are pushed (SgEntrySpan.blocks 0).
+        {kBindEntryBlocks, gpu::BufferBinding{masks.handle()}}};
     gpu::DescriptorArena descriptors(*context);
     // As the pass does over one span of every owned entry (passes::dispatchEntrySpans).
-    const shader::SgEntrySpan span{0, ownedCount};
+    const shader::SgEntrySpan span{0, ownedCount, 0};
     auto dispatchGroups = [&span](VkCommandBuffer cmd, const gpu::Pipeline& pipeline, uint32_t groups) {
       const uint32_t x = std::min(groups, 65535u);
       vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof span, &span);
