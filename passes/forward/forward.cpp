@@ -17,30 +17,19 @@ std::optional<VkClearColorValue> clearIfUnwritten(graph::ResourceHandle color, g
 
 ForwardTargets addForwardOpaque(graph::RenderGraph& graph, const render::SceneView& view, ForwardTargets targets,
                                 glm::vec3 background) {
+  const bool writesDepth = targets.depth.version == 0;  // no z-prepass drew it
   auto& pass = graph.addPass("forward-opaque", graph::QueueClass::Graphics);
   targets.color = pass.write(targets.color, graph::Access::ColorAttachment);
-  pass.read(targets.depth, graph::Access::DepthRead);
+  if (writesDepth)
+    targets.depth = pass.write(targets.depth, graph::Access::DepthAttachment);
+  else
+    pass.read(targets.depth, graph::Access::DepthRead);
   readFrameInputs(pass, view, view.draws);
   render::readSceneGeometry(pass, view);
-  pass.execute([view = render::readDrawCommands(pass, view), targets, background](PassContext& ctx) {
+  pass.execute([view = render::readDrawCommands(pass, view), targets, background, writesDepth](PassContext& ctx) {
+    const DepthTarget depth = writesDepth ? DepthTarget{targets.depth, 1.0f} : DepthTarget{targets.depth, {}, true};
     ctx.beginRendering({ColorTarget{targets.color, VkClearColorValue{{background.r, background.g, background.b, 1.0f}}}},
-                       DepthTarget{targets.depth, {}, true}, true);
-    drawForward(ctx, view, drawsWithAlphaMode(view, scene::AlphaMode::Opaque), false);
-    ctx.endRendering();
-  });
-  return targets;
-}
-
-ForwardTargets addForwardOpaqueWithDepth(graph::RenderGraph& graph, const render::SceneView& view,
-                                         ForwardTargets targets, glm::vec3 background) {
-  auto& pass = graph.addPass("forward-opaque", graph::QueueClass::Graphics);
-  targets.color = pass.write(targets.color, graph::Access::ColorAttachment);
-  targets.depth = pass.write(targets.depth, graph::Access::DepthAttachment);
-  readFrameInputs(pass, view, view.draws);
-  render::readSceneGeometry(pass, view);
-  pass.execute([view = render::readDrawCommands(pass, view), targets, background](PassContext& ctx) {
-    ctx.beginRendering({ColorTarget{targets.color, VkClearColorValue{{background.r, background.g, background.b, 1.0f}}}},
-                       DepthTarget{targets.depth, 1.0f}, true);
+                       depth, true);
     drawForward(ctx, view, drawsWithAlphaMode(view, scene::AlphaMode::Opaque), false);
     ctx.endRendering();
   });

@@ -23,15 +23,12 @@ glm::vec3 hdrBackground(std::span<const scene::Light> lights);
 // Empty: the colour has content, load it.
 std::optional<VkClearColorValue> clearIfUnwritten(graph::ResourceHandle color, glm::vec3 background);
 
-// Opaque objects with their glTF material (graphics), against the z-prepass
-// depth; clears the colour.
+// Opaque objects with their glTF material (graphics); clears the colour.
+// Against the z-prepass depth; or, when no pass wrote targets.depth yet (no
+// z-prepass), writing the depth themselves (cleared first, tested
+// LESS_OR_EQUAL), so a pixel is shaded once per surface nearest when drawn.
 ForwardTargets addForwardOpaque(graph::RenderGraph& graph, const render::SceneView& view, ForwardTargets targets,
                                 glm::vec3 background);
-// Without a z-prepass: the same draws, writing the depth themselves (cleared
-// first, tested LESS_OR_EQUAL), so a pixel is shaded once per surface that is
-// nearest when it is drawn.
-ForwardTargets addForwardOpaqueWithDepth(graph::RenderGraph& graph, const render::SceneView& view,
-                                         ForwardTargets targets, glm::vec3 background);
 // Without a z-prepass, after occlusion-cull: adds to colour and depth the
 // opaque draws of `view` that `late` (indirect draw commands by draw index)
 // keeps, the draws found visible that the first half did not draw.

@@ -124,13 +124,12 @@ bool drawsZPrepass(FrameContext& ctx) {
   return passes::zPrepassPays(opaqueTriangles(ctx), uint64_t(ctx.inputs().width) * ctx.inputs().height);
 }
 
-// forward-opaque where no pre-pass drew the depth (its version is 0): it
-// draws and writes the depth itself, occlusion-culled in the same two halves.
-passes::ForwardTargets forwardOpaqueWithDepth(FrameContext& ctx, const render::SceneView& view,
-                                              passes::ForwardTargets t) {
-  if (!occlusionCulled(ctx)) return passes::addForwardOpaqueWithDepth(ctx.graph(), view, t, background(ctx));
+// forward-opaque where no pre-pass drew the depth (it writes the depth
+// itself), occlusion-culled in the same two halves as the pre-pass.
+passes::ForwardTargets culledForwardOpaque(FrameContext& ctx, const render::SceneView& view,
+                                           passes::ForwardTargets t) {
   importDrawCommands(ctx, *ctx.inputs().culling);
-  t = passes::addForwardOpaqueWithDepth(ctx.graph(), view, t, background(ctx));
+  t = passes::addForwardOpaque(ctx.graph(), view, t, background(ctx));
   return passes::addForwardOpaqueLate(ctx.graph(), view, t, occlusionCull(ctx, t.depth));
 }
 
@@ -288,8 +287,8 @@ void registerForwardPackage(plugin::Registry& registry) {
                         publish(ctx, t);  // unwritten: see passes::clearIfUnwritten
                         return;
                       }
-                      if (t.depth.version == 0) {  // the z-prepass left the depth to this pass
-                        publish(ctx, forwardOpaqueWithDepth(ctx, view, t));
+                      if (t.depth.version == 0 && occlusionCulled(ctx)) {  // the z-prepass left the depth to this pass
+                        publish(ctx, culledForwardOpaque(ctx, view, t));
                         return;
                       }
                       publish(ctx, passes::addForwardOpaque(ctx.graph(), view, t, background(ctx)));
