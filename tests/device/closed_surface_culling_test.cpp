@@ -69,12 +69,6 @@ scene::Scene scene(bool closed, bool openBox = false) {
   return s;
 }
 
-scene::Camera camera(glm::vec3 eye, glm::vec3 target) {
-  scene::Camera c{.name = "view", .yfov = 0.9f, .znear = 0.1f, .zfar = 100.0f};
-  c.world = scene::lookAtWorld(eye, target);
-  return c;
-}
-
 class ClosedSurfaceCulling : public ::testing::TestWithParam<scene::ShadingMode> {};
 
 TEST_P(ClosedSurfaceCulling, SameImageAsWithoutFromOutside) {
@@ -82,8 +76,8 @@ TEST_P(ClosedSurfaceCulling, SameImageAsWithoutFromOutside) {
   ASSERT_TRUE(withFlags.meshes[0].primitives[0].closedSurface) << "the snapped sphere must be closed";
   ASSERT_TRUE(withFlags.meshes[1].primitives[0].closedSurface);
   Session culled(withFlags, GetParam()), unculled(scene(false), GetParam());
-  for (const auto& view : {camera({0.5f, 1.5f, 5.0f}, {0.0f, 0.0f, 0.0f}), camera({-4.0f, -1.0f, 1.0f}, {0.0f, 0.0f, 0.0f}),
-                           camera({-1.2f, 0.0f, 2.0f}, {-1.2f, 0.0f, 0.0f})}) {  // the last near the sphere's bounds
+  for (const auto& view : {lookAtCamera({0.5f, 1.5f, 5.0f}, {0.0f, 0.0f, 0.0f}), lookAtCamera({-4.0f, -1.0f, 1.0f}, {0.0f, 0.0f, 0.0f}),
+                           lookAtCamera({-1.2f, 0.0f, 2.0f}, {-1.2f, 0.0f, 0.0f})}) {  // the last near the sphere's bounds
     const auto a = culled.render(160, view), b = unculled.render(160, view);
     const auto diff = image::compareRgba8(a.rgba8, b.rgba8);
     EXPECT_EQ(diff.maxAbs, 0) << "mean |d| " << diff.meanAbs << ", " << diff.fractionAbove8 * 100
@@ -95,7 +89,7 @@ TEST_P(ClosedSurfaceCulling, SameImageAsWithoutFromOutside) {
 TEST_P(ClosedSurfaceCulling, InsideTheSurfaceItsInsideIsDrawn) {
   // The camera in the sphere: no culling there, so it still sees the sphere's inside.
   Session culled(scene(true), GetParam()), unculled(scene(false), GetParam());
-  const auto inside = camera({-1.2f, 0.0f, 0.3f}, {-1.2f, 0.0f, -1.0f});
+  const auto inside = lookAtCamera({-1.2f, 0.0f, 0.3f}, {-1.2f, 0.0f, -1.0f});
   const auto a = culled.render(96, inside), b = unculled.render(96, inside);
   EXPECT_EQ(image::compareRgba8(a.rgba8, b.rgba8).maxAbs, 0);
 }
@@ -103,12 +97,12 @@ TEST_P(ClosedSurfaceCulling, InsideTheSurfaceItsInsideIsDrawn) {
 TEST_P(ClosedSurfaceCulling, BackFacesAreCulledFromOutside) {
   // Through the open box's missing face its inside shows, unless back faces are culled.
   Session culled(scene(true, true), GetParam()), unculled(scene(false, true), GetParam());
-  const auto front = camera({0.3f, 0.4f, 4.0f}, {0.0f, 0.0f, 0.0f});
+  const auto front = lookAtCamera({0.3f, 0.4f, 4.0f}, {0.0f, 0.0f, 0.0f});
   const auto a = culled.render(96, front), b = unculled.render(96, front);
   const auto diff = image::compareRgba8(a.rgba8, b.rgba8);
   EXPECT_GT(diff.fractionAbove8, 0.1) << "the inside of the box (back faces) must be culled in every pass";
   // Seen from inside the box, nothing is culled: the same image.
-  const auto inside = camera({0.0f, 0.0f, 0.2f}, {0.0f, 0.0f, -1.0f});
+  const auto inside = lookAtCamera({0.0f, 0.0f, 0.2f}, {0.0f, 0.0f, -1.0f});
   EXPECT_EQ(image::compareRgba8(culled.render(96, inside).rgba8, unculled.render(96, inside).rgba8).maxAbs, 0);
 }
 

@@ -30,6 +30,13 @@ inline scene::Camera panCamera(int frame, float step = 0.15f) {
   return camera;
 }
 
+// A camera at `eye` looking at `target` (the culling tests' views and paths).
+inline scene::Camera lookAtCamera(glm::vec3 eye, glm::vec3 target) {
+  scene::Camera c{.name = "path", .yfov = 0.9f, .znear = 0.1f, .zfar = 100.0f};
+  c.world = scene::lookAtWorld(eye, target);
+  return c;
+}
+
 // Test-name suffix of a test parameterized on both paths (Forward / Decoupled).
 inline std::string pathName(const ::testing::TestParamInfo<scene::ShadingMode>& info) {
   return info.param == scene::ShadingMode::Forward ? "Forward" : "Decoupled";

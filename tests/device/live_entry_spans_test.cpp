@@ -24,11 +24,7 @@ scene::Scene courtyardWithSpheresBehind() {
   return courtyardWithSphereRow("sphere behind", 4, {-3.0f, 1.0f, 10.0f}, scene::ShadingMode::Decoupled);
 }
 
-scene::Camera looking(glm::vec3 target) {
-  scene::Camera c{.name = "path", .yfov = 0.9f, .znear = 0.1f, .zfar = 100.0f};
-  c.world = scene::lookAtWorld({0.0f, 2.0f, 6.0f}, target);
-  return c;
-}
+scene::Camera looking(glm::vec3 target) { return lookAtCamera({0.0f, 2.0f, 6.0f}, target); }
 
 class LiveEntrySpans : public ::testing::TestWithParam<uint32_t> {};
 

@@ -27,12 +27,6 @@ scene::Scene courtyardWithHiddenSpheres() {
   return courtyardWithSphereRow("hidden sphere", kSpheres, {-5.0f, 1.0f, -10.5f}, scene::ShadingMode::Decoupled, 256);
 }
 
-scene::Camera camera(glm::vec3 eye, glm::vec3 target) {
-  scene::Camera c{.name = "path", .yfov = 0.9f, .znear = 0.1f, .zfar = 100.0f};
-  c.world = scene::lookAtWorld(eye, target);
-  return c;
-}
-
 class OccludedEntrySkip : public ::testing::TestWithParam<uint32_t> {};
 
 TEST_P(OccludedEntrySkip, SameImagesAndCountersAsWithoutAlongAHideAndReturnPath) {
@@ -41,9 +35,9 @@ TEST_P(OccludedEntrySkip, SameImagesAndCountersAsWithoutAlongAHideAndReturnPath)
   plugins::DecoupledSettings noSkip = settings;
   noSkip.skipOccludedEntries = false;
   Session skip(scene, scene::ShadingMode::Decoupled, settings), all(scene, scene::ShadingMode::Decoupled, noSkip);
-  const scene::Camera hidden = camera({1.5f, 3.2f, 8.5f}, {0.0f, 1.0f, -4.0f});
-  const scene::Camera over = camera({1.5f, 9.0f, 8.5f}, {0.0f, 1.0f, -4.0f});        // the spheres show over the wall
-  const scene::Camera behind = camera({0.0f, 2.0f, -16.0f}, {0.0f, 1.0f, -10.0f});  // behind the wall, facing them
+  const scene::Camera hidden = lookAtCamera({1.5f, 3.2f, 8.5f}, {0.0f, 1.0f, -4.0f});
+  const scene::Camera over = lookAtCamera({1.5f, 9.0f, 8.5f}, {0.0f, 1.0f, -4.0f});        // the spheres show over the wall
+  const scene::Camera behind = lookAtCamera({0.0f, 2.0f, -16.0f}, {0.0f, 1.0f, -10.0f});  // behind the wall, facing them
   const std::vector<scene::Camera> path{hidden, hidden, hidden, over, over, hidden, hidden, behind, hidden, hidden};
   const size_t firstSphere = scene.instances.size() - kSpheres;
   std::vector<uint32_t> visited, visitedAll;
@@ -92,7 +86,7 @@ TEST(OccludedEntrySkip, VisitsEverythingWithoutCullingAndTheFrameAfter) {
   plugins::DecoupledSettings noSkip = settings;
   noSkip.skipOccludedEntries = false;
   Session skip(scene, scene::ShadingMode::Decoupled, settings), all(scene, scene::ShadingMode::Decoupled, noSkip);
-  const scene::Camera hidden = camera({1.5f, 3.2f, 8.5f}, {0.0f, 1.0f, -4.0f});
+  const scene::Camera hidden = lookAtCamera({1.5f, 3.2f, 8.5f}, {0.0f, 1.0f, -4.0f});
   const std::vector<bool> culling{true, true, true, false, true, true};
   std::vector<uint32_t> visited, visitedAll;
   for (size_t f = 0; f < culling.size(); ++f) {

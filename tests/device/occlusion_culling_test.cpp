@@ -27,20 +27,14 @@ scene::Scene courtyardWithHiddenSpheres() {
   return courtyardWithSphereRow("hidden sphere", kHiddenSpheres, {-5.0f, 1.0f, -10.5f}, scene::ShadingMode::Auto);
 }
 
-scene::Camera camera(glm::vec3 eye, glm::vec3 target) {
-  scene::Camera c{.name = "path", .yfov = 0.9f, .znear = 0.1f, .zfar = 100.0f};
-  c.world = scene::lookAtWorld(eye, target);
-  return c;
-}
-
 // The path: hidden, rising until the spheres show over the wall, a jump
 // behind the wall (nothing drawn last frame is in front of them), and back.
 std::vector<scene::Camera> path() {
   std::vector<scene::Camera> cameras;
-  for (float y : {3.2f, 3.2f, 5.0f, 7.0f, 9.0f}) cameras.push_back(camera({1.5f, y, 8.5f}, {0.0f, 1.0f, -4.0f}));
-  cameras.push_back(camera({0.0f, 2.0f, -16.0f}, {0.0f, 1.0f, -10.0f}));
-  cameras.push_back(camera({1.5f, 3.2f, 8.5f}, {0.0f, 1.0f, -4.0f}));
-  cameras.push_back(camera({-6.5f, 1.5f, 6.0f}, {-2.0f, 1.0f, -9.0f}));
+  for (float y : {3.2f, 3.2f, 5.0f, 7.0f, 9.0f}) cameras.push_back(lookAtCamera({1.5f, y, 8.5f}, {0.0f, 1.0f, -4.0f}));
+  cameras.push_back(lookAtCamera({0.0f, 2.0f, -16.0f}, {0.0f, 1.0f, -10.0f}));
+  cameras.push_back(lookAtCamera({1.5f, 3.2f, 8.5f}, {0.0f, 1.0f, -4.0f}));
+  cameras.push_back(lookAtCamera({-6.5f, 1.5f, 6.0f}, {-2.0f, 1.0f, -9.0f}));
   return cameras;
 }
 
