@@ -1,8 +1,10 @@
 // shadelgraph bench graph: declare + compile time of synthetic frame graphs
-// (benchmarks/graph/synthetic_graph.hpp) per size, in two modes:
-//   fresh  - a new RenderGraph and compile() every time (allocations included);
-//   reused - one RenderGraph and PlanCompiler per size, cleared and reused, as
-//            a frame loop does.
+// (benchmarks/graph/synthetic_graph.hpp) per size, in three modes:
+//   fresh     - a new RenderGraph and compile() every time (allocations included);
+//   reused    - one RenderGraph and PlanCompiler per size, cleared and reused, as
+//               a frame loop does, each call a different graph (a full compile);
+//   unchanged - one RenderGraph and PlanCompiler per graph: a frame loop whose
+//               frame did not change (declared again, compared, plan reused).
 // Every round times each (size, mode, graph) once, in an order rotated from
 // round to round, after one untimed warm-up round. Distinct graphs matter: a
 // CPU that compiles one graph back to back learns it (branches, caches), and
@@ -10,6 +12,7 @@
 #include "bench_graph.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <chrono>
 #include <cstdio>
 #include <sstream>
@@ -27,9 +30,10 @@
 namespace sg::app {
 namespace {
 
-enum class Mode { Fresh, Reused };
-constexpr Mode kModes[] = {Mode::Fresh, Mode::Reused};
-const char* modeName(Mode m) { return m == Mode::Fresh ? "fresh" : "reused"; }
+enum class Mode { Fresh, Reused, Unchanged };
+constexpr Mode kModes[] = {Mode::Fresh, Mode::Reused, Mode::Unchanged};
+constexpr std::size_t kModeCount = std::size(kModes);
+const char* modeName(Mode m) { return m == Mode::Fresh ? "fresh" : m == Mode::Reused ? "reused" : "unchanged"; }
 
 // The render graph's cost targets (issue 14): 100 passes in at most 50 us, 1000 in at most 10x that.
 constexpr double kTargetMicrosecondsAt100 = 50.0;
@@ -40,12 +44,15 @@ struct SizeRun {
   std::vector<graph::SyntheticGraph> graphs;
   graph::RenderGraph reusedGraph;
   graph::PlanCompiler compiler;
-  std::size_t keptPasses = 0;           // summed over the graphs, from the warm-up round
-  std::vector<double> microseconds[2];  // per mode, indexed like kModes
+  std::vector<graph::RenderGraph> ownGraphs;  // per graph (Mode::Unchanged)
+  std::vector<graph::PlanCompiler> ownCompilers;
+  std::size_t keptPasses = 0;                    // summed over the graphs, from the warm-up round
+  std::vector<double> microseconds[kModeCount];  // per mode, indexed like kModes
 };
 
-double declareAndCompile(SizeRun& run, Mode mode, const graph::SyntheticGraph& recipe,
-                         const graph::CompileOptions& options, std::size_t& keptPasses) {
+double declareAndCompile(SizeRun& run, Mode mode, uint32_t g, const graph::CompileOptions& options,
+                         std::size_t& keptPasses) {
+  const graph::SyntheticGraph& recipe = run.graphs[g];
   const auto start = std::chrono::steady_clock::now();
   if (mode == Mode::Fresh) {
     graph::RenderGraph g;
@@ -53,9 +60,11 @@ double declareAndCompile(SizeRun& run, Mode mode, const graph::SyntheticGraph& r
     const graph::CompiledPlan plan = graph::compile(g, options);
     keptPasses = plan.order.size();
   } else {
-    run.reusedGraph.clear();
-    declare(run.reusedGraph, recipe);
-    keptPasses = run.compiler.compile(run.reusedGraph, options).order.size();
+    graph::RenderGraph& graph = mode == Mode::Reused ? run.reusedGraph : run.ownGraphs[g];
+    graph::PlanCompiler& compiler = mode == Mode::Reused ? run.compiler : run.ownCompilers[g];
+    graph.clear();
+    declare(graph, recipe);
+    keptPasses = compiler.compile(graph, options).order.size();
   }
   return std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
 }
@@ -84,20 +93,22 @@ nlohmann::json measureGraphCompile(const GraphBenchArgs& args) {
   for (std::size_t s = 0; s < runs.size(); ++s) {
     runs[s].passes = args.passes[s];
     for (uint32_t g = 0; g < args.graphs; ++g) runs[s].graphs.push_back(graph::makeSyntheticGraph(args.passes[s], 42 + g));
+    runs[s].ownGraphs.resize(args.graphs);
+    runs[s].ownCompilers.resize(args.graphs);
   }
 
   // (size, mode) configurations, alternated; round 0 is the warm-up.
-  const std::size_t configs = runs.size() * 2;
+  const std::size_t configs = runs.size() * kModeCount;
   for (uint32_t round = 0; round <= args.repetitions; ++round) {
     for (uint32_t g = 0; g < args.graphs; ++g) {
       for (std::size_t i = 0; i < configs; ++i) {
         const std::size_t c = (i + round + g) % configs;
-        SizeRun& run = runs[c / 2];
-        const Mode mode = kModes[c % 2];
+        SizeRun& run = runs[c / kModeCount];
+        const Mode mode = kModes[c % kModeCount];
         std::size_t kept = 0;
-        const double us = declareAndCompile(run, mode, run.graphs[g], options, kept);
+        const double us = declareAndCompile(run, mode, g, options, kept);
         if (round == 0 && mode == Mode::Fresh) run.keptPasses += kept;
-        if (round > 0) run.microseconds[c % 2].push_back(us);
+        if (round > 0) run.microseconds[c % kModeCount].push_back(us);
       }
     }
   }
@@ -133,7 +144,7 @@ void runGraphBench(const GraphBenchArgs& args, const std::filesystem::path& out)
   std::filesystem::create_directories(out);
   const nlohmann::json& sizes = measured["sizes"];
   const nlohmann::json& ratios = measured["ratios"];
-  // Each target judged per mode: {"fresh": {"value", "met"}, "reused": {...}}.
+  // Each target judged per mode: {"fresh": {"value", "met"}, "reused": {...}, "unchanged": {...}}.
   nlohmann::json targets = nlohmann::json::object();
   const auto judge = [&](const char* name, auto value, auto met) {
     for (const Mode mode : kModes) {
@@ -175,23 +186,30 @@ void runGraphBench(const GraphBenchArgs& args, const std::filesystem::path& out)
 
   std::printf("declare + compile, medians of %u rounds x %u distinct graphs per size, sizes alternated\n", args.repetitions,
               args.graphs);
-  std::printf("%7s %6s %12s %12s %12s %12s\n", "passes", "kept", "fresh us", "reused us", "fresh ns/p", "reused ns/p");
+  std::printf("%7s %6s %12s %12s %12s %12s %12s %12s\n", "passes", "kept", "fresh us", "reused us", "unchanged us",
+              "fresh ns/p", "reused ns/p", "unchgd ns/p");
   for (const auto& s : sizes)
-    std::printf("%7u %6.0f %12.1f %12.1f %12.0f %12.0f\n", s["passes"].get<uint32_t>(),
+    std::printf("%7u %6.0f %12.1f %12.1f %12.1f %12.0f %12.0f %12.0f\n", s["passes"].get<uint32_t>(),
                 s["kept_passes_mean"].get<double>(), s["fresh"]["median_us"].get<double>(),
-                s["reused"]["median_us"].get<double>(), s["fresh"]["per_pass_ns"].get<double>(),
-                s["reused"]["per_pass_ns"].get<double>());
+                s["reused"]["median_us"].get<double>(), s["unchanged"]["median_us"].get<double>(),
+                s["fresh"]["per_pass_ns"].get<double>(), s["reused"]["per_pass_ns"].get<double>(),
+                s["unchanged"]["per_pass_ns"].get<double>());
   for (const auto& r : ratios)
-    std::printf("%u/%u passes: %.1fx fresh, %.1fx reused\n", r["passes"].get<uint32_t>(), r["over"].get<uint32_t>(),
-                r["fresh"].get<double>(), r["reused"].get<double>());
+    std::printf("%u/%u passes: %.1fx fresh, %.1fx reused, %.1fx unchanged\n", r["passes"].get<uint32_t>(),
+                r["over"].get<uint32_t>(), r["fresh"].get<double>(), r["reused"].get<double>(),
+                r["unchanged"].get<double>());
   for (const auto& [name, label, unit] :
        {std::tuple{"100_passes_at_most_50_us", "100 passes <= 50 us", " us"},
         std::tuple{"1000_over_100_at_most_10", "1000 passes <= 10x 100 passes", "x"}}) {
     if (!targets.contains(name)) continue;
     const auto& t = targets[name];
-    std::printf("target: %s: fresh %.1f%s (%s), reused %.1f%s (%s)\n", label, t["fresh"]["value"].get<double>(),
-                unit, t["fresh"]["met"].get<bool>() ? "met" : "NOT met", t["reused"]["value"].get<double>(), unit,
-                t["reused"]["met"].get<bool>() ? "met" : "NOT met");
+    std::printf("target: %s:", label);
+    for (const Mode mode : kModes) {
+      const auto& m = t[modeName(mode)];
+      std::printf(" %s %.1f%s (%s)", modeName(mode), m["value"].get<double>(), unit,
+                  m["met"].get<bool>() ? "met" : "NOT met");
+    }
+    std::printf("\n");
   }
   std::printf("wrote %s/graph.json and graph.csv\n", out.c_str());
 }

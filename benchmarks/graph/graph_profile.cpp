@@ -1,12 +1,13 @@
 // A fixed declare + compile workload for callgrind, so that instruction counts
 // are repeatable from run to run:
 //   valgrind --tool=callgrind --toggle-collect='sg::graph::profiledRounds*'
-//            build/benchmarks/graph/graph_profile [passes] [rounds] [fresh]
+//            build/benchmarks/graph/graph_profile [passes] [rounds] [fresh|unchanged]
 // One PlanCompiler and RenderGraph are reused (as a frame loop does), 8
 // distinct graphs compiled in turn; one untimed warm-up round first, so that
 // only the steady state is collected. Instructions per compile: the collected
 // total / (rounds x 8). Another argument "fresh" compiles with a new graph and
-// compiler every time (allocations included).
+// compiler every time (allocations included); "unchanged" gives every graph its
+// own RenderGraph and PlanCompiler, so each is declared again and its plan reused.
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -19,20 +20,29 @@ namespace sg::graph {
 
 constexpr uint32_t kGraphs = 8;
 
+enum class Mode { Reused, Fresh, Unchanged };
+
+// The graphs and compilers a mode compiles with: one shared (reused), or one per recipe (unchanged).
+struct Workload {
+  Mode mode = Mode::Reused;
+  std::vector<RenderGraph> graphs = std::vector<RenderGraph>(kGraphs);
+  std::vector<PlanCompiler> compilers = std::vector<PlanCompiler>(kGraphs);
+};
+
 [[gnu::always_inline]] inline std::size_t runRounds(const std::vector<SyntheticGraph>& recipes, uint32_t rounds,
-                                                    bool fresh, RenderGraph& graph, PlanCompiler& compiler,
-                                                    const CompileOptions& options) {
+                                                    Workload& work, const CompileOptions& options) {
   std::size_t kept = 0;
   for (uint32_t round = 0; round < rounds; ++round) {
-    for (const SyntheticGraph& recipe : recipes) {
-      if (fresh) {
+    for (std::size_t i = 0; i < recipes.size(); ++i) {
+      if (work.mode == Mode::Fresh) {
         RenderGraph g;
-        declare(g, recipe);
+        declare(g, recipes[i]);
         kept += compile(g, options).order.size();
       } else {
-        graph.clear();
-        declare(graph, recipe);
-        kept += compiler.compile(graph, options).order.size();
+        const std::size_t own = work.mode == Mode::Unchanged ? i : 0;
+        work.graphs[own].clear();
+        declare(work.graphs[own], recipes[i]);
+        kept += work.compilers[own].compile(work.graphs[own], options).order.size();
       }
     }
   }
@@ -40,34 +50,35 @@ constexpr uint32_t kGraphs = 8;
 }
 
 // Two out-of-line copies: callgrind collects only inside the second (--toggle-collect).
-[[gnu::noinline]] std::size_t warmUpRounds(const std::vector<SyntheticGraph>& recipes, bool fresh, RenderGraph& graph,
-                                           PlanCompiler& compiler, const CompileOptions& options) {
-  return runRounds(recipes, 1, fresh, graph, compiler, options);
+[[gnu::noinline]] std::size_t warmUpRounds(const std::vector<SyntheticGraph>& recipes, Workload& work,
+                                           const CompileOptions& options) {
+  return runRounds(recipes, 1, work, options);
 }
-[[gnu::noinline]] std::size_t profiledRounds(const std::vector<SyntheticGraph>& recipes, uint32_t rounds, bool fresh,
-                                             RenderGraph& graph, PlanCompiler& compiler, const CompileOptions& options) {
-  return runRounds(recipes, rounds, fresh, graph, compiler, options);
+[[gnu::noinline]] std::size_t profiledRounds(const std::vector<SyntheticGraph>& recipes, uint32_t rounds,
+                                             Workload& work, const CompileOptions& options) {
+  return runRounds(recipes, rounds, work, options);
 }
 
 }  // namespace sg::graph
 
 int main(int argc, char** argv) {
   using namespace sg::graph;
-  const uint32_t passes = argc > 1 ? static_cast<uint32_t>(std::strtoul(argv[1], nullptr, 10)) : 100;
+  uint32_t passes = argc > 1 ? static_cast<uint32_t>(std::strtoul(argv[1], nullptr, 10)) : 100;
   const uint32_t rounds = argc > 2 ? static_cast<uint32_t>(std::strtoul(argv[2], nullptr, 10)) : 10;
-  const bool fresh = argc > 3 && std::strcmp(argv[3], "fresh") == 0;
+  Workload work;
+  const char* modeName = argc > 3 ? argv[3] : "reused";
+  if (std::strcmp(modeName, "fresh") == 0) work.mode = Mode::Fresh;
+  else if (std::strcmp(modeName, "unchanged") == 0) work.mode = Mode::Unchanged;
+  else if (std::strcmp(modeName, "reused") != 0) passes = 0;
   if (passes < 2 || rounds == 0) {
-    std::fprintf(stderr, "usage: graph_profile [passes >= 2] [rounds >= 1] [fresh]\n");
+    std::fprintf(stderr, "usage: graph_profile [passes >= 2] [rounds >= 1] [reused|fresh|unchanged]\n");
     return 1;
   }
   std::vector<SyntheticGraph> recipes;
   for (uint32_t g = 0; g < kGraphs; ++g) recipes.push_back(makeSyntheticGraph(passes, 42 + g));
   const CompileOptions options = syntheticCompileOptions();
-  RenderGraph graph;
-  PlanCompiler compiler;
-  warmUpRounds(recipes, fresh, graph, compiler, options);
-  const std::size_t kept = profiledRounds(recipes, rounds, fresh, graph, compiler, options);
-  std::printf("%u passes, %u rounds x %u graphs (%s), %zu kept passes\n", passes, rounds, kGraphs,
-              fresh ? "fresh" : "reused", kept);
+  warmUpRounds(recipes, work, options);
+  const std::size_t kept = profiledRounds(recipes, rounds, work, options);
+  std::printf("%u passes, %u rounds x %u graphs (%s), %zu kept passes\n", passes, rounds, kGraphs, modeName, kept);
   return 0;
 }

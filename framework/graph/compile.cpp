@@ -56,12 +56,16 @@ void lendTo(std::vector<T>& storage, std::vector<T>& output, Step&& step) {
 }  // namespace
 
 CompiledPlan compile(const RenderGraph& graph, const CompileOptions& options) {
-  PlanCompiler compiler;
+  PlanCompiler compiler(/*keepInputs=*/false);
   compiler.compile(graph, options);
   return compiler.takePlan();
 }
 
 const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const CompileOptions& options) {
+  reused_ = compiled_.matches(graph.declaration(), options);
+  if (reused_) return plan_;
+  compiled_.forget();  // until this compile succeeds (validate may throw)
+
   indexVersions(graph, versions_);
   // One dependency graph over all passes: validate() looks for cycles in it,
   // and the later steps ignore the edges of culled passes.
@@ -147,6 +151,7 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
   for (FinalBarrier& f : plan.finalBarriers) {
     if (f.afterPass.valid()) f.batch = schedule_.passBatch[f.afterPass.index];
   }
+  if (keepInputs_) compiled_.remember(declared, options);
   return plan;
 }
 

@@ -6,6 +6,7 @@
 #include <shadelgraph/graph/cross_queue_order.hpp>
 #include <shadelgraph/graph/dependencies.hpp>
 #include <shadelgraph/graph/place_transients.hpp>
+#include <shadelgraph/graph/plan_inputs.hpp>
 #include <shadelgraph/graph/plan_barriers.hpp>
 #include <shadelgraph/graph/plan_resources.hpp>
 #include <shadelgraph/graph/render_graph.hpp>
@@ -22,14 +23,28 @@ CompiledPlan compile(const RenderGraph& graph, const CompileOptions& options = {
 
 // The same, frame after frame: keeps the plan and every step's output between
 // calls and reuses their memory, so a steady-state recompile allocates (almost)
-// nothing. The plan returned stays valid until the next compile().
+// nothing. A graph that declares exactly what the last compile saw (callbacks
+// aside) with the same options gets the last plan back without compiling: a
+// frame loop whose frame did not change pays for declaring and comparing only.
+// The plan returned stays valid until the next compile().
 class PlanCompiler {
  public:
+  // keepInputs false: never compare or keep the inputs (one-off compiles).
+  explicit PlanCompiler(bool keepInputs = true) : keepInputs_(keepInputs) {}
+
   const CompiledPlan& compile(const RenderGraph& graph, const CompileOptions& options = {});
   const CompiledPlan& plan() const { return plan_; }
-  CompiledPlan takePlan() { return std::move(plan_); }
+  CompiledPlan takePlan() {
+    compiled_.forget();
+    return std::move(plan_);
+  }
+  // Whether the last compile() returned the plan before it unchanged.
+  bool reusedLastPlan() const { return reused_; }
 
  private:
+  bool keepInputs_ = true;
+  PlanInputs compiled_;  // what plan_ was compiled from
+  bool reused_ = false;
   VersionTable versions_;
   DependencyGraph deps_;
   std::vector<bool> culled_;

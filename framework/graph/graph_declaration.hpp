@@ -31,6 +31,7 @@ struct ResourceAccess {
   Layout layout = Layout::Undefined;             // meaningless for buffers
   PipelineStage stages = PipelineStage::None;
   AccessFlag accessFlags = AccessFlag::None;
+  friend bool operator==(const ResourceAccess&, const ResourceAccess&) = default;
 };
 static_assert(sizeof(ResourceAccess) == 16, "the compile steps stream these; keep them small");
 
@@ -47,6 +48,7 @@ struct ResourceDecl {
   ResourceState initialState;
   ResourceState finalState;
   std::string name;
+  friend bool operator==(const ResourceDecl&, const ResourceDecl&) = default;
 };
 
 // What the compile steps look up about a resource on every access: a copy of
@@ -66,6 +68,7 @@ struct PassDecl {
   QueueClass queue = QueueClass::Graphics;
   PassKind kind = PassKind::Raster;
   bool sideEffect = false;
+  friend bool operator==(const PassDecl&, const PassDecl&) = default;
 };
 
 // A frame's declaration as plain data: what RenderGraph builds and the compile

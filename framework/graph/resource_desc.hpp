@@ -21,6 +21,7 @@ struct Size {
   static constexpr Size absolute(uint32_t w, uint32_t h) { return {Mode::Absolute, w, h, 0.0f, 0.0f}; }
   static constexpr Size relative(float scale) { return {Mode::Relative, 0, 0, scale, scale}; }
   static constexpr Size relative(float sx, float sy) { return {Mode::Relative, 0, 0, sx, sy}; }
+  friend bool operator==(const Size&, const Size&) = default;
 };
 
 struct ImageDesc {
@@ -30,10 +31,12 @@ struct ImageDesc {
   uint32_t layers = 1;
   uint32_t mipLevels = 1;
   uint32_t samples = 1;
+  friend bool operator==(const ImageDesc&, const ImageDesc&) = default;
 };
 
 struct BufferDesc {
   uint64_t size = 0;  // bytes
+  friend bool operator==(const BufferDesc&, const BufferDesc&) = default;
 };
 
 enum class ResourceKind : uint8_t {

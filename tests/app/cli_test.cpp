@@ -395,7 +395,7 @@ TEST(Cli, BenchGraphWritesMediansAndRatiosPerSize) {
     EXPECT_GT(size["kept_passes_mean"].get<double>(), 0.0);
     EXPECT_LE(size["kept_passes_mean"].get<double>(), passes);
     EXPECT_EQ(size["samples"], 2 * 3) << "graphs x repetitions";
-    for (const char* mode : {"fresh", "reused"}) {
+    for (const char* mode : {"fresh", "reused", "unchanged"}) {
       const auto& m = size[mode];
       EXPECT_GT(m["median_us"].get<double>(), 0.0) << mode;
       EXPECT_LE(m["p10_us"].get<double>(), m["median_us"].get<double>()) << mode;
@@ -405,7 +405,7 @@ TEST(Cli, BenchGraphWritesMediansAndRatiosPerSize) {
   ASSERT_EQ(json["ratios"].size(), 1u);
   EXPECT_EQ(json["ratios"][0]["passes"], 100);
   EXPECT_EQ(json["ratios"][0]["over"], 10);
-  for (const char* mode : {"fresh", "reused"}) {
+  for (const char* mode : {"fresh", "reused", "unchanged"}) {
     const auto& target = json["targets"]["100_passes_at_most_50_us"][mode];
     EXPECT_EQ(target["value"].get<double>(), json["sizes"][1][mode]["median_us"].get<double>()) << mode;
     EXPECT_EQ(target["met"].get<bool>(), target["value"].get<double>() <= 50.0) << mode;
