@@ -86,6 +86,7 @@ void writeStats(const std::string& path, const AppSession& session, const render
                        {"triangles", session.renderer->gpuScene().triangleCount()},
                        {"draws", session.renderer->gpuScene().draws().size()},
                        {"transient_bytes", frame.transientBytes},
+                       {"plan_reused", frame.planReused},
                        {"memory_bytes", memoryJson},
                        // Decoupled objects are draws (one per primitive): the draws not decoupled this frame.
                        {"objects_forward", session.renderer->gpuScene().draws().size() - d.objects},

@@ -67,6 +67,8 @@ class GraphExecutor {
   // are created from a first compile's resolved descriptions and queried. The
   // plan stays valid until the next compile(), whose memory it reuses.
   const graph::CompiledPlan& compile(const graph::RenderGraph& graph, graph::CompileOptions options);
+  // Whether the last compile() handed back the plan before it (the frame declared the same graph).
+  bool reusedLastPlan() const { return draftCompiler_.reusedLastPlan() && planCompiler_.reusedLastPlan(); }
   // Records, submits and waits for one frame.
   FrameTimings execute(const graph::RenderGraph& graph, const graph::CompiledPlan& plan);
 

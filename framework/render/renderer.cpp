@@ -252,6 +252,7 @@ FrameResult Renderer::render(const RenderSettings& settings) {
                                                       .enableAliasing = settings.aliasing});
   executor_.bindImage(frame->output, *output_);
   FrameResult result;
+  result.planReused = executor_.reusedLastPlan();
   if (settings.keepPlan) result.plan = plan;
   result.timings = executor_.execute(frame->graph, plan);
   result.timings.frameMs = timer.elapsedMs();

@@ -49,6 +49,7 @@ struct FrameResult {
   gpu::HostImage image;
   gpu::FrameTimings timings;
   uint64_t transientBytes = 0;
+  bool planReused = false;                  // the graph was the last frame's: its plan was not compiled again
   std::optional<graph::CompiledPlan> plan;  // with RenderSettings::keepPlan
   // With RenderSettings::pick: whether a pass of the frame wrote the pick
   // resource (plugin::kPickResource), and the scene instance it found there.

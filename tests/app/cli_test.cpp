@@ -259,6 +259,23 @@ TEST(Cli, DecoupledStatsHaveTheDocumentedKeys) {
     EXPECT_TRUE(json["pass_ms"].contains(pass)) << pass;
 }
 
+TEST(Cli, AFrameThatDeclaresLastFramesGraphReusesItsPlan) {
+  // The first frame compiles; a still scene's later frames declare the same
+  // graph, and the executor's compilers hand back the plan (plan_reused).
+  const auto stats = tempDir() / "reuse.json";
+  for (const char* mode : {"forward", "decoupled"}) {
+    for (const int frames : {1, 3}) {
+      auto r = run(std::string("render --mode ") + mode + " --size 96x64 --frames " + std::to_string(frames) +
+                   " -o /dev/null --stats " + stats.string());
+      ASSERT_EQ(r.exitCode, 0) << r.output;
+      std::ifstream in(stats);
+      const auto json = nlohmann::json::parse(in);
+      EXPECT_EQ(json["plan_reused"].get<bool>(), frames > 1) << mode << ", " << frames << " frames";
+      EXPECT_EQ(json["composite_misses"], 0) << mode;
+    }
+  }
+}
+
 std::set<std::string> passNames(const std::string& args) {
   auto r = run("graph --json --size 64x64 " + args);
   EXPECT_EQ(r.exitCode, 0) << r.output;
