@@ -8,11 +8,25 @@
 namespace sg::passes {
 namespace {
 
-bool isHalfFloat(graph::Format format) {
-  return format == graph::Format::R16F || format == graph::Format::RG16F || format == graph::Format::RGBA16F;
+// The integer image format of a half-float layer's texel bits (gpu::packedStorageFormat's) and the
+// packing of a value into it: the halves' bits as the half-float store would write them.
+struct PackedHalves {
+  const char* format;
+  const char* pack;
+};
+
+PackedHalves packedHalvesOf(graph::Format format) {
+  switch (format) {
+    case graph::Format::R16F: return {"r16ui", "uvec4(packHalf2x16(vec2(v.x, 0.0)), 0u, 0u, 0u)"};
+    case graph::Format::RG16F: return {"r32ui", "uvec4(packHalf2x16(v.xy), 0u, 0u, 0u)"};
+    case graph::Format::RGBA16F: return {"rg32ui", "uvec4(packHalf2x16(v.xy), packHalf2x16(v.zw), 0u, 0u)"};
+    default: return {nullptr, nullptr};
+  }
 }
 
 }  // namespace
+
+bool storesPackedHalves(const plugin::MaterialLayer& layer) { return packedHalvesOf(layer.format).format != nullptr; }
 
 gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
   render::checkFrameInputCount(layer.frameInputs.size(), "material layer '" + layer.name + "'", layer.plugin);
@@ -24,9 +38,22 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
       << "// Generated: decoupled variant of material layer '" << layer.name << "' (plugin '" << layer.plugin
       << "').\n"
       << "#define SG_DECOUPLED 1\n"
-      << "#include <passes/layer-shade/shadel_context.glsl>\n"
-      << "layout(set = 0, binding = " << kBindLayerOutput << ", " << render::glslImageFormat(layer.format)
-      << ") uniform writeonly image2D sgLayerOutput;\n";
+      << "#include <passes/layer-shade/shadel_context.glsl>\n";
+  const PackedHalves packed = packedHalvesOf(layer.format);
+  if (packed.format) {
+    // Half floats overflow to Inf above 65,504 on some devices (lavapipe saturates): clamp, so
+    // composite's filter never weighs an Inf (Inf x 0 = NaN).
+    out << "layout(set = 0, binding = " << kBindLayerOutput << ", " << packed.format
+        << ") uniform writeonly uimage2D sgLayerOutput;\n"
+        << "void sgStoreLayer(ivec2 texel, vec4 value) {\n"
+        << "  vec4 v = clamp(value, -65504.0, 65504.0);\n"
+        << "  imageStore(sgLayerOutput, texel, " << packed.pack << ");\n"
+        << "}\n";
+  } else {
+    out << "layout(set = 0, binding = " << kBindLayerOutput << ", " << render::glslImageFormat(layer.format)
+        << ") uniform writeonly image2D sgLayerOutput;\n"
+        << "void sgStoreLayer(ivec2 texel, vec4 value) { imageStore(sgLayerOutput, texel, value); }\n";
+  }
   for (size_t i = 0; i < layer.reads.size(); ++i) {
     const std::string name = plugin::glslName(layer.reads[i].layer);
     out << "layout(set = 0, binding = " << kBindLayerInputs + i << ") uniform sampler2D sgLayerImage_" << name
@@ -83,11 +110,7 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
   } else {
     out << "  if (onSurface) value = " << layer.function << "(s);\n";
   }
-  out
-      // Half floats overflow to Inf above 65,504 on some devices (lavapipe saturates): clamp, so
-      // composite's filter never weighs an Inf (Inf x 0 = NaN).
-      << "  imageStore(sgLayerOutput, sgShadel.target, "
-      << (isHalfFloat(layer.format) ? "clamp(value, -65504.0, 65504.0)" : "value") << ");\n";
+  out << "  sgStoreLayer(sgShadel.target, value);\n";
   if (layer.keepsValues()) {
     // One atomic per workgroup, not per shadel.
     out << "  if (gl_LocalInvocationIndex == 0u) { sgReusedCount = 0u; sgComputedCount = 0u; }\n"
