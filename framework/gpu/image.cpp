@@ -19,23 +19,6 @@ VkImageAspectFlags aspectOf(VkFormat f) {
   return isDepthFormat(f) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
 }
 
-VkFormat packedStorageFormat(VkFormat f) {
-  switch (f) {  // same size, so the same compatibility class (a view may reinterpret the texel)
-    case VK_FORMAT_R16G16B16A16_SFLOAT: return VK_FORMAT_R32G32_UINT;
-    case VK_FORMAT_R16G16_SFLOAT: return VK_FORMAT_R32_UINT;
-    case VK_FORMAT_R16_SFLOAT: return VK_FORMAT_R16_UINT;
-    default: return VK_FORMAT_UNDEFINED;
-  }
-}
-
-namespace {
-
-VkFormat packedFormatOf(const ImageDesc& desc) {
-  return (desc.usage & VK_IMAGE_USAGE_STORAGE_BIT) ? packedStorageFormat(desc.format) : VK_FORMAT_UNDEFINED;
-}
-
-}  // namespace
-
 Image::Image(const Context& context, MemoryAllocator& memory, const ImageDesc& desc)
     : device_(context.device()), memory_(&memory), desc_(desc) {
   createImage(context);
@@ -59,14 +42,6 @@ void Image::createImage(const Context& context) {
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = desc_.usage;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  const VkFormat viewFormats[] = {desc_.format, packedFormatOf(desc_)};
-  VkImageFormatListCreateInfo formatList{VK_STRUCTURE_TYPE_IMAGE_FORMAT_LIST_CREATE_INFO};
-  if (viewFormats[1] != VK_FORMAT_UNDEFINED) {
-    info.flags |= VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT;
-    formatList.viewFormatCount = 2;
-    formatList.pViewFormats = viewFormats;
-    info.pNext = &formatList;
-  }
   const std::vector<uint32_t> families = context.queueFamilies();
   if (desc_.concurrent && families.size() > 1) {
     info.sharingMode = VK_SHARING_MODE_CONCURRENT;
@@ -95,13 +70,6 @@ void Image::createView() {
   info.format = desc_.format;
   info.subresourceRange = {aspectOf(desc_.format), 0, desc_.mipLevels, 0, 1};
   SG_VK(vkCreateImageView(device_, &info, nullptr, &view_));
-  if (const VkFormat packed = packedFormatOf(desc_); packed != VK_FORMAT_UNDEFINED) {
-    VkImageViewUsageCreateInfo usage{VK_STRUCTURE_TYPE_IMAGE_VIEW_USAGE_CREATE_INFO};
-    usage.usage = VK_IMAGE_USAGE_STORAGE_BIT;  // the image's other usages need not hold for the integer format
-    info.format = packed;
-    info.pNext = &usage;
-    SG_VK(vkCreateImageView(device_, &info, nullptr, &packedView_));
-  }
 }
 
 Image::~Image() { release(); }
@@ -116,7 +84,6 @@ Image& Image::operator=(Image&& o) noexcept {
     desc_ = std::move(o.desc_);
     image_ = std::exchange(o.image_, VK_NULL_HANDLE);
     view_ = std::exchange(o.view_, VK_NULL_HANDLE);
-    packedView_ = std::exchange(o.packedView_, VK_NULL_HANDLE);
     allocation_ = std::exchange(o.allocation_, Allocation{});
   }
   return *this;
@@ -124,11 +91,9 @@ Image& Image::operator=(Image&& o) noexcept {
 
 void Image::release() {
   if (view_) vkDestroyImageView(device_, view_, nullptr);
-  if (packedView_) vkDestroyImageView(device_, packedView_, nullptr);
   if (image_) vkDestroyImage(device_, image_, nullptr);
   if (memory_) memory_->free(allocation_);
   view_ = VK_NULL_HANDLE;
-  packedView_ = VK_NULL_HANDLE;
   image_ = VK_NULL_HANDLE;
 }
 

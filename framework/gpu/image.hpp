@@ -18,12 +18,6 @@ struct ImageDesc {
 
 bool isDepthFormat(VkFormat format);
 VkImageAspectFlags aspectOf(VkFormat format);
-// The unsigned-integer format of a half-float format's texel bits (rgba16f ->
-// rg32ui), or VK_FORMAT_UNDEFINED. A storage image of a half-float format also
-// gets a view of this format (Image::packedStorageView): a shader that packs
-// the halves itself (packHalf2x16) stores the bits unconverted, where CPU
-// devices (lavapipe) convert every lane's texel in the store.
-VkFormat packedStorageFormat(VkFormat format);
 
 // A 2D VkImage with a view of all its mips. Either owns a sub-allocation
 // (the allocator constructor) or is bound by someone else, as the render
@@ -43,8 +37,6 @@ class Image {
 
   VkImage handle() const { return image_; }
   VkImageView view() const { return view_; }
-  // A storage view of the texel bits (packedStorageFormat), or VK_NULL_HANDLE.
-  VkImageView packedStorageView() const { return packedView_; }
   const ImageDesc& desc() const { return desc_; }
   VkExtent2D extent() const { return {desc_.width, desc_.height}; }
   explicit operator bool() const { return image_ != VK_NULL_HANDLE; }
@@ -58,7 +50,6 @@ class Image {
   ImageDesc desc_;
   VkImage image_ = VK_NULL_HANDLE;
   VkImageView view_ = VK_NULL_HANDLE;
-  VkImageView packedView_ = VK_NULL_HANDLE;
   Allocation allocation_;
 };
 

@@ -1,7 +1,6 @@
 #include "layer_shade.hpp"
 
 #include <map>
-#include <stdexcept>
 
 #include <shadelgraph/gpu/pass_context.hpp>
 #include <shadelgraph/render/light_binding.hpp>
@@ -98,12 +97,8 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
     for (size_t stepIndex = 0; stepIndex < steps.size(); ++stepIndex) {
       const LayerShadeStep& step = steps[stepIndex];
       const auto& pipeline = layerPipeline(ctx, frame, *step.layer);
-      const gpu::Image& output = ctx.image(step.output);
-      const VkImageView outputView = storesPackedHalves(*step.layer) ? output.packedStorageView() : output.view();
-      if (outputView == VK_NULL_HANDLE)
-        throw std::logic_error("layer '" + step.layer->name + "': its image has no view of its texel bits");
       std::vector<gpu::DescriptorWrite> writes{
-          {kBindLayerOutput, gpu::ImageBinding{outputView, VK_IMAGE_LAYOUT_GENERAL, VK_NULL_HANDLE}},
+          {kBindLayerOutput, gpu::ImageBinding{ctx.image(step.output).view(), VK_IMAGE_LAYOUT_GENERAL, VK_NULL_HANDLE}},
           render::shadowMapsWrite(ctx, frame.view)};
       for (const auto& w : render::environmentWrites(ctx, frame.view)) writes.push_back(w);
       for (const auto& write : render::lightWrites(ctx, frame.view)) writes.push_back(write);

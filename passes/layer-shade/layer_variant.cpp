@@ -8,25 +8,11 @@
 namespace sg::passes {
 namespace {
 
-// The integer image format of a half-float layer's texel bits (gpu::packedStorageFormat's) and the
-// packing of a value into it: the halves' bits as the half-float store would write them.
-struct PackedHalves {
-  const char* format;
-  const char* pack;
-};
-
-PackedHalves packedHalvesOf(graph::Format format) {
-  switch (format) {
-    case graph::Format::R16F: return {"r16ui", "uvec4(packHalf2x16(vec2(v.x, 0.0)), 0u, 0u, 0u)"};
-    case graph::Format::RG16F: return {"r32ui", "uvec4(packHalf2x16(v.xy), 0u, 0u, 0u)"};
-    case graph::Format::RGBA16F: return {"rg32ui", "uvec4(packHalf2x16(v.xy), packHalf2x16(v.zw), 0u, 0u)"};
-    default: return {nullptr, nullptr};
-  }
+bool isHalfFloat(graph::Format format) {
+  return format == graph::Format::R16F || format == graph::Format::RG16F || format == graph::Format::RGBA16F;
 }
 
 }  // namespace
-
-bool storesPackedHalves(const plugin::MaterialLayer& layer) { return packedHalvesOf(layer.format).format != nullptr; }
 
 gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
   render::checkFrameInputCount(layer.frameInputs.size(), "material layer '" + layer.name + "'", layer.plugin);
@@ -38,22 +24,9 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
       << "// Generated: decoupled variant of material layer '" << layer.name << "' (plugin '" << layer.plugin
       << "').\n"
       << "#define SG_DECOUPLED 1\n"
-      << "#include <passes/layer-shade/shadel_context.glsl>\n";
-  const PackedHalves packed = packedHalvesOf(layer.format);
-  if (packed.format) {
-    // Half floats overflow to Inf above 65,504 on some devices (lavapipe saturates): clamp, so
-    // composite's filter never weighs an Inf (Inf x 0 = NaN).
-    out << "layout(set = 0, binding = " << kBindLayerOutput << ", " << packed.format
-        << ") uniform writeonly uimage2D sgLayerOutput;\n"
-        << "void sgStoreLayer(ivec2 texel, vec4 value) {\n"
-        << "  vec4 v = clamp(value, -65504.0, 65504.0);\n"
-        << "  imageStore(sgLayerOutput, texel, " << packed.pack << ");\n"
-        << "}\n";
-  } else {
-    out << "layout(set = 0, binding = " << kBindLayerOutput << ", " << render::glslImageFormat(layer.format)
-        << ") uniform writeonly image2D sgLayerOutput;\n"
-        << "void sgStoreLayer(ivec2 texel, vec4 value) { imageStore(sgLayerOutput, texel, value); }\n";
-  }
+      << "#include <passes/layer-shade/shadel_context.glsl>\n"
+      << "layout(set = 0, binding = " << kBindLayerOutput << ", " << render::glslImageFormat(layer.format)
+      << ") uniform writeonly image2D sgLayerOutput;\n";
   for (size_t i = 0; i < layer.reads.size(); ++i) {
     const std::string name = plugin::glslName(layer.reads[i].layer);
     out << "layout(set = 0, binding = " << kBindLayerInputs + i << ") uniform sampler2D sgLayerImage_" << name
@@ -89,7 +62,7 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
       << "void main() {\n"
       << "  if (!sgWorkGroupInList()) return;  // the surplus of a dispatch's last row\n"
       << "  SgChunkSetup sgChunk = sgChunkSetup();\n"
-      << "  uint sgReused = 0u, sgComputed = 0u;\n";
+      << "  uint sgReused = 0u, sgComputed = 0u;  // shadels kept from last frame, and computed\n";
   if (!layer.keepsValues()) {
     // Only the shadels composite reads (shadel masks; never with kept values,
     // whose stored shadels may be served later). The last layer counts those it leaves out.
@@ -114,7 +87,11 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
   } else {
     out << "    if (onSurface) value = " << layer.function << "(s);\n";
   }
-  out << "    sgStoreLayer(sgShadel.target, value);\n";
+  out
+      // Half floats overflow to Inf above 65,504 on some devices (lavapipe saturates): clamp, so
+      // composite's filter never weighs an Inf (Inf x 0 = NaN).
+      << "    imageStore(sgLayerOutput, sgShadel.target, "
+      << (isHalfFloat(layer.format) ? "clamp(value, -65504.0, 65504.0)" : "value") << ");\n";
   if (layer.keepsValues()) {
     out << "    if (onSurface && sgReusedPrevious) ++sgReused;\n"
         << "    if (onSurface && !sgReusedPrevious) ++sgComputed;\n";

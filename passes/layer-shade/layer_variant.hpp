@@ -10,10 +10,4 @@ namespace sg::passes {
 
 gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer);
 
-// True for half-float layers: the variant packs the halves itself
-// (packHalf2x16) and stores the bits through the image's unsigned-integer
-// view (gpu::Image::packedStorageView). lavapipe converts an rgba16f texel
-// lane by lane in the store.
-bool storesPackedHalves(const plugin::MaterialLayer& layer);
-
 }  // namespace sg::passes

@@ -19,11 +19,11 @@
 #include <framework/shadel/shaders/work.glsl>
 #include <framework/plugin/shaders/material.glsl>
 
-// A workgroup shades one 8x8 chunk: a row of 8 lanes, each invocation the 8
-// shadels of its column, a row at a time (sgShadelRows). The chunk setup
-// (sgChunkSetup) is then read once per chunk, not once per subgroup of a row:
-// lavapipe runs 8 lanes as one subgroup, and those single-lane reads cost as
-// much as the shadels' own ID-map read and store.
+// A workgroup shades one 8x8 chunk with 8 invocations, each the 8 shadels of
+// its column, a row at a time (the loop in the generated main). The chunk
+// setup (sgChunkSetup, its single-lane reads) then runs once per chunk, not
+// once per row: lavapipe runs 8 lanes as one subgroup, and 8 subgroups each
+// repeating it cost debug-triangle-id about half its layer-shade time.
 const uint SG_CHUNK_ROWS_PER_INVOCATION = 8u;
 layout(local_size_x = 8, local_size_y = 1) in;
 
