@@ -24,8 +24,10 @@
 // setup (sgChunkSetup, its single-lane reads) then runs once per chunk, not
 // once per row: lavapipe runs 8 lanes as one subgroup, and 8 subgroups each
 // repeating it cost debug-triangle-id about half its layer-shade time.
-const uint SG_CHUNK_ROWS_PER_INVOCATION = 8u;
-layout(local_size_x = 8, local_size_y = 1) in;
+// On a GPU (32-64 lanes) 8 invocations waste most of a wave: there 1 (an
+// invocation per shadel, 8x8) is the right shape.
+#define SG_CHUNK_ROWS_PER_INVOCATION 8u
+layout(local_size_x = 8, local_size_y = 8u / SG_CHUNK_ROWS_PER_INVOCATION) in;
 
 struct SgVertex {  // render::GpuVertex
   vec3 position;
