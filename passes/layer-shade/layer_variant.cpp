@@ -60,40 +60,49 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
   render::includeLayerSource(out, layer);
   out << "shared uint sgReusedCount, sgComputedCount;\n"
       << "void main() {\n"
-      << "  if (!sgWorkGroupInList()) return;  // the surplus of a dispatch's last row\n";
+      << "  if (!sgWorkGroupInList()) return;  // the surplus of a dispatch's last row\n"
+      << "  SgChunkSetup sgChunk = sgChunkSetup();\n"
+      << "  uint sgReused = 0u, sgComputed = 0u;  // shadels kept from last frame, and computed\n";
   if (!layer.keepsValues()) {
     // Only the shadels composite reads (shadel masks; never with kept values,
     // whose stored shadels may be served later). The last layer counts those it leaves out.
-    out << "  uint64_t sgMask = sgChunkShadelMask();\n"
+    out << "  uint64_t sgMask = sgChunkShadelMask(sgChunk);\n"
         << "  if (sgPush.countSkipped != 0u && gl_LocalInvocationIndex == 0u && sgMask != ~uint64_t(0)) {\n"
         << "    uvec2 sgHalves = unpackUint2x32(sgMask);\n"
         << "    atomicAdd(counters.shadelsSkipped, 64u - uint(bitCount(sgHalves.x) + bitCount(sgHalves.y)));\n"
-        << "  }\n"
-        << "  if (!sgIsChunkMarked(sgMask, gl_LocalInvocationIndex)) return;\n";
+        << "  }\n";
   }
-  out
-      << "  Surface s;\n"
-      << "  bool onSurface = sgBeginShadel(s);\n"
-      << "  vec4 value = vec4(0.0);\n";
+  out << "  for (uint sgRow = sgFirstShadelRow(); sgRow < sgFirstShadelRow() + SG_CHUNK_ROWS_PER_INVOCATION; ++sgRow) {\n"
+      << "    uint sgTexel = sgChunkTexel(sgRow);\n";
+  if (!layer.keepsValues()) out << "    if (!sgIsChunkMarked(sgMask, sgTexel)) continue;\n";
+  out << "    Surface s;\n"
+      << "    bool onSurface = sgBeginShadel(sgChunk, sgTexel, s);\n"
+      << "    vec4 value = vec4(0.0);\n";
   if (layer.viewIndependent()) {
     // Kept while its object's bit for this layer is set (layer_rate.hpp): last
     // frame's value where the shadel was stored, else computed.
-    out << "  bool keep = (objects[sgPush.objectIndex].keepLayers >> sgPush.persistentSlot & 1u) != 0u;\n"
-        << "  if (onSurface && !(keep && sgPrevious(value))) value = " << layer.function << "(s);\n";
+    if (layer.keepsValues()) out << "    sgReusedPrevious = false;  // set by sgPrevious\n";
+    out << "    bool keep = (objects[sgPush.objectIndex].keepLayers >> sgPush.persistentSlot & 1u) != 0u;\n"
+        << "    if (onSurface && !(keep && sgPrevious(value))) value = " << layer.function << "(s);\n";
   } else {
-    out << "  if (onSurface) value = " << layer.function << "(s);\n";
+    out << "    if (onSurface) value = " << layer.function << "(s);\n";
   }
   out
       // Half floats overflow to Inf above 65,504 on some devices (lavapipe saturates): clamp, so
       // composite's filter never weighs an Inf (Inf x 0 = NaN).
-      << "  imageStore(sgLayerOutput, sgShadel.target, "
+      << "    imageStore(sgLayerOutput, sgShadel.target, "
       << (isHalfFloat(layer.format) ? "clamp(value, -65504.0, 65504.0)" : "value") << ");\n";
+  if (layer.keepsValues()) {
+    out << "    if (onSurface && sgReusedPrevious) ++sgReused;\n"
+        << "    if (onSurface && !sgReusedPrevious) ++sgComputed;\n";
+  }
+  out << "  }\n";
   if (layer.keepsValues()) {
     // One atomic per workgroup, not per shadel.
     out << "  if (gl_LocalInvocationIndex == 0u) { sgReusedCount = 0u; sgComputedCount = 0u; }\n"
         << "  barrier();\n"
-        << "  if (onSurface && sgReusedPrevious) atomicAdd(sgReusedCount, 1u);\n"
-        << "  if (onSurface && !sgReusedPrevious) atomicAdd(sgComputedCount, 1u);\n"
+        << "  atomicAdd(sgReusedCount, sgReused);\n"
+        << "  atomicAdd(sgComputedCount, sgComputed);\n"
         << "  barrier();\n"
         << "  if (gl_LocalInvocationIndex == 0u) {\n"
         << "    atomicAdd(counters.layerReused[sgPush.persistentSlot], sgReusedCount);\n"

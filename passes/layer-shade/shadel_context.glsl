@@ -19,7 +19,15 @@
 #include <framework/shadel/shaders/work.glsl>
 #include <framework/plugin/shaders/material.glsl>
 
-layout(local_size_x = 8, local_size_y = 8) in;
+// A workgroup shades one 8x8 chunk with 8 invocations, each the 8 shadels of
+// its column, a row at a time (the loop in the generated main). The chunk
+// setup (sgChunkSetup, its single-lane reads) then runs once per chunk, not
+// once per row: lavapipe runs 8 lanes as one subgroup, and 8 subgroups each
+// repeating it cost debug-triangle-id about half its layer-shade time.
+// On a GPU (32-64 lanes) 8 invocations waste most of a wave: there 1 (an
+// invocation per shadel, 8x8) is the right shape.
+#define SG_CHUNK_ROWS_PER_INVOCATION 8u
+layout(local_size_x = 8, local_size_y = 8u / SG_CHUNK_ROWS_PER_INVOCATION) in;
 
 struct SgVertex {  // render::GpuVertex
   vec3 position;
@@ -75,13 +83,21 @@ bool sgWorkGroupInList() {
   return sgWorkGroupIndex() < subgroupBroadcast(chunks, lead);
 }
 
-// What every shadel of a workgroup shares: its chunk's work item, the
-// object's record and the level's rectangle. One lane of each subgroup reads
+// The shadels of a chunk that composite reads (shadel-mark's mask, bit =
+// texel index), or all 64: without masks this frame, and for an object whose
+// material reads a neighbourhood (support-expand grows whole chunks; their
+// neighbours' shadels must exist). Read in sgChunkSetup.
+layout(set = 0, binding = kBindShadelMasks, std430) readonly buffer ShadelMasks { uint64_t sgShadelMasks[]; };
+
+// What every shadel of a workgroup shares: its chunk's work item and shadel
+// mask, the object's record and the level's rectangle. One lane of each subgroup reads
 // them and broadcasts: on CPU devices (lavapipe) every lane's buffer read is a
 // scalar load and a bounds check of its own, however uniform the address, and
 // these reads cost as much as the shadel's own (ID map, indices, vertices).
 struct SgChunkSetup {
   uint entryIndex, chunkIndex, level, physical;
+  uvec2 storageOrigin;  // of the chunk's tile in the layer images
+  uvec2 shadelMask;     // the shadels composite reads (sgChunkShadelMask), as two halves
   SgLevelRect rect;
   uint idMapLevel;    // the first texel of the level in the ID-map buffer
   uint levelOffset;   // of the level in the object's ID map
@@ -100,6 +116,10 @@ SgChunkSetup sgReadChunkSetup() {
   c.chunkIndex = work[item + 1u];
   c.level = work[item + 2u];
   c.physical = work[item + 3u];
+  c.storageOrigin = sgStoredTexel(c.physical, uvec2(0u), params.storageWidthChunks);
+  c.shadelMask = uvec2(0xFFFFFFFFu);
+  if (sgPush.shadelMasks != 0u && o.supportChunks == 0u)
+    c.shadelMask = unpackUint2x32(sgShadelMasks[remap[c.entryIndex].storageBase + c.chunkIndex]);
   SgShadelInstance instance = shadelInstances[sgPush.objectIndex];
   c.rect = levelRects[sgLevelRectIndex(instance, c.level)];
   c.levelOffset = 0u;
@@ -124,6 +144,8 @@ SgChunkSetup sgChunkSetup() {
   c.chunkIndex = subgroupBroadcast(c.chunkIndex, lead);
   c.level = subgroupBroadcast(c.level, lead);
   c.physical = subgroupBroadcast(c.physical, lead);
+  c.storageOrigin = subgroupBroadcast(c.storageOrigin, lead);
+  c.shadelMask = subgroupBroadcast(c.shadelMask, lead);
   c.rect.origin = subgroupBroadcast(c.rect.origin, lead);
   c.rect.size = subgroupBroadcast(c.rect.size, lead);
   c.rect.allocatedSize = subgroupBroadcast(c.rect.allocatedSize, lead);
@@ -139,30 +161,17 @@ SgChunkSetup sgChunkSetup() {
 
 vec2 sgShadingUv(SgVertex v, SgChunkSetup c) { return (c.shadingUvSet == 1u ? v.uv01.zw : v.uv01.xy) - c.tileOffset; }
 
-// The shadels of this workgroup's chunk that composite reads (shadel-mark's
-// mask, bit = texel index), or all 64: without masks this frame, and for an
-// object whose material reads a neighbourhood (support-expand grows whole
-// chunks; their neighbours' shadels must exist).
-layout(set = 0, binding = kBindShadelMasks, std430) readonly buffer ShadelMasks { uint64_t sgShadelMasks[]; };
-// Read by one lane and broadcast, as sgChunkSetup: five dependent reads in
-// every lane cost debug-triangle-id 12% of its layer-shade time on lavapipe.
-uint64_t sgChunkShadelMask() {
-  if (sgPush.shadelMasks == 0u) return ~uint64_t(0);
-  uint lead = subgroupBroadcastFirst(gl_SubgroupInvocationID);
-  uvec2 mask = uvec2(0xFFFFFFFFu);
-  if (gl_SubgroupInvocationID == lead && objects[sgPush.objectIndex].supportChunks == 0u) {
-    uint item = sgWorkItemSlot(work[sgObjectOffsetSlot(sgPush.objectIndex)] + sgWorkGroupIndex());
-    mask = unpackUint2x32(sgShadelMasks[remap[work[item]].storageBase + work[item + 1u]]);
-  }
-  return packUint2x32(subgroupBroadcast(mask, lead));
-}
+uint64_t sgChunkShadelMask(SgChunkSetup c) { return packUint2x32(c.shadelMask); }
 
-// Finds this invocation's shadel (sgShadel) and, if it lies on the object,
-// its surface point. False: write nothing meaningful (the layer gets vec4(0)).
-bool sgBeginShadel(out Surface s) {
-  SgChunkSetup c = sgChunkSetup();
-  uint texelIndex = gl_LocalInvocationID.y * SG_CHUNK_SIZE + gl_LocalInvocationID.x;
-  sgShadel.target = ivec2(sgStorageTexel(c.physical, texelIndex, params.storageWidthChunks));
+// The texel indices (8x8 row-major) of the chunk this invocation shades: row
+// `row` of its column.
+uint sgFirstShadelRow() { return gl_LocalInvocationID.y * SG_CHUNK_ROWS_PER_INVOCATION; }
+uint sgChunkTexel(uint row) { return row * SG_CHUNK_SIZE + gl_LocalInvocationID.x; }
+
+// Finds shadel texelIndex of the chunk (sgShadel) and, if it lies on the
+// object, its surface point. False: write nothing meaningful (the layer gets vec4(0)).
+bool sgBeginShadel(SgChunkSetup c, uint texelIndex, out Surface s) {
+  sgShadel.target = ivec2(c.storageOrigin + uvec2(texelIndex & (SG_CHUNK_SIZE - 1u), texelIndex >> 3u));
   sgShadel.shadel = sgVirtualShadel(SgShadelAddress(c.entryIndex, c.chunkIndex, texelIndex), params.entriesPerSideLog2);
   sgShadel.rect = c.rect;
   sgShadel.level = c.level;
