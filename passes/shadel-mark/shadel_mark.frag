@@ -69,13 +69,12 @@ void markNeighbour(SgLevelRect rect, uvec2 chunkOrigin, uvec2 step, uint64_t bit
   markShadels(remap[n.entryIndex].storageBase, n.chunkIndex, bits);
 }
 
-// The shadels of a chunk in the box [lo, hi] (inclusive, inside [0,8)²):
-// the row's bits copied into every byte (row) from lo.y to hi.y. No loop:
-// lavapipe runs a loop with an execution mask per level and per neighbour.
+// The shadels of a chunk in the box [lo, hi] (inclusive, inside [0,8)²).
 uint64_t sgBoxBits(uvec2 lo, uvec2 hi) {
   uint row = ((2u << (hi.x - lo.x)) - 1u) << lo.x;
-  uint64_t rows = (~uint64_t(0) >> (SG_CHUNK_SIZE * (7u - hi.y))) & (~uint64_t(0) << (SG_CHUNK_SIZE * lo.y));
-  return (rows & uint64_t(0x0101010101010101ul)) * uint64_t(row);
+  uint64_t bits = uint64_t(0);
+  for (uint y = lo.y; y <= hi.y; ++y) bits |= uint64_t(row) << (SG_CHUNK_SIZE * y);
+  return bits;
 }
 
 // What composite reads of the tile: the footprint's taps at (tile & 7) +
