@@ -12,9 +12,9 @@
 #include "bench_graph.hpp"
 
 #include <algorithm>
-#include <iterator>
 #include <chrono>
 #include <cstdio>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -55,9 +55,9 @@ double declareAndCompile(SizeRun& run, Mode mode, uint32_t g, const graph::Compi
   const graph::SyntheticGraph& recipe = run.graphs[g];
   const auto start = std::chrono::steady_clock::now();
   if (mode == Mode::Fresh) {
-    graph::RenderGraph g;
-    declare(g, recipe);
-    const graph::CompiledPlan plan = graph::compile(g, options);
+    graph::RenderGraph fresh;
+    declare(fresh, recipe);
+    const graph::CompiledPlan plan = graph::compile(fresh, options);
     keptPasses = plan.order.size();
   } else {
     graph::RenderGraph& graph = mode == Mode::Reused ? run.reusedGraph : run.ownGraphs[g];

@@ -61,8 +61,8 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
   out << "shared uint sgReusedCount, sgComputedCount;\n"
       << "void main() {\n"
       << "  if (!sgWorkGroupInList()) return;  // the surplus of a dispatch's last row\n"
-      << "  SgChunkSetup sgChunk = sgChunkSetup();\n"
-      << "  uint sgReused = 0u, sgComputed = 0u;  // shadels kept from last frame, and computed\n";
+      << "  SgChunkSetup sgChunk = sgChunkSetup();\n";
+  if (layer.keepsValues()) out << "  uint sgReused = 0u, sgComputed = 0u;  // shadels kept from last frame, and computed\n";
   if (!layer.keepsValues()) {
     // Only the shadels composite reads (shadel masks; never with kept values,
     // whose stored shadels may be served later). The last layer counts those it leaves out.
@@ -72,6 +72,9 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
         << "    atomicAdd(counters.shadelsSkipped, 64u - uint(bitCount(sgHalves.x) + bitCount(sgHalves.y)));\n"
         << "  }\n";
   }
+  // Kept while its object's bit for this layer is set (layer_rate.hpp): one read per chunk.
+  if (layer.viewIndependent())
+    out << "  bool keep = (objects[sgPush.objectIndex].keepLayers >> sgPush.persistentSlot & 1u) != 0u;\n";
   out << "  for (uint sgRow = sgFirstShadelRow(); sgRow < sgFirstShadelRow() + SG_CHUNK_ROWS_PER_INVOCATION; ++sgRow) {\n"
       << "    uint sgTexel = sgChunkTexel(sgRow);\n";
   if (!layer.keepsValues()) out << "    if (!sgIsChunkMarked(sgMask, sgTexel)) continue;\n";
@@ -79,11 +82,9 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
       << "    bool onSurface = sgBeginShadel(sgChunk, sgTexel, s);\n"
       << "    vec4 value = vec4(0.0);\n";
   if (layer.viewIndependent()) {
-    // Kept while its object's bit for this layer is set (layer_rate.hpp): last
-    // frame's value where the shadel was stored, else computed.
+    // Last frame's value where the shadel was stored and kept, else computed.
     if (layer.keepsValues()) out << "    sgReusedPrevious = false;  // set by sgPrevious\n";
-    out << "    bool keep = (objects[sgPush.objectIndex].keepLayers >> sgPush.persistentSlot & 1u) != 0u;\n"
-        << "    if (onSurface && !(keep && sgPrevious(value))) value = " << layer.function << "(s);\n";
+    out << "    if (onSurface && !(keep && sgPrevious(value))) value = " << layer.function << "(s);\n";
   } else {
     out << "    if (onSurface) value = " << layer.function << "(s);\n";
   }

@@ -171,7 +171,7 @@ uint sgChunkTexel(uint row) { return row * SG_CHUNK_SIZE + gl_LocalInvocationID.
 // Finds shadel texelIndex of the chunk (sgShadel) and, if it lies on the
 // object, its surface point. False: write nothing meaningful (the layer gets vec4(0)).
 bool sgBeginShadel(SgChunkSetup c, uint texelIndex, out Surface s) {
-  sgShadel.target = ivec2(c.storageOrigin + uvec2(texelIndex & (SG_CHUNK_SIZE - 1u), texelIndex >> 3u));
+  sgShadel.target = ivec2(c.storageOrigin + sgTexelInChunk(texelIndex));
   sgShadel.shadel = sgVirtualShadel(SgShadelAddress(c.entryIndex, c.chunkIndex, texelIndex), params.entriesPerSideLog2);
   sgShadel.rect = c.rect;
   sgShadel.level = c.level;

@@ -110,9 +110,12 @@ uvec2 sgStoredTexel(uint physicalChunk, uvec2 inTile, uint widthChunks) {
   return chunk * SG_STORED_CHUNK_SIZE + inTile;
 }
 
+// Shadel texelIndex (8x8 row-major) of a chunk as (column, row).
+uvec2 sgTexelInChunk(uint texelIndex) { return uvec2(texelIndex & (SG_CHUNK_SIZE - 1u), texelIndex >> 3u); }
+
 // Mirrors sg::shadel::storageTexel: the texel of shadel texelIndex (8x8 row-major) of a physical chunk.
 uvec2 sgStorageTexel(uint physicalChunk, uint texelIndex, uint widthChunks) {
-  return sgStoredTexel(physicalChunk, uvec2(texelIndex & (SG_CHUNK_SIZE - 1u), texelIndex >> 3u), widthChunks);
+  return sgStoredTexel(physicalChunk, sgTexelInChunk(texelIndex), widthChunks);
 }
 
 // Mirrors sg::shadel::storageCounterFor: the allocation counter (storage
