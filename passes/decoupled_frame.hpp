@@ -54,6 +54,9 @@ struct DecoupledFrame {
   int markedFilter = -1;  // the filter shadel-mark was declared with (composite checks it); -1: none yet
   bool baseline = false;  // bench --baseline only: shadel-mark as before issue 14
   bool levelView = false;  // composite shows the detail level instead of the shading
+  // Invocations of a layer-shade workgroup (8 to 64; chunkRowsPerInvocation);
+  // 0: the device's subgroup size.
+  uint32_t layerShadeInvocations = 0;
   graph::ResourceHandle remap, counters, work, args;
   graph::ResourceHandle shadedColor;  // what composite filters: the last layer of every material writes it
   // Stable allocation: each owned entry's chunk slots and the free list

@@ -3,6 +3,7 @@
 #include <map>
 
 #include <shadelgraph/gpu/pass_context.hpp>
+#include <shadelgraph/gpu/subgroup.hpp>
 #include <shadelgraph/render/light_binding.hpp>
 #include <shadelgraph/render/material_variants.hpp>
 #include <shadelgraph/render/environment_binding.hpp>
@@ -22,14 +23,18 @@ constexpr uint32_t kBaseBindings[] = {kBindFrame,    kBindParams,   kBindObjects
 // layer, its plugin and the author's file:line.
 const gpu::Pipeline& layerPipeline(PassContext& ctx, const DecoupledFrame& frame, const plugin::MaterialLayer& layer) {
   const render::TextureSet* textures = frame.view.layerTextures.forLayer(layer);
+  const uint32_t invocations = frame.layerShadeInvocations != 0
+                                   ? frame.layerShadeInvocations
+                                   : gpu::subgroupSize(ctx.device().context().physicalDevice());
+  const uint32_t rows = chunkRowsPerInvocation(invocations);
   const auto describe = [&] {
-    gpu::ComputePipelineDesc desc = layerShadePipeline(layer);
+    gpu::ComputePipelineDesc desc = layerShadePipeline(layer, rows);
     desc.layout.extraSets.push_back(frame.view.scene.materialSetLayout());
     if (textures) desc.layout.extraSets.push_back(textures->layout());
     return desc;
   };
   try {
-    return ctx.device().pipeline("layer-shade/" + layer.name, describe);
+    return ctx.device().pipeline("layer-shade/" + layer.name + "/rows" + std::to_string(rows), describe);
   } catch (const gpu::ShaderCompileError& e) {
     throw render::layerCompileError(e, ctx.device().shaders(), "material layer '" + layer.name + "'", layer.plugin);
   }
@@ -37,7 +42,7 @@ const gpu::Pipeline& layerPipeline(PassContext& ctx, const DecoupledFrame& frame
 
 }  // namespace
 
-gpu::ComputePipelineDesc layerShadePipeline(const plugin::MaterialLayer& layer) {
+gpu::ComputePipelineDesc layerShadePipeline(const plugin::MaterialLayer& layer, uint32_t rowsPerInvocation) {
   gpu::PipelineLayoutDesc layout = decoupledLayout(kBaseBindings, false, sizeof(SgLayerShadePush));
   layout.bindings.push_back({kBindLayerOutput, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
   layout.bindings.push_back(render::shadowMapsBinding());
@@ -50,7 +55,7 @@ gpu::ComputePipelineDesc layerShadePipeline(const plugin::MaterialLayer& layer) 
   if (layer.keepsValues()) {
     layout.bindings.push_back({kBindLayerHistory, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
   }
-  return {.shader = decoupledLayerVariant(layer), .layout = layout};
+  return {.shader = decoupledLayerVariant(layer, rowsPerInvocation), .layout = layout};
 }
 
 void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string name,

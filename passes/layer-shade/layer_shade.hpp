@@ -28,11 +28,12 @@ struct LayerHistory {
 
 // One layer-shade pass (async compute): for each step, the layer's decoupled
 // variant (generated from its source) dispatched once per object over its
-// work list, an 8x8 workgroup per chunk. Steps' outputs get their new versions.
+// work list, a workgroup per 8x8 chunk. Steps' outputs get their new versions.
 void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string name,
                    std::vector<LayerShadeStep>& steps, const LayerHistory& history);
 // A layer's pipeline: its generated variant, set 0 and push constants; the
 // pass adds set 1 (the scene material) and set 2 (the layer's textures).
-gpu::ComputePipelineDesc layerShadePipeline(const plugin::MaterialLayer& layer);
+// `rowsPerInvocation`: chunkRowsPerInvocation.
+gpu::ComputePipelineDesc layerShadePipeline(const plugin::MaterialLayer& layer, uint32_t rowsPerInvocation);
 
 }  // namespace sg::passes

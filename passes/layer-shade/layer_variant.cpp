@@ -1,6 +1,9 @@
 #include "layer_variant.hpp"
 
+#include <algorithm>
+#include <bit>
 #include <sstream>
+#include <stdexcept>
 
 #include <decoupled_frame.hpp>
 #include <shadelgraph/render/material_variants.hpp>
@@ -14,7 +17,14 @@ bool isHalfFloat(graph::Format format) {
 
 }  // namespace
 
-gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
+uint32_t chunkRowsPerInvocation(uint32_t invocations) {
+  return 64u / std::bit_floor(std::clamp(invocations, 8u, 64u));
+}
+
+gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer, uint32_t rowsPerInvocation) {
+  if (rowsPerInvocation == 0 || rowsPerInvocation > 8 || !std::has_single_bit(rowsPerInvocation))
+    throw std::invalid_argument("layer-shade: rows per invocation must be 1, 2, 4 or 8, not " +
+                                std::to_string(rowsPerInvocation));
   render::checkFrameInputCount(layer.frameInputs.size(), "material layer '" + layer.name + "'", layer.plugin);
   if (layer.reads.size() > kMaxLayerReads)
     throw plugin::PluginError("material layer '" + layer.name + "' (plugin '" + layer.plugin + "') reads more than " +
@@ -24,6 +34,7 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer) {
       << "// Generated: decoupled variant of material layer '" << layer.name << "' (plugin '" << layer.plugin
       << "').\n"
       << "#define SG_DECOUPLED 1\n"
+      << "#define SG_CHUNK_ROWS_PER_INVOCATION " << rowsPerInvocation << "u\n"
       << "#include <passes/layer-shade/shadel_context.glsl>\n"
       << "layout(set = 0, binding = " << kBindLayerOutput << ", " << render::glslImageFormat(layer.format)
       << ") uniform writeonly image2D sgLayerOutput;\n";

@@ -8,6 +8,11 @@
 
 namespace sg::passes {
 
-gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer);
+// Rows of its chunk column each invocation of a layer-shade workgroup shades,
+// for workgroups of `invocations` lanes (clamped to 8..64, a power of two):
+// the device's subgroup size, so that one subgroup shades the whole chunk.
+uint32_t chunkRowsPerInvocation(uint32_t invocations);
+
+gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer, uint32_t rowsPerInvocation);
 
 }  // namespace sg::passes

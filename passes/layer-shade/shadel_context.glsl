@@ -19,14 +19,17 @@
 #include <framework/shadel/shaders/work.glsl>
 #include <framework/plugin/shaders/material.glsl>
 
-// A workgroup shades one 8x8 chunk with 8 invocations, each the 8 shadels of
-// its column, a row at a time (the loop in the generated main). The chunk
-// setup (sgChunkSetup, its single-lane reads) then runs once per chunk, not
-// once per row: lavapipe runs 8 lanes as one subgroup, and 8 subgroups each
-// repeating it cost debug-triangle-id about half its layer-shade time.
-// On a GPU (32-64 lanes) 8 invocations waste most of a wave: there 1 (an
-// invocation per shadel, 8x8) is the right shape.
-#define SG_CHUNK_ROWS_PER_INVOCATION 8u
+// A workgroup shades one 8x8 chunk with 64 / SG_CHUNK_ROWS_PER_INVOCATION
+// invocations, each shading that many rows of its column (the loop in the
+// generated main). The generator sizes the workgroup to one subgroup
+// (passes::chunkRowsPerInvocation): the chunk setup (sgChunkSetup, its
+// single-lane reads) then runs once per chunk. On lavapipe (8 lanes) that is
+// 8 rows per invocation; 8 subgroups each repeating the setup cost
+// debug-triangle-id about half its layer-shade time. On a GPU (32-64 lanes)
+// 8 invocations would waste most of a wave.
+#ifndef SG_CHUNK_ROWS_PER_INVOCATION
+#error "SG_CHUNK_ROWS_PER_INVOCATION: rows of its chunk column an invocation shades (passes::chunkRowsPerInvocation)"
+#endif
 layout(local_size_x = 8, local_size_y = 8u / SG_CHUNK_ROWS_PER_INVOCATION) in;
 
 struct SgVertex {  // render::GpuVertex

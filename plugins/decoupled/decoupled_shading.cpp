@@ -425,6 +425,7 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
                                         .filter = settings_.filter,
                                         .baseline = settings_.baseline,
                                         .levelView = settings_.view == DebugView::Level,
+                                        .layerShadeInvocations = settings_.layerShadeInvocations,
                                         // Whole chunks where stored shadels may be served in a later frame,
                                         // and in the sheet view (it shows every stored texel).
                                         .shadelMasks = settings_.shadelMasks && !keepShading &&

@@ -49,6 +49,10 @@ struct DecoupledSettings {
   bool baseline = false;           // bench --baseline: shadel-mark as before issue 14
   // Shade only the shadels composite reads (passes::DecoupledFrame::shadelMasks, where it applies); false: whole chunks.
   bool shadelMasks = true;
+  // Invocations of a layer-shade workgroup (8 to 64, each shading 64 / n
+  // shadels of its chunk); 0: the device's subgroup size. The images do not
+  // depend on it; tests compare the shapes.
+  uint32_t layerShadeInvocations = 0;
   std::optional<float> fixedBias;      // else the adjuster decides
   // A shade frame (every marked chunk shaded) every this many raster frames;
   // in the others only chunks without valid shading from the last frame are

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -142,6 +143,48 @@ TEST(MaterialLayers, ShadelMasksShadeNeighbourhoodReadersWhole) {
   EXPECT_GT(masked.stats().counters.supportChunks, 0u);
   EXPECT_GT(masked.stats().counters.shadelsSkipped, 0u) << "the gltf-pbr objects' chunks are masked";
   EXPECT_EQ(whole.stats().counters.shadelsSkipped, 0u);
+}
+
+// A layer-shade workgroup is one subgroup (passes::chunkRowsPerInvocation):
+// 8 invocations of 8 rows on lavapipe, 32 or 64 of 2 or 1 on a GPU. Every
+// shape shades the same shadels, so the images and counters are the same:
+// masked gltf-pbr, neighbour-reading skin, and marble reused in a second frame.
+TEST(MaterialLayers, EveryLayerShadeWorkgroupShapeShadesTheSameImage) {
+  // Shadel masks need a frame without persistent layers: masked gltf-pbr and
+  // neighbour-reading skin in one scene, marble (kept from frame to frame) in another.
+  scene::Scene masked = courtyardWith("skin");
+  for (size_t i = 0; i < masked.instances.size(); i += 2) masked.instances[i].material = "gltf-pbr";
+  struct Shape {
+    std::vector<uint8_t> masked, marble;
+    uint32_t skipped = 0;
+    uint64_t reused = 0, computed = 0;
+  };
+  std::vector<Shape> shapes;
+  for (const uint32_t invocations : {8u, 16u, 32u, 64u}) {
+    SCOPED_TRACE("invocations " + std::to_string(invocations));
+    Shape& shape = shapes.emplace_back();
+    Session m(masked, scene::ShadingMode::Decoupled, {.layerShadeInvocations = invocations});
+    shape.masked = m.render(kSize).rgba8;
+    shape.skipped = m.stats().counters.shadelsSkipped;
+    EXPECT_GT(shape.skipped, 0u) << "gltf-pbr's chunks are masked";
+    EXPECT_EQ(m.stats().counters.compositeMisses, 0u);
+    Session marble(courtyardWith("marble"), scene::ShadingMode::Decoupled,
+                   {.layerShadeInvocations = invocations, .fixedBias = 0.0f});
+    marble.render(kSize);
+    shape.marble = marble.render(kSize).rgba8;
+    ASSERT_EQ(marble.stats().layerReuse.size(), 1u);
+    shape.reused = marble.stats().layerReuse[0].reused;
+    shape.computed = marble.stats().layerReuse[0].computed;
+    EXPECT_GT(shape.reused, 0u) << "marble kept from the first frame";
+  }
+  for (size_t i = 1; i < shapes.size(); ++i) {
+    SCOPED_TRACE("shape " + std::to_string(i) + " against 8 invocations");
+    EXPECT_TRUE(shapes[i].masked == shapes[0].masked) << "a shape shaded other shadels";
+    EXPECT_TRUE(shapes[i].marble == shapes[0].marble) << "a shape reused other shadels";
+    EXPECT_EQ(shapes[i].skipped, shapes[0].skipped);
+    EXPECT_EQ(shapes[i].reused, shapes[0].reused);
+    EXPECT_EQ(shapes[i].computed, shapes[0].computed);
+  }
 }
 
 TEST(MaterialLayers, MarbleIsReusedFromLastFrame) {

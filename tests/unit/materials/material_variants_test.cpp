@@ -25,15 +25,30 @@ class MaterialVariants : public ::testing::Test {
   plugin::Registry registry_;
 };
 
+// In every workgroup shape: lavapipe's 8 lanes (8 rows per invocation) to a 64-lane GPU wave (1).
 TEST_F(MaterialVariants, EveryBuiltinLayerCompilesDecoupled) {
   for (const auto& name : registry_.materialNames()) {
     const auto& material = registry_.material(name);
     if (!registry_.runsIn(material, plugin::ShadingPath::Decoupled)) continue;
-    for (const auto& layer : material.layers) {
-      SCOPED_TRACE(layer);
-      EXPECT_FALSE(compiler_.compile(passes::decoupledLayerVariant(registry_.layer(layer))).empty());
-    }
+    for (const auto& layer : material.layers)
+      for (const uint32_t rows : {1u, 2u, 4u, 8u}) {
+        SCOPED_TRACE(layer + " rows " + std::to_string(rows));
+        EXPECT_FALSE(compiler_.compile(passes::decoupledLayerVariant(registry_.layer(layer), rows)).empty());
+      }
   }
+}
+
+TEST_F(MaterialVariants, ALayerShadeWorkgroupIsOneSubgroup) {
+  EXPECT_EQ(passes::chunkRowsPerInvocation(8), 8u);   // lavapipe, 256-bit vectors
+  EXPECT_EQ(passes::chunkRowsPerInvocation(16), 4u);
+  EXPECT_EQ(passes::chunkRowsPerInvocation(32), 2u);  // NVIDIA, AMD wave32
+  EXPECT_EQ(passes::chunkRowsPerInvocation(64), 1u);  // AMD wave64
+  EXPECT_EQ(passes::chunkRowsPerInvocation(4), 8u);   // never fewer lanes than a chunk row
+  EXPECT_EQ(passes::chunkRowsPerInvocation(128), 1u);
+  const auto source = passes::decoupledLayerVariant(registry_.layer("gltf-pbr"), 2).source;
+  EXPECT_NE(source.find("#define SG_CHUNK_ROWS_PER_INVOCATION 2u"), std::string::npos) << source;
+  EXPECT_THROW(passes::decoupledLayerVariant(registry_.layer("gltf-pbr"), 3), std::invalid_argument);
+  EXPECT_THROW(passes::decoupledLayerVariant(registry_.layer("gltf-pbr"), 16), std::invalid_argument);
 }
 
 TEST_F(MaterialVariants, EveryBuiltinMaterialCompilesForward) {
@@ -55,11 +70,11 @@ TEST_F(MaterialVariants, ForwardVariantRunsTheStackInOrder) {
 }
 
 TEST_F(MaterialVariants, DecoupledVariantBindsOnlyWhatTheLayerDeclares) {
-  const auto blur = passes::decoupledLayerVariant(registry_.layer("blur-v")).source;
+  const auto blur = passes::decoupledLayerVariant(registry_.layer("blur-v"), 8).source;
   EXPECT_NE(blur.find("sgLayerImage_blur_u"), std::string::npos);
   EXPECT_EQ(blur.find("sgLayerImage_gltf_pbr"), std::string::npos) << "blur-v reads only blur-u";
   EXPECT_EQ(blur.find("sgLayerHistory"), std::string::npos) << "not persistent";
-  const auto marble = passes::decoupledLayerVariant(registry_.layer("marble")).source;
+  const auto marble = passes::decoupledLayerVariant(registry_.layer("marble"), 8).source;
   EXPECT_NE(marble.find("sgLayerHistory"), std::string::npos);
   EXPECT_NE(marble.find("layerReused"), std::string::npos);
 }
@@ -75,7 +90,7 @@ TEST_F(MaterialVariants, AuthorErrorsPointIntoTheAuthorsFile) {
   registry_.addLayer({.name = "broken", .source = "my-plugin/broken.glsl", .function = "broken"});
   registry_.addMaterial({.name = "broken", .layers = {"broken"}});
   for (const bool decoupled : {true, false}) {
-    const auto request = decoupled ? passes::decoupledLayerVariant(registry_.layer("broken"))
+    const auto request = decoupled ? passes::decoupledLayerVariant(registry_.layer("broken"), 8)
                                    : passes::forwardMaterialVariant(registry_, registry_.material("broken"));
     try {
       compiler_.compile(request);

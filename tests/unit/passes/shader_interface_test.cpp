@@ -281,7 +281,9 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
     const auto& material = registry_.material(name);
     if (registry_.runsIn(material, plugin::ShadingPath::Decoupled))
       for (const auto& layer : material.layers)
-        errors += mismatches("layer-shade of layer " + layer, passes::layerShadePipeline(registry_.layer(layer)));
+        for (const uint32_t rows : {1u, 8u})
+          errors += mismatches("layer-shade of layer " + layer + " rows " + std::to_string(rows),
+                               passes::layerShadePipeline(registry_.layer(layer), rows));
     const auto& forward = registry_.materialFor(name, plugin::ShadingPath::Forward);
     for (bool blend : {false, true})
       for (bool plain : {false, true})
