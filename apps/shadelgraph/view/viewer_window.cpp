@@ -20,6 +20,13 @@ ViewerWindow* self(GLFWwindow* w) { return static_cast<ViewerWindow*>(glfwGetWin
 bool imguiWantsMouse() { return ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse; }
 bool imguiWantsKeyboard() { return ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureKeyboard; }
 
+CursorPosition cursorPixel(GLFWwindow* w, double x, double y) {
+  int ww = 0, wh = 0, fw = 0, fh = 0;
+  glfwGetWindowSize(w, &ww, &wh);
+  glfwGetFramebufferSize(w, &fw, &fh);
+  return framebufferPixel(x, y, ww, wh, fw, fh);
+}
+
 }  // namespace
 
 
@@ -46,15 +53,20 @@ ViewerWindow::ViewerWindow(const std::string& title, uint32_t width, uint32_t he
   });
   glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) {
     InputEvent e{InputEvent::Type::MouseMove};
-    e.x = x;
-    e.y = y;
+    const CursorPosition p = cursorPixel(w, x, y);
+    e.x = p.x;
+    e.y = p.y;
     self(w)->events_.push_back(e);
   });
   glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int) {
     if (action == GLFW_PRESS && imguiWantsMouse()) return;
     InputEvent e{action == GLFW_PRESS ? InputEvent::Type::ButtonDown : InputEvent::Type::ButtonUp};
     e.button = button;
-    glfwGetCursorPos(w, &e.x, &e.y);
+    double x = 0.0, y = 0.0;
+    glfwGetCursorPos(w, &x, &y);
+    const CursorPosition p = cursorPixel(w, x, y);
+    e.x = p.x;
+    e.y = p.y;
     self(w)->events_.push_back(e);
   });
   glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) {
