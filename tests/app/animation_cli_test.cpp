@@ -107,8 +107,9 @@ TEST(AnimationCliShadows, AnOffScreenSkinnedCasterCastsItsCurrentPose) {
                                       " --time " + time + " -o " + png.string());
       ASSERT_EQ(r.exitCode, 0) << r.output;
       // Decoupled, the walker would be the second decoupled object if it were drawn.
-      if (std::string(mode) == "decoupled")
+      if (std::string(mode) == "decoupled") {
         EXPECT_NE(r.output.find("2 draws, 1 objects decoupled"), std::string::npos) << "the walker is culled: " << r.output;
+      }
       images.push_back(sg::image::readPng(png));
     }
     EXPECT_GT(differingPixels(images[0], images[1]), 160u * 90u / 100) << mode << ": the shadow keeps one pose";

@@ -83,7 +83,9 @@ TEST_P(ClosedSurfaceCulling, SameImageAsWithoutFromOutside) {
     EXPECT_EQ(diff.maxAbs, 0) << "mean |d| " << diff.meanAbs << ", " << diff.fractionAbove8 * 100
                               << "% of pixels by more than 8/255";
   }
-  if (GetParam() == scene::ShadingMode::Decoupled) EXPECT_EQ(culled.stats().counters.compositeMisses, 0u);
+  if (GetParam() == scene::ShadingMode::Decoupled) {
+    EXPECT_EQ(culled.stats().counters.compositeMisses, 0u);
+  }
 }
 
 TEST_P(ClosedSurfaceCulling, InsideTheSurfaceItsInsideIsDrawn) {

@@ -62,7 +62,7 @@ TEST_P(LiveEntrySpans, SameImagesAndCountersAsOverEveryEntry) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ShadeRates, LiveEntrySpans, ::testing::Values(1u, 3u),
-                         [](const auto& info) { return "rate" + std::to_string(info.param); });
+                         [](const auto& rate) { return "rate" + std::to_string(rate.param); });
 
 }  // namespace
 }  // namespace sg::test

@@ -105,7 +105,7 @@ TEST(OccludedEntrySkip, VisitsEverythingWithoutCullingAndTheFrameAfter) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ShadeRates, OccludedEntrySkip, ::testing::Values(1u, 3u),
-                         [](const auto& info) { return "rate" + std::to_string(info.param); });
+                         [](const auto& rate) { return "rate" + std::to_string(rate.param); });
 
 }  // namespace
 }  // namespace sg::test

@@ -266,7 +266,7 @@ TEST(EnvironmentPrefilter, RoughLevelsHaveNoStreaks) {
         if (!passesNear(eye, rayThrough(camera, size, size, x, y), glm::vec3(0.0f), 0.85f)) continue;
         const float l = luminance(x, y);
         const float lap = 4.0f * l - luminance(x - 1, y) - luminance(x + 1, y) - luminance(x, y - 1) - luminance(x, y + 1);
-        sum += std::abs(lap) / std::max(l, 1e-3f);
+        sum += double(std::abs(lap) / std::max(l, 1e-3f));
         ++n;
       }
     const double mean = sum / std::max(n, 1u);

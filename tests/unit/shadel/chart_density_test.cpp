@@ -103,7 +103,9 @@ TEST(ChartDensity, SampleModels) {
       const bool suzanne = file.stem() == "Suzanne";
       sawSuzanne |= suzanne;
       EXPECT_EQ(d.even, !suzanne) << file.stem().string() << "/" << mesh.name << ": " << d.describe();
-      if (suzanne) EXPECT_GT(d.linearSpread, 10.0);
+      if (suzanne) {
+        EXPECT_GT(d.linearSpread, 10.0);
+      }
     }
   }
   EXPECT_TRUE(sawSuzanne) << "Suzanne not found among " << test::allSamples().size() << " sample models";
