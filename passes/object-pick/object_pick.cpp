@@ -26,6 +26,14 @@ gpu::GraphicsPipelineDesc objectPickPipeline() {
           .depthWrite = true};
 }
 
+gpu::GraphicsPipelineDesc objectPickAlphaTestPipeline(VkDescriptorSetLayout materialSet) {
+  gpu::GraphicsPipelineDesc desc = objectPickPipeline();
+  desc.vertex.defines = {{"SG_ALPHA_TEST", "1"}};
+  desc.fragment.defines = {{"SG_ALPHA_TEST", "1"}};
+  desc.layout.extraSets = {materialSet};
+  return desc;
+}
+
 graph::ResourceHandle addObjectPick(graph::RenderGraph& graph, const render::SceneView& view, glm::uvec2 pixel,
                                     glm::uvec2 size, graph::ResourceHandle result) {
   auto id = graph.createImage("pick id", {.format = graph::Format::R32Uint, .size = graph::Size::absolute(1, 1)});
@@ -41,12 +49,33 @@ graph::ResourceHandle addObjectPick(graph::RenderGraph& graph, const render::Sce
   raster.execute([&scene = view.scene, &uniforms = view.frameUniforms,
                   draws = std::vector<uint32_t>(view.draws.begin(), view.draws.end()), id, depth, window](PassContext& ctx) {
     const auto& pipeline = ctx.device().pipeline("object-pick", objectPickPipeline);
+    const gpu::DescriptorWrite frame{shader::kBindFrame, gpu::BufferBinding{uniforms.handle()}};
+    const auto bind = [&](const gpu::Pipeline& p) {
+      ctx.bind(p, {frame});
+      vkCmdPushConstants(ctx.cmd(), p.layout(), VK_SHADER_STAGE_ALL, offsetof(PickPush, window), sizeof window, &window);
+    };
     ctx.beginRendering({ColorTarget{id, VkClearColorValue{}}}, DepthTarget{depth, 1.0f}, true);
-    ctx.bind(pipeline, {{shader::kBindFrame, gpu::BufferBinding{uniforms.handle()}}});
-    vkCmdPushConstants(ctx.cmd(), pipeline.layout(), VK_SHADER_STAGE_ALL, offsetof(PickPush, window), sizeof window, &window);
+    bind(pipeline);
     scene.bindGeometry(ctx.cmd());
-    // Every draw, occlusion-culled or not: the depth test finds the nearest; blended ones count as opaque.
-    for (const uint32_t d : draws) render::drawItem(ctx.cmd(), pipeline, scene.draws()[d], scene.draws()[d].instance + 1);
+    // Every draw, occlusion-culled or not: the depth test finds the nearest;
+    // blended ones count as opaque (a click on glass picks the glass).
+    std::vector<uint32_t> masked;
+    for (const uint32_t d : draws) {
+      if (scene.draws()[d].alphaMode == scene::AlphaMode::Mask)
+        masked.push_back(d);
+      else
+        render::drawItem(ctx.cmd(), pipeline, scene.draws()[d], scene.draws()[d].instance + 1);
+    }
+    if (!masked.empty()) {
+      const auto& tested = ctx.device().pipeline(
+          "object-pick/alpha-test", [&] { return objectPickAlphaTestPipeline(scene.materialSetLayout()); });
+      bind(tested);
+      for (const uint32_t d : masked) {
+        const VkDescriptorSet set = scene.materialSet(scene.draws()[d].material);
+        vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, tested.layout(), 1, 1, &set, 0, nullptr);
+        render::drawItem(ctx.cmd(), tested, scene.draws()[d], scene.draws()[d].instance + 1);
+      }
+    }
     ctx.endRendering();
   });
   auto& copy = graph.addPass("object-pick readback", graph::QueueClass::Graphics, graph::PassKind::Transfer);

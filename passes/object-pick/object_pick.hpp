@@ -14,9 +14,12 @@ namespace sg::passes {
 
 // Writes into `result` (a buffer of one uint) the scene instance + 1 of the
 // nearest of `view`'s draws at pixel `pixel` (x right, y down) of a frame of
-// `size` pixels, 0 when none covers it. Returns the version it writes.
+// `size` pixels, 0 when none covers it; alpha-mask objects not where their
+// alpha test cuts them away. Returns the version it writes.
 graph::ResourceHandle addObjectPick(graph::RenderGraph& graph, const render::SceneView& view, glm::uvec2 pixel,
                                     glm::uvec2 size, graph::ResourceHandle result);
 gpu::GraphicsPipelineDesc objectPickPipeline();
+// For alpha-mask draws: the alpha test, with the scene material as set 1.
+gpu::GraphicsPipelineDesc objectPickAlphaTestPipeline(VkDescriptorSetLayout materialSet);
 
 }  // namespace sg::passes

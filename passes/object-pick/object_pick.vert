@@ -18,10 +18,20 @@ layout(location = 3) in vec2 inUv0;
 layout(location = 4) in vec2 inUv1;
 layout(location = 5) in vec4 inColor;
 layout(location = 0) flat out uint outId;
+#ifdef SG_ALPHA_TEST
+layout(location = 1) out vec2 outUv0;
+layout(location = 2) out vec2 outUv1;
+layout(location = 3) out float outColorAlpha;
+#endif
 
 void main() {
   vec4 clip = frame.viewProjection * (object.model * vec4(inPosition, 1.0));
   clip.xy = (clip.xy - window.center * clip.w) * window.scale;
   gl_Position = clip;
   outId = object.objectId;
+#ifdef SG_ALPHA_TEST
+  outUv0 = inUv0;
+  outUv1 = inUv1;
+  outColorAlpha = inColor.a;
+#endif
 }

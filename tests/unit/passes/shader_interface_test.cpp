@@ -251,6 +251,7 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   errors += mismatches("hi-z", passes::hiZPipeline());
   errors += mismatches("occlusion-cull", passes::occlusionCullPipeline());
   errors += mismatches("object-pick", passes::objectPickPipeline());
+  errors += mismatches("object-pick alpha-test", passes::objectPickAlphaTestPipeline(VK_NULL_HANDLE));
   for (bool passthrough : {false, true})
     errors += mismatches("tonemap", passes::tonemapPipeline(VK_FORMAT_R8G8B8A8_SRGB, passthrough));
   for (bool entries : {false, true}) errors += mismatches("shadel-clear", passes::shadelClearPipeline(entries));
