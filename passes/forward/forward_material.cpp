@@ -16,20 +16,20 @@ namespace sg::passes {
 namespace {
 
 const gpu::Pipeline& forwardPipeline(PassContext& ctx, const render::SceneView& view,
-                                     const plugin::MaterialStack& material, bool blend, bool plain) {
+                                     const plugin::MaterialStack& material, bool blend, bool plain, bool alphaTest) {
   const render::TextureSet* textures = view.layerTextures.forMaterial(material);
   const ForwardFrameFeatures frame{.shadowMaps = view.frameImages.count(render::kShadowMapsResource) != 0,
                                    .lightGrid = view.frameImages.count(render::kLightGridResource) != 0,
                                    .environmentMaps = view.frameImages.count(render::kEnvironmentSpecularResource) != 0};
   const auto describe = [&] {
-    gpu::GraphicsPipelineDesc desc = forwardMaterialPipeline(view.materials, material, blend, plain, frame);
+    gpu::GraphicsPipelineDesc desc = forwardMaterialPipeline(view.materials, material, blend, plain, frame, alphaTest);
     desc.layout.extraSets.push_back(view.scene.materialSetLayout());
     if (textures) desc.layout.extraSets.push_back(textures->layout());
     return desc;
   };
   try {
     return ctx.device().pipeline(std::string(blend ? "forward/blend/" : "forward/") + (plain ? "plain/" : "") +
-                                     frame.key() + material.name,
+                                     (alphaTest ? "alpha-test/" : "") + frame.key() + material.name,
                                  describe);
   } catch (const gpu::ShaderCompileError& e) {
     throw render::layerCompileError(e, ctx.device().shaders(), "the forward variant of material '" + material.name + "'",
@@ -70,7 +70,7 @@ std::string ForwardFrameFeatures::key() const {
 }
 
 gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& registry, const plugin::MaterialStack& material,
-                                                  bool blend, bool plain, ForwardFrameFeatures frame) {
+                                                  bool blend, bool plain, ForwardFrameFeatures frame, bool alphaTest) {
   std::vector<gpu::DescriptorBinding> bindings{{shader::kBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
                                                render::shadowMapsBinding()};
   for (const auto& b : render::environmentBindings()) bindings.push_back(b);
@@ -79,7 +79,7 @@ gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& regist
     bindings.push_back({render::kBindLayerFrameInputs + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
   gpu::ShaderRequest vertex{.path = "passes/forward/forward.vert"};
   if (plain) vertex.defines.push_back({"SG_FORWARD_PLAIN", "1"});
-  gpu::ShaderRequest fragment = forwardMaterialVariant(registry, material, plain);
+  gpu::ShaderRequest fragment = forwardMaterialVariant(registry, material, plain, alphaTest);
   if (!frame.shadowMaps) fragment.defines.push_back({"SG_NO_SHADOW_MAPS", "1"});
   if (!frame.lightGrid) fragment.defines.push_back({"SG_NO_LIGHT_GRID", "1"});
   if (!frame.environmentMaps) fragment.defines.push_back({"SG_NO_ENVIRONMENT_MAPS", "1"});
@@ -138,13 +138,14 @@ void drawForward(PassContext& ctx, const render::SceneView& view, std::span<cons
   // The pipeline (looked up by name) and its texture set change only with the
   // material, and the draws come grouped by material.
   const plugin::MaterialStack* boundMaterial = nullptr;
-  bool boundPlain = false;
+  bool boundPlain = false, boundAlphaTest = false;
   const gpu::Pipeline* pipeline = nullptr;
   for (uint32_t d : draws) {
     const auto& material = forwardMaterial(view, d);
     const bool plain = plainForward(view, d);
-    if (&material != boundMaterial || plain != boundPlain) {
-      pipeline = &forwardPipeline(ctx, view, material, blend, plain);
+    const bool alphaTest = view.scene.draws()[d].alphaMode == scene::AlphaMode::Mask;
+    if (&material != boundMaterial || plain != boundPlain || alphaTest != boundAlphaTest) {
+      pipeline = &forwardPipeline(ctx, view, material, blend, plain, alphaTest);
       const auto writes = forwardDescriptors(ctx, view, material);
       ctx.bind(*pipeline, writes);
       if (const render::TextureSet* textures = view.layerTextures.forMaterial(material)) {
@@ -154,6 +155,7 @@ void drawForward(PassContext& ctx, const render::SceneView& view, std::span<cons
       }
       boundMaterial = &material;
       boundPlain = plain;
+      boundAlphaTest = alphaTest;
     }
     const auto& item = view.scene.draws()[d];
     VkDescriptorSet set = view.scene.materialSet(item.material);

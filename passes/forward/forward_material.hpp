@@ -26,7 +26,8 @@ void readFrameInputs(graph::Pass& pass, const render::SceneView& view, std::span
 // Its pipeline, set 0 and push constants; the pass adds set 1 (the scene
 // material) and set 2 (the layers' textures) when it has them. `plain`: the
 // variant for draws with DrawItem::plainSurface (position and normal varyings);
-// `frame`: what the frame provides; code for what it lacks is compiled out.
+// `frame`: what the frame provides; code for what it lacks is compiled out;
+// `alphaTest`: the variant of alpha-mask draws (the others never discard).
 struct ForwardFrameFeatures {
   bool shadowMaps = true;       // else SG_NO_SHADOW_MAPS: every light unshadowed
   bool lightGrid = true;        // else SG_NO_LIGHT_GRID: every light reaches every pixel
@@ -34,7 +35,8 @@ struct ForwardFrameFeatures {
   std::string key() const;      // part of the pipeline's name
 };
 gpu::GraphicsPipelineDesc forwardMaterialPipeline(const plugin::Registry& registry, const plugin::MaterialStack& material,
-                                                  bool blend, bool plain = false, ForwardFrameFeatures frame = {});
+                                                  bool blend, bool plain = false, ForwardFrameFeatures frame = {},
+                                                  bool alphaTest = true);
 // Does the view hold a draw with this alpha mode?
 bool hasAlphaMode(const render::SceneView& view, scene::AlphaMode mode);
 

@@ -66,7 +66,9 @@ bool sgPrevious(out vec4 value) {
 // (alpha_test.glsl: the base colour's alpha), so both paths keep the same pixels.
 void sgWriteForward(vec4 shaded) {
   shaded.rgb = min(shaded.rgb, vec3(65504.0));  // the HDR target's half-float maximum, not Inf
+#ifdef SG_FORWARD_ALPHA_TEST  // alpha-mask draws only: a discard compiled in costs every pixel on lavapipe
   if (sgMaskedOut(inUv0, inUv1, inColor.a)) discard;
+#endif
   if (material.flags.x == SG_ALPHA_BLEND)
     outColor = vec4(shaded.rgb * shaded.a, shaded.a);  // premultiplied
   else

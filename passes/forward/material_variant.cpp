@@ -7,12 +7,13 @@
 namespace sg::passes {
 
 gpu::ShaderRequest forwardMaterialVariant(const plugin::Registry& registry, const plugin::MaterialStack& stack,
-                                          bool plain) {
+                                          bool plain, bool alphaTest) {
   std::ostringstream out;
   out << "#version 460\n"
       << "// Generated: forward variant of material '" << stack.name << "' (plugin '" << stack.plugin << "').\n"
       << "#define SG_FORWARD 1\n"
       << (plain ? "#define SG_FORWARD_PLAIN 1\n" : "")
+      << (alphaTest ? "#define SG_FORWARD_ALPHA_TEST 1\n" : "")
       << "#include <passes/forward/forward_surface.glsl>\n";
   // Each layer's value, computed in stack order; reads of it return it.
   for (const auto& name : stack.layers) {
@@ -35,7 +36,9 @@ gpu::ShaderRequest forwardMaterialVariant(const plugin::Registry& registry, cons
     out << "  sgLayerValue_" << plugin::glslName(name) << " = " << registry.layer(name).function << "(s);\n";
   out << "  sgWriteForward(sgLayerValue_" << plugin::glslName(stack.layers.back()) << ");\n"
       << "}\n";
-  return {.path = "generated/materials/" + stack.name + (plain ? "-plain" : "") + ".frag", .source = out.str(),
+  return {.path = "generated/materials/" + stack.name + (plain ? "-plain" : "") + (alphaTest ? "-alpha-test" : "") +
+                   ".frag",
+          .source = out.str(),
           .stage = gpu::ShaderStage::Fragment};
 }
 

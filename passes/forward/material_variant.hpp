@@ -9,7 +9,8 @@ namespace sg::passes {
 
 // Every layer of `stack` must run forward (Registry::materialFor picks the fallback).
 // `plain`: for draws with DrawItem::plainSurface (position and normal varyings only).
+// `alphaTest`: for alpha-mask draws (the only ones that may discard).
 gpu::ShaderRequest forwardMaterialVariant(const plugin::Registry& registry, const plugin::MaterialStack& stack,
-                                          bool plain = false);
+                                          bool plain = false, bool alphaTest = true);
 
 }  // namespace sg::passes

@@ -56,7 +56,15 @@ layout(set = 1, binding = 10) uniform sampler2D sheenRoughnessTexture;
 layout(set = 1, binding = 11) uniform sampler2D specularTexture;
 layout(set = 1, binding = 12) uniform sampler2D specularColorTexture;
 
-bool materialHas(int slot) { return (material.flags.z & (1u << slot)) != 0u; }
+bool materialHas(int slot) {
+#ifdef SG_FORWARD_PLAIN
+  // A plain forward draw's material has none of the core textures
+  // (DrawItem::plainSurface): lavapipe runs both sides of a branch, so the
+  // untaken texture reads would cost every pixel (issue 14: 0.85x forward-opaque).
+  if (slot <= SG_TEX_EMISSIVE) return false;
+#endif
+  return (material.flags.z & (1u << slot)) != 0u;
+}
 
 vec2 materialUv(int slot, vec2 uv0, vec2 uv1) {
   TextureSlot s = material.slots[slot];

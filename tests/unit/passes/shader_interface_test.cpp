@@ -288,11 +288,13 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
     const auto& forward = registry_.materialFor(name, plugin::ShadingPath::Forward);
     for (bool blend : {false, true})
       for (bool plain : {false, true})
-        for (bool frameMaps : {false, true}) {
-          const passes::ForwardFrameFeatures frame{frameMaps, frameMaps, frameMaps};
-          errors += mismatches("forward material " + forward.name + (plain ? " (plain) " : " ") + frame.key(),
-                               passes::forwardMaterialPipeline(registry_, forward, blend, plain, frame));
-        }
+        for (bool frameMaps : {false, true})
+          for (bool alphaTest : {false, true}) {
+            const passes::ForwardFrameFeatures frame{frameMaps, frameMaps, frameMaps};
+            errors += mismatches("forward material " + forward.name + (plain ? " (plain) " : " ") +
+                                     (alphaTest ? "(alpha-test) " : "") + frame.key(),
+                                 passes::forwardMaterialPipeline(registry_, forward, blend, plain, frame, alphaTest));
+          }
   }
   EXPECT_EQ(errors, "");
   EXPECT_EQ(unused(), "");
