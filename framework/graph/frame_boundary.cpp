@@ -21,9 +21,8 @@ void neededByResults(const RenderGraph& graph, const VersionTable& versions, con
     if (producer.valid()) needed[producer.index] = true;
   }
   for (const PassId p : order) {
-    if (graph.pass(p).sideEffect) needed[p.index] = true;
-    for (const ResourceAccess& a : graph.accessesOf(p))
-      if (declared.traits[a.resource.index].kind == ResourceKind::Imported) needed[p.index] = true;
+    const PassDecl& pass = graph.pass(p);
+    if (pass.sideEffect || (pass.kindsAccessed & kindBit(ResourceKind::Imported)) != 0) needed[p.index] = true;
   }
   for (auto it = order.rbegin(); it != order.rend(); ++it) {
     if (needed[it->index]) continue;
@@ -69,6 +68,7 @@ void planFrameBoundary(const RenderGraph& graph, const std::vector<bool>& needed
   if (externals.empty()) return;
   uses.resize(externals.size());
   for (const PassId p : plan.order) {
+    if ((graph.pass(p).kindsAccessed & kExternalKinds) == 0) continue;
     const QueueClass queue = graph.pass(p).queue;
     const uint32_t batch = passBatch[p.index];
     for (const ResourceAccess& a : graph.accessesOf(p)) {
