@@ -26,8 +26,7 @@ void cullPasses(const RenderGraph& graph, const VersionTable& versions, bool ext
   const uint8_t rootWrites =
       externalWritesAreSideEffects ? kindBit(ResourceKind::Imported) | kindBit(ResourceKind::Persistent) : 0;
   for (uint32_t p = 0; p < passCount; ++p) {
-    const PassDecl& pass = graph.pass(PassId{p});
-    if (pass.sideEffect || (pass.kindsWritten & rootWrites) != 0) keep(PassId{p});
+    if (graph.pass(PassId{p}).sideEffect || (versions.passKinds[p].written & rootWrites) != 0) keep(PassId{p});
   }
   for (const ResourceHandle output : graph.outputs()) {
     if (graph.isValid(output.id)) keep(versions.producerOf(output.id, output.version));

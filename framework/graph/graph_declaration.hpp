@@ -61,11 +61,6 @@ struct ResourceTraits {
   Format format = Format::Undefined;  // type == Image
 };
 
-// A ResourceKind as a bit of PassDecl::kindsAccessed / kindsWritten.
-constexpr uint8_t kindBit(ResourceKind kind) { return static_cast<uint8_t>(1u << static_cast<uint8_t>(kind)); }
-constexpr uint8_t kExternalKinds =
-    kindBit(ResourceKind::Imported) | kindBit(ResourceKind::Persistent) | kindBit(ResourceKind::History);
-
 // What the compile steps read of every pass (its name and callback are kept
 // apart, in GraphDeclaration, so that walking passes stays cache-friendly).
 struct PassDecl {
@@ -73,11 +68,6 @@ struct PassDecl {
   QueueClass queue = QueueClass::Graphics;
   PassKind kind = PassKind::Raster;
   bool sideEffect = false;
-  // The kinds of resource it accesses and writes (kindBit()), set while
-  // declaring: the steps that look for passes using imported or persistent
-  // resources skip the others without walking their accesses.
-  uint8_t kindsAccessed = 0;
-  uint8_t kindsWritten = 0;
   friend bool operator==(const PassDecl&, const PassDecl&) = default;
 };
 

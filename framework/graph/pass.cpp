@@ -46,11 +46,6 @@ constexpr std::array<PipelineStage, 8> kShaderPipelineStages = [] {
     uint32_t& count = versionCounts[resource.id.index];
     count = std::max(count, resource.version + (write ? 2u : 1u));
   }
-  if (resource.id.index < declaration.traits.size()) {
-    const uint8_t kind = kindBit(declaration.traits[resource.id.index].kind);
-    pass.kindsAccessed |= kind;
-    if (write) pass.kindsWritten |= kind;
-  }
   all.push_back({resource.id, resource.version, access, write, stages, t.layout, pipelineStages, t.access});
   ++mine.count;
 }
