@@ -110,7 +110,7 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
     lendTo(plan.waits, schedule_.waits,
            [&] { assignQueues(graph, plan.order, deps_, barriers_.handoffs, schedule_); });
   });
-  planFrameBoundary(graph, needed, schedule_.passBatch, plan);
+  planFrameBoundary(graph, versions_, needed, schedule_.passBatch, plan);
 
   // Accesses: one copy when the declaration holds them in pass order already
   // (passes declared one after the other), else pass by pass.

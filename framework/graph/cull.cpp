@@ -23,16 +23,10 @@ void cullPasses(const RenderGraph& graph, const VersionTable& versions, bool ext
     }
   };
 
+  const uint8_t rootWrites =
+      externalWritesAreSideEffects ? kindBit(ResourceKind::Imported) | kindBit(ResourceKind::Persistent) : 0;
   for (uint32_t p = 0; p < passCount; ++p) {
-    const PassDecl& pass = graph.pass(PassId{p});
-    bool root = pass.sideEffect;
-    for (const ResourceAccess& a : graph.accessesOf(PassId{p})) {
-      if (root) break;
-      if (!a.write || !externalWritesAreSideEffects || !graph.isValid(a.resource)) continue;
-      const ResourceKind kind = graph.declaration().traits[a.resource.index].kind;
-      root = kind == ResourceKind::Imported || kind == ResourceKind::Persistent;
-    }
-    if (root) keep(PassId{p});
+    if (graph.pass(PassId{p}).sideEffect || (versions.passKinds[p].written & rootWrites) != 0) keep(PassId{p});
   }
   for (const ResourceHandle output : graph.outputs()) {
     if (graph.isValid(output.id)) keep(versions.producerOf(output.id, output.version));

@@ -2,10 +2,6 @@
 
 namespace sg::graph {
 
-bool isDepth(Format format) { return format == Format::D32F || format == Format::D24S8; }
-
-bool hasStencil(Format format) { return format == Format::D24S8; }
-
 uint32_t bytesPerTexel(Format format) {
   switch (format) {
     case Format::Undefined: return 0;

@@ -25,8 +25,9 @@ enum class Format : uint8_t {
   D24S8,
 };
 
-bool isDepth(Format format);
-bool hasStencil(Format format);
+// Inline: validate() asks it for every image access.
+constexpr bool isDepth(Format format) { return format == Format::D32F || format == Format::D24S8; }
+constexpr bool hasStencil(Format format) { return format == Format::D24S8; }
 // Size of one texel in bytes; 0 for Undefined.
 uint32_t bytesPerTexel(Format format);
 std::string_view toString(Format format);

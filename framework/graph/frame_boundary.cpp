@@ -21,9 +21,9 @@ void neededByResults(const RenderGraph& graph, const VersionTable& versions, con
     if (producer.valid()) needed[producer.index] = true;
   }
   for (const PassId p : order) {
-    if (graph.pass(p).sideEffect) needed[p.index] = true;
-    for (const ResourceAccess& a : graph.accessesOf(p))
-      if (declared.traits[a.resource.index].kind == ResourceKind::Imported) needed[p.index] = true;
+    if (graph.pass(p).sideEffect || (versions.passKinds[p.index].accessed & kindBit(ResourceKind::Imported)) != 0) {
+      needed[p.index] = true;
+    }
   }
   for (auto it = order.rbegin(); it != order.rend(); ++it) {
     if (needed[it->index]) continue;
@@ -45,8 +45,8 @@ void orderTailLast(const std::vector<bool>& needed, std::vector<PassId>& order) 
   if (needsMove) std::stable_partition(order.begin(), order.end(), [&](PassId p) { return bool(needed[p.index]); });
 }
 
-void planFrameBoundary(const RenderGraph& graph, const std::vector<bool>& needed, std::span<const uint32_t> passBatch,
-                       CompiledPlan& plan) {
+void planFrameBoundary(const RenderGraph& graph, const VersionTable& versions, const std::vector<bool>& needed,
+                       std::span<const uint32_t> passBatch, CompiledPlan& plan) {
   const GraphDeclaration& declared = graph.declaration();
 
   plan.hostWaitBatch.fill(kInvalidIndex);
@@ -69,6 +69,7 @@ void planFrameBoundary(const RenderGraph& graph, const std::vector<bool>& needed
   if (externals.empty()) return;
   uses.resize(externals.size());
   for (const PassId p : plan.order) {
+    if ((versions.passKinds[p.index].accessed & kExternalKinds) == 0) continue;
     const QueueClass queue = graph.pass(p).queue;
     const uint32_t batch = passBatch[p.index];
     for (const ResourceAccess& a : graph.accessesOf(p)) {

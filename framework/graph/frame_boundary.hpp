@@ -38,8 +38,9 @@ void neededByResults(const RenderGraph& graph, const VersionTable& versions, con
 void orderTailLast(const std::vector<bool>& needed, std::vector<PassId>& order);
 
 // Marks the tail batches (Batch::tail), sets plan.hostWaitBatch and fills
-// plan.externalUses. `plan` must hold the order, resources and batches.
-void planFrameBoundary(const RenderGraph& graph, const std::vector<bool>& needed, std::span<const uint32_t> passBatch,
-                       CompiledPlan& plan);
+// plan.externalUses. `plan` must hold the order, resources and batches;
+// `versions` says which passes use external resources at all.
+void planFrameBoundary(const RenderGraph& graph, const VersionTable& versions, const std::vector<bool>& needed,
+                       std::span<const uint32_t> passBatch, CompiledPlan& plan);
 
 }  // namespace sg::graph

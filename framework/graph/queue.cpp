@@ -11,15 +11,6 @@ PassKind defaultPassKind(QueueClass queue) {
   return PassKind::Raster;
 }
 
-bool canRunOn(PassKind kind, QueueClass queue) {
-  switch (kind) {
-    case PassKind::Raster: return queue == QueueClass::Graphics;
-    case PassKind::Compute: return queue != QueueClass::Transfer;
-    case PassKind::Transfer: return true;
-  }
-  return false;
-}
-
 std::string_view toString(QueueClass queue) {
   switch (queue) {
     case QueueClass::Graphics: return "Graphics";

@@ -43,7 +43,15 @@ constexpr uint32_t queueCount(QueueMask mask) {
 }
 // The pass kind a queue implies when addPass() is not told one.
 PassKind defaultPassKind(QueueClass queue);
-bool canRunOn(PassKind kind, QueueClass queue);
+// Inline: validate() asks it for every pass.
+constexpr bool canRunOn(PassKind kind, QueueClass queue) {
+  switch (kind) {
+    case PassKind::Raster: return queue == QueueClass::Graphics;
+    case PassKind::Compute: return queue != QueueClass::Transfer;
+    case PassKind::Transfer: return true;
+  }
+  return false;
+}
 
 std::string_view toString(QueueClass queue);
 std::string_view toString(PassKind kind);

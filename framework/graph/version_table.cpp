@@ -16,9 +16,7 @@ void indexVersions(const RenderGraph& graph, VersionTable& table) {
   // Slots: one per version the declaration references (counted while declaring).
   // Versions of forged handles are left out; validate() reports them.
   const std::vector<uint32_t>& versionCounts = graph.declaration().versionCounts;
-  const auto indexed = [&](const ResourceAccess& a) {
-    return graph.isValid(a.resource) && a.version + (a.write ? 2u : 1u) <= versionCounts[a.resource.index];
-  };
+  const std::vector<ResourceTraits>& traits = graph.declaration().traits;
   table.firstSlot.resize(resourceCount + 1);
   table.firstSlot[0] = 0;
   for (uint32_t r = 0; r < resourceCount; ++r) table.firstSlot[r + 1] = table.firstSlot[r] + versionCounts[r];
@@ -31,9 +29,15 @@ void indexVersions(const RenderGraph& graph, VersionTable& table) {
   table.branches.clear();
   std::vector<VersionTable::Read>& reads = table.scratch;
   reads.clear();
+  table.passKinds.assign(passCount, {});
   for (uint32_t p = 0; p < passCount; ++p) {
+    VersionTable::PassKinds& kinds = table.passKinds[p];
     for (const ResourceAccess& a : graph.accessesOf(PassId{p})) {
-      if (!indexed(a)) continue;
+      if (!graph.isValid(a.resource)) continue;
+      const uint8_t kind = kindBit(traits[a.resource.index].kind);
+      kinds.accessed |= kind;
+      if (a.write) kinds.written |= kind;
+      if (a.version + (a.write ? 2u : 1u) > versionCounts[a.resource.index]) continue;
       const uint32_t slot = table.firstSlot[a.resource.index] + a.version;
       if (!a.write) {
         ++table.firstReader[slot + 1];

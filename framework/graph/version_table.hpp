@@ -9,6 +9,11 @@
 
 namespace sg::graph {
 
+// A ResourceKind as a bit of VersionTable::PassKinds.
+constexpr uint8_t kindBit(ResourceKind kind) { return static_cast<uint8_t>(1u << static_cast<uint8_t>(kind)); }
+constexpr uint8_t kExternalKinds =
+    kindBit(ResourceKind::Imported) | kindBit(ResourceKind::Persistent) | kindBit(ResourceKind::History);
+
 // Who produces and who reads each version of each resource, over all declared
 // passes (culled or not). Every compile step starts from this index.
 struct VersionTable {
@@ -29,6 +34,14 @@ struct VersionTable {
   std::vector<uint32_t> firstReader;
   std::vector<PassId> readers;
   std::vector<BranchingWrite> branches;
+  // Per pass: the kinds of resource it accesses and writes (kindBit() bits),
+  // gathered in the same walk, so that the steps looking for passes that use
+  // imported or persistent resources skip the others without walking their accesses.
+  struct PassKinds {
+    uint8_t accessed = 0;
+    uint8_t written = 0;
+  };
+  std::vector<PassKinds> passKinds;
   // indexVersions()'s working memory (the reads in declaration order), kept for the next call.
   struct Read {
     uint32_t slot;

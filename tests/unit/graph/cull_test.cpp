@@ -64,6 +64,29 @@ TEST(GraphCull, WritingAnImportCountsAsSideEffectUnlessConfiguredOff) {
   EXPECT_EQ(cullPasses(g, indexVersions(g), false), std::vector<bool>{true});
 }
 
+// The roots come from the per-pass kinds indexVersions() gathers: writing a
+// persistent resource is a root like writing an import; reading one is not.
+TEST(GraphCull, PassKindsMakeWritersOfPersistentResourcesRootsAndReadersNot) {
+  RenderGraph g;
+  auto accum = g.importPersistentImage("accum", colorImage(), ResourceState{.stages = PipelineStage::AllCommands});
+  auto scratch = g.createImage("scratch", colorImage());
+  auto& reader = g.addPass("reader", QueueClass::Graphics);
+  reader.read(accum, Access::Sampled);
+  (void)reader.write(scratch, Access::ColorAttachment);
+  (void)g.addPass("writer", QueueClass::AsyncCompute).write(accum, Access::StorageWrite);
+
+  const VersionTable versions = indexVersions(g);
+  ASSERT_EQ(versions.passKinds.size(), 2u);
+  EXPECT_EQ(versions.passKinds[0].accessed,
+            kindBit(ResourceKind::Persistent) | kindBit(ResourceKind::TransientImage));
+  EXPECT_EQ(versions.passKinds[0].written, kindBit(ResourceKind::TransientImage));
+  EXPECT_EQ(versions.passKinds[1].accessed, kindBit(ResourceKind::Persistent));
+  EXPECT_EQ(versions.passKinds[1].written, kindBit(ResourceKind::Persistent));
+  // The writer reads nothing the reader produces, so only the writer is kept.
+  EXPECT_EQ(cullPasses(g, versions, true), (std::vector<bool>{true, false}));
+  EXPECT_EQ(cullPasses(g, versions, false), (std::vector<bool>{true, true}));
+}
+
 TEST(GraphCull, OutputKeepsOnlyTheProducerOfTheMarkedVersion) {
   RenderGraph g;
   auto img = g.createImage("img", colorImage());
