@@ -1,6 +1,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/gtc/packing.hpp>
+
 #include <shadelgraph/shadel/level_selection.hpp>
 #include <shadelgraph/shadel/remap_entry.hpp>
 #include <shadelgraph/shadel/shadel_address.hpp>
@@ -14,8 +16,24 @@ constexpr float kMinFootprintSquared = 1e-20f;
 
 }  // namespace
 
-LevelSelection selectDetailLevel(glm::vec2 dShadelDx, glm::vec2 dShadelDy, float bias, uint32_t levelCount) {
-  const float rhoSquared = std::max(glm::dot(dShadelDx, dShadelDx), glm::dot(dShadelDy, dShadelDy));
+uint32_t packLevelRule(LevelRule rule) { return glm::packHalf2x16({rule.maxAnisotropyLog2, rule.bias}); }
+
+LevelRule unpackLevelRule(uint32_t packed) {
+  const glm::vec2 v = glm::unpackHalf2x16(packed);
+  return {.maxAnisotropyLog2 = v.x, .bias = v.y};
+}
+
+float levelFootprintSquared(glm::vec2 dShadelDx, glm::vec2 dShadelDy, float maxAnisotropyLog2) {
+  const float longer = std::max(glm::dot(dShadelDx, dShadelDx), glm::dot(dShadelDy, dShadelDy));
+  if (!(maxAnisotropyLog2 > 0.0f)) return longer;
+  const float det = dShadelDx.x * dShadelDy.y - dShadelDx.y * dShadelDy.x;
+  const float minor = longer > 0.0f ? det * det / longer : 0.0f;
+  return std::max(longer * std::exp2(-2.0f * maxAnisotropyLog2), minor);
+}
+
+LevelSelection selectDetailLevel(glm::vec2 dShadelDx, glm::vec2 dShadelDy, float bias, uint32_t levelCount,
+                                 float maxAnisotropyLog2) {
+  const float rhoSquared = levelFootprintSquared(dShadelDx, dShadelDy, maxAnisotropyLog2);
   LevelSelection selection;
   selection.level = 0.5f * std::log2(std::max(rhoSquared, kMinFootprintSquared)) + bias;
   float clamped = selection.level;
@@ -28,8 +46,8 @@ LevelSelection selectDetailLevel(glm::vec2 dShadelDx, glm::vec2 dShadelDy, float
 }
 
 LevelSelection selectFilterLevel(CompositeFilter filter, glm::vec2 dShadelDx, glm::vec2 dShadelDy, float bias,
-                                 uint32_t levelCount) {
-  LevelSelection selection = selectDetailLevel(dShadelDx, dShadelDy, bias, levelCount);
+                                 uint32_t levelCount, float maxAnisotropyLog2) {
+  LevelSelection selection = selectDetailLevel(dShadelDx, dShadelDy, bias, levelCount, maxAnisotropyLog2);
   if (filter == CompositeFilter::Trilinear) return selection;
   // fine + blend is the clamped level; rounding it cannot pass levelCount - 1.
   selection.fine = selection.blend >= 0.5f ? selection.coarse : selection.fine;

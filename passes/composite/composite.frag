@@ -11,6 +11,7 @@
 layout(early_fragment_tests) in;
 layout(set = 0, binding = kBindLayerImage) uniform sampler2D layerImage;  // texelFetch only
 layout(location = 0) in vec2 inShadingUv;
+layout(location = 4) flat in uint inLevelRule;  // SgDecoupledObject.levelRule
 layout(location = 0) out vec4 outColor;
 
 #ifdef SG_ALPHA_TEST
@@ -52,9 +53,9 @@ vec4 filterLevel(uint level) {
 void main() {
   SgShadelInstance instance = shadelInstances[object.objectId];
   float size0 = float(instance.level0Size);
-  SgLevelSelection sel =
-      sgSelectFilterLevel(SG_FILTER, dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0, params.bias,
-                          instance.levelCount);
+  vec2 rule = sgUnpackLevelRule(inLevelRule);
+  SgLevelSelection sel = sgSelectFilterLevel(SG_FILTER, dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0,
+                                             params.bias + rule.y, instance.levelCount, rule.x);
 #ifdef SG_ALPHA_TEST
   if (sgMaskedOut(inUv0, inUv1, inColorAlpha)) discard;  // after the derivatives: uniform control flow for them
 #endif

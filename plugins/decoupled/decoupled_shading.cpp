@@ -8,9 +8,11 @@
 #include <shadelgraph/gpu/pass_context.hpp>
 #include <decoupled_frame.hpp>
 #include <shadelgraph/render/material_variants.hpp>
+#include <shadelgraph/scene/scene.hpp>
 #include <shadelgraph/scene/uv_chart.hpp>
 #include <shadelgraph/shadel/id_map_cache.hpp>
 #include <shadelgraph/shadel/level0_resolution.hpp>
+#include <shadelgraph/shadel/level_selection.hpp>
 #include <shadelgraph/shadel/shadel_gpu_tables.hpp>
 
 #include "layer-shade/layer_shade.hpp"
@@ -34,6 +36,12 @@ gpu::Buffer upload(gpu::Device& device, const std::vector<T>& data, const char* 
                      {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryLocation::Upload, name, "decoupled tables"});
   if (!data.empty()) buffer.write(data.data(), data.size() * sizeof(T));
   return buffer;
+}
+
+// How an object's level follows its footprint (SgDecoupledObject.levelRule).
+uint32_t levelRule(const scene::Scene& scene, uint32_t material) {
+  return shadel::packLevelRule(scene::samplesUnmipmappedTexture(scene, int(material)) ? shadel::kUnmipmappedLevelRule
+                                                                                       : shadel::LevelRule{});
 }
 
 // A material that reads neighbours (support) or its own last value
@@ -114,6 +122,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
       slot.record.world = draw.world;
       slot.record.material = draw.material;
       slot.record.supportChunks = supportRadius(materials, material) > 0 ? 1u : 0u;
+      slot.record.levelRule = levelRule(in.scene, draw.material);
       slot.materialStack = draw.materialStack;
       slot.changedFrame = frames_;
       slot.reshadedWhole = reshadedWhole(materials, material);
@@ -207,7 +216,8 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
     slot.reshadedWhole = reshadedWhole(materials, material);
     ++allocatedObjects_;
     slot.record = {draw.world, draw.firstIndex, draw.vertexOffset, draw.indexCount / 3, draw.material, offset,
-                   uint32_t(primitive.uvSet), primitive.tileOffset, supportRadius(materials, material) > 0 ? 1u : 0u, 0u, 0u, 0u};
+                   uint32_t(primitive.uvSet), primitive.tileOffset, supportRadius(materials, material) > 0 ? 1u : 0u, 0u, 0u,
+                   levelRule(in.scene, draw.material)};
   }
 }
 

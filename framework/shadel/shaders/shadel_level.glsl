@@ -14,10 +14,24 @@ struct SgLevelSelection {
   float blend;   // weight of coarse; 0 when coarse == fine
 };
 
+// sg::shadel::LevelRule, unpacked (SgDecoupledObject.levelRule): x the
+// maximum log2 anisotropy the level follows, y the object's level bias.
+vec2 sgUnpackLevelRule(uint packed) { return unpackHalf2x16(packed); }
+
+// Mirrors sg::shadel::levelFootprintSquared.
+float sgLevelFootprintSquared(vec2 dShadelDx, vec2 dShadelDy, float maxAnisotropyLog2) {
+  float longer = max(dot(dShadelDx, dShadelDx), dot(dShadelDy, dShadelDy));
+  if (!(maxAnisotropyLog2 > 0.0)) return longer;
+  float det = dShadelDx.x * dShadelDy.y - dShadelDx.y * dShadelDy.x;
+  float minor = longer > 0.0 ? det * det / longer : 0.0;
+  return max(longer * exp2(-2.0 * maxAnisotropyLog2), minor);
+}
+
 // Mirrors sg::shadel::selectDetailLevel. dShadelDx/Dy: dFdx/dFdy of the
 // shading UV times the instance's level0Size.
-SgLevelSelection sgSelectDetailLevel(vec2 dShadelDx, vec2 dShadelDy, float bias, uint levelCount) {
-  float rhoSquared = max(dot(dShadelDx, dShadelDx), dot(dShadelDy, dShadelDy));
+SgLevelSelection sgSelectDetailLevel(vec2 dShadelDx, vec2 dShadelDy, float bias, uint levelCount,
+                                     float maxAnisotropyLog2) {
+  float rhoSquared = sgLevelFootprintSquared(dShadelDx, dShadelDy, maxAnisotropyLog2);
   SgLevelSelection selection;
   selection.level = 0.5 * log2(max(rhoSquared, 1e-20)) + bias;
   float clamped = selection.level;
@@ -38,13 +52,22 @@ const uint SG_FILTER_TRILINEAR = 2u;  // the 2x2 taps of the fine and of the coa
 
 // Mirrors sg::shadel::selectFilterLevel: trilinear as sgSelectDetailLevel;
 // point and bilinear the nearest level (round), in `fine` and `coarse`.
-SgLevelSelection sgSelectFilterLevel(uint compositeFilter, vec2 dShadelDx, vec2 dShadelDy, float bias, uint levelCount) {
-  SgLevelSelection selection = sgSelectDetailLevel(dShadelDx, dShadelDy, bias, levelCount);
+SgLevelSelection sgSelectFilterLevel(uint compositeFilter, vec2 dShadelDx, vec2 dShadelDy, float bias, uint levelCount,
+                                     float maxAnisotropyLog2) {
+  SgLevelSelection selection = sgSelectDetailLevel(dShadelDx, dShadelDy, bias, levelCount, maxAnisotropyLog2);
   if (compositeFilter == SG_FILTER_TRILINEAR) return selection;
   selection.fine = selection.blend >= 0.5 ? selection.coarse : selection.fine;
   selection.coarse = selection.fine;
   selection.blend = 0.0;
   return selection;
+}
+
+// The longer axis (the GL isotropic rule, LevelRule's default).
+SgLevelSelection sgSelectDetailLevel(vec2 dShadelDx, vec2 dShadelDy, float bias, uint levelCount) {
+  return sgSelectDetailLevel(dShadelDx, dShadelDy, bias, levelCount, 0.0);
+}
+SgLevelSelection sgSelectFilterLevel(uint compositeFilter, vec2 dShadelDx, vec2 dShadelDy, float bias, uint levelCount) {
+  return sgSelectFilterLevel(compositeFilter, dShadelDx, dShadelDy, bias, levelCount, 0.0);
 }
 
 // sg::shadel::BilinearTaps: level-local shadels {lo.x, hi.x} x {lo.y, hi.y}.

@@ -82,6 +82,11 @@ std::string compareMirrorResults(const std::vector<uint32_t>& cases, const uint3
                                                           {value(c[13]), value(c[14])}, value(c[15]), c[16]);
     const bool nearHalf = std::abs(selection.level - 0.5f - std::round(selection.level - 0.5f)) < 1e-4f;
     if (!nearHalf && r[26] != nearestLevel.fine) return fail("nearest level", r[26], nearestLevel.fine);
+    const float anisotropyLog2 = float(c[16] % 4) * 0.75f;
+    const float limited = selectDetailLevel({value(c[11]), value(c[12])}, {value(c[13]), value(c[14])}, value(c[15]), c[16],
+                                            anisotropyLog2).level;
+    if (std::abs(value(r[27]) - limited) > 1e-5f * std::max(1.0f, std::abs(limited)))
+      return fail("anisotropy-limited level", value(r[27]), limited);
 
     const BilinearTaps taps = bilinearTaps({value(c[17]), value(c[18])}, c[19]);
     const uint32_t tapWords[] = {taps.lo.x, taps.lo.y, taps.hi.x, taps.hi.y, bits(taps.weight.x), bits(taps.weight.y)};

@@ -56,6 +56,9 @@ void main() {
   results[r + 13u] = selection.coarse;
   results[r + 14u] = floatBitsToUint(selection.blend);
   results[r + 26u] = sgSelectFilterLevel(SG_FILTER_BILINEAR, dx, dy, uintBitsToFloat(cases[c + 15u]), cases[c + 16u]).fine;
+  // An anisotropy-limited level (LevelRule::maxAnisotropyLog2 0, 0.75, 1.5 or 2.25 by the level count).
+  results[r + 27u] = floatBitsToUint(
+      sgSelectDetailLevel(dx, dy, uintBitsToFloat(cases[c + 15u]), cases[c + 16u], float(cases[c + 16u] % 4u) * 0.75).level);
 
   SgBilinearTaps taps = sgBilinearTaps(uintBitsToFloat(uvec2(cases[c + 17u], cases[c + 18u])), cases[c + 19u]);
   SgLevelRect rect = SgLevelRect(uvec2(1000u, 2000u), cases[c + 19u], 64u);
