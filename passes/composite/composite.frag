@@ -11,7 +11,6 @@
 layout(early_fragment_tests) in;
 layout(set = 0, binding = kBindLayerImage) uniform sampler2D layerImage;  // texelFetch only
 layout(location = 0) in vec2 inShadingUv;
-layout(location = 4) flat in uint inLevelRule;  // SgDecoupledObject.levelRule
 layout(location = 0) out vec4 outColor;
 
 #ifdef SG_ALPHA_TEST
@@ -53,9 +52,9 @@ vec4 filterLevel(uint level) {
 void main() {
   SgShadelInstance instance = shadelInstances[object.objectId];
   float size0 = float(instance.level0Size);
-  vec2 rule = sgUnpackLevelRule(inLevelRule);
-  SgLevelSelection sel = sgSelectFilterLevel(SG_FILTER, dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0,
-                                             params.bias + rule.y, instance.levelCount, rule.x);
+  SgLevelSelection sel =
+      sgSelectFilterLevel(SG_FILTER, dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0, params.bias,
+                          instance.levelCount);
 #ifdef SG_ALPHA_TEST
   if (sgMaskedOut(inUv0, inUv1, inColorAlpha)) discard;  // after the derivatives: uniform control flow for them
 #endif

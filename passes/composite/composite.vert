@@ -6,7 +6,6 @@
 #include <framework/shadel/shaders/decoupled.glsl>
 
 layout(location = 0) out vec2 outShadingUv;
-layout(location = 4) flat out uint outLevelRule;  // SgDecoupledObject.levelRule: read once per vertex, not per pixel
 #ifdef SG_ALPHA_TEST  // alpha-mask objects: what alpha_test.glsl reads
 layout(location = 1) out vec2 outUv0;
 layout(location = 2) out vec2 outUv1;
@@ -16,7 +15,6 @@ layout(location = 3) out float outColorAlpha;
 void main() {
   SgDecoupledObject o = objects[object.objectId];
   outShadingUv = (o.shadingUvSet == 1u ? inUv1 : inUv0) - o.tileOffset;
-  outLevelRule = o.levelRule;
   precise vec4 world = object.model * vec4(inPosition, 1.0);
   precise vec4 clip = frame.viewProjection * world;
   gl_Position = clip;

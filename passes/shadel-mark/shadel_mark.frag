@@ -18,7 +18,6 @@
 
 layout(early_fragment_tests) in;
 layout(location = 0) in vec2 inShadingUv;
-layout(location = 4) flat in uint inLevelRule;  // SgDecoupledObject.levelRule
 
 #ifdef SG_ALPHA_TEST
 // Alpha-mask objects: the pixels their alpha test cuts away (the z-prepass
@@ -120,9 +119,9 @@ const bool kMarkCoarse = SG_FILTER == SG_FILTER_TRILINEAR;
 void main() {
   SgShadelInstance instance = shadelInstances[object.objectId];
   float size0 = float(instance.level0Size);
-  vec2 rule = sgUnpackLevelRule(inLevelRule);
-  SgLevelSelection sel = sgSelectFilterLevel(SG_FILTER, dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0,
-                                             params.bias + rule.y, instance.levelCount, rule.x);
+  SgLevelSelection sel =
+      sgSelectFilterLevel(SG_FILTER, dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0, params.bias,
+                          instance.levelCount);
 #ifdef SG_ALPHA_TEST
   if (sgMaskedOut(inUv0, inUv1, inColorAlpha)) return;  // after the derivatives: uniform control flow for them
 #endif

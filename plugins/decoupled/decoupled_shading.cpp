@@ -38,7 +38,7 @@ gpu::Buffer upload(gpu::Device& device, const std::vector<T>& data, const char* 
   return buffer;
 }
 
-// How an object's level follows its footprint (SgDecoupledObject.levelRule).
+// How an object's level follows its footprint (DecoupledFrame::levelRules).
 uint32_t levelRule(const scene::Scene& scene, uint32_t material) {
   return shadel::packLevelRule(scene::samplesUnmipmappedTexture(scene, int(material)) ? shadel::kUnmipmappedLevelRule
                                                                                        : shadel::LevelRule{});
@@ -122,7 +122,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
       slot.record.world = draw.world;
       slot.record.material = draw.material;
       slot.record.supportChunks = supportRadius(materials, material) > 0 ? 1u : 0u;
-      slot.record.levelRule = levelRule(in.scene, draw.material);
+      slot.levelRule = levelRule(in.scene, draw.material);
       slot.materialStack = draw.materialStack;
       slot.changedFrame = frames_;
       slot.reshadedWhole = reshadedWhole(materials, material);
@@ -216,8 +216,8 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
     slot.reshadedWhole = reshadedWhole(materials, material);
     ++allocatedObjects_;
     slot.record = {draw.world, draw.firstIndex, draw.vertexOffset, draw.indexCount / 3, draw.material, offset,
-                   uint32_t(primitive.uvSet), primitive.tileOffset, supportRadius(materials, material) > 0 ? 1u : 0u, 0u, 0u,
-                   levelRule(in.scene, draw.material)};
+                   uint32_t(primitive.uvSet), primitive.tileOffset, supportRadius(materials, material) > 0 ? 1u : 0u, 0u, 0u, 0u};
+    slot.levelRule = levelRule(in.scene, draw.material);
   }
 }
 
@@ -425,9 +425,12 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
   graph::RenderGraph& graph = ctx.graph();
   frame_.reset();
   if (!hasObjects()) return;
+  levelRules_.clear();
+  for (const auto& slot : slots_) levelRules_.push_back(slot.levelRule);
   frame_.emplace(passes::DecoupledFrame{.view = ctx.view(frameObjects_),
                                         .objectIds = frameObjects_,
                                         .objectDraws = identity_,
+                                        .levelRules = levelRules_,
                                         .params = params_[ring()], .objects = objects_[ring()], .shadelInstances = shadelInstances_,
                                         .levelRects = levelRects_, .ownedEntries = ownedEntries_, .idMaps = idMapBuffer_,
                                         .ownedEntryCount = ownedEntryCount_, .objectCount = objectCount,

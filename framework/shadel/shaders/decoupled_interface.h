@@ -81,7 +81,7 @@ struct SgDecoupledObject {
   uint supportChunks;  // support-expand grows its marked chunks by this many (0: no neighbourhood layer)
   uint reuse;          // 1: chunks it marked last frame too keep their stored shading (not shaded)
   uint keepLayers;     // bit p: its view-independent layer in persistent slot p keeps last frame's values (layer_rate.hpp)
-  uint levelRule;      // how its level follows the footprint: sg::shadel::packLevelRule (sgUnpackLevelRule); 112 bytes, as std430 laid it out: every record's mat4 stays 16-byte aligned
+  uint pad2;  // 112 bytes, as std430 laid it out: every record's mat4 stays 16-byte aligned
 };
 
 // What the passes count, read back after the frame.

@@ -14,8 +14,8 @@ struct SgLevelSelection {
   float blend;   // weight of coarse; 0 when coarse == fine
 };
 
-// sg::shadel::LevelRule, unpacked (SgDecoupledObject.levelRule): x the
-// maximum log2 anisotropy the level follows, y the object's level bias.
+// sg::shadel::LevelRule, unpacked (sg::shadel::packLevelRule): x the maximum
+// log2 anisotropy the level follows, y the object's level bias.
 vec2 sgUnpackLevelRule(uint packed) { return unpackHalf2x16(packed); }
 
 // Mirrors sg::shadel::levelFootprintSquared.
@@ -27,13 +27,25 @@ float sgLevelFootprintSquared(vec2 dShadelDx, vec2 dShadelDy, float maxAnisotrop
   return max(longer * exp2(-2.0 * maxAnisotropyLog2), minor);
 }
 
-// Mirrors sg::shadel::selectDetailLevel. dShadelDx/Dy: dFdx/dFdy of the
-// shading UV times the instance's level0Size.
-SgLevelSelection sgSelectDetailLevel(vec2 dShadelDx, vec2 dShadelDy, float bias, uint levelCount,
-                                     float maxAnisotropyLog2) {
-  float rhoSquared = sgLevelFootprintSquared(dShadelDx, dShadelDy, maxAnisotropyLog2);
+// An object's level rule is a pipeline variant of shadel-mark and composite:
+// SG_LEVEL_RULE, its packLevelRule word (passes::levelRuleDefine), set only
+// for objects with a rule. Without it the level is the isotropic one and the
+// shaders are those of before the rule, so other objects pay nothing for it.
+#ifdef SG_LEVEL_RULE
+#define SG_LEVEL_FOOTPRINT_SQUARED(dx, dy) sgLevelFootprintSquared(dx, dy, sgUnpackLevelRule(SG_LEVEL_RULE).x)
+#define SG_LEVEL_BIAS(bias) (bias + sgUnpackLevelRule(SG_LEVEL_RULE).y)
+#else
+#define SG_LEVEL_FOOTPRINT_SQUARED(dx, dy) max(dot(dx, dx), dot(dy, dy))
+#define SG_LEVEL_BIAS(bias) bias
+#endif
+
+// Mirrors sg::shadel::selectDetailLevel (with SG_LEVEL_RULE: its
+// maxAnisotropyLog2 and the rule's bias added). dShadelDx/Dy: dFdx/dFdy of
+// the shading UV times the instance's level0Size.
+SgLevelSelection sgSelectDetailLevel(vec2 dShadelDx, vec2 dShadelDy, float bias, uint levelCount) {
+  float rhoSquared = SG_LEVEL_FOOTPRINT_SQUARED(dShadelDx, dShadelDy);
   SgLevelSelection selection;
-  selection.level = 0.5 * log2(max(rhoSquared, 1e-20)) + bias;
+  selection.level = 0.5 * log2(max(rhoSquared, 1e-20)) + SG_LEVEL_BIAS(bias);
   float clamped = selection.level;
   if (!(clamped >= 0.0)) clamped = 0.0;
   clamped = min(clamped, float(levelCount - 1u));
@@ -52,22 +64,13 @@ const uint SG_FILTER_TRILINEAR = 2u;  // the 2x2 taps of the fine and of the coa
 
 // Mirrors sg::shadel::selectFilterLevel: trilinear as sgSelectDetailLevel;
 // point and bilinear the nearest level (round), in `fine` and `coarse`.
-SgLevelSelection sgSelectFilterLevel(uint compositeFilter, vec2 dShadelDx, vec2 dShadelDy, float bias, uint levelCount,
-                                     float maxAnisotropyLog2) {
-  SgLevelSelection selection = sgSelectDetailLevel(dShadelDx, dShadelDy, bias, levelCount, maxAnisotropyLog2);
+SgLevelSelection sgSelectFilterLevel(uint compositeFilter, vec2 dShadelDx, vec2 dShadelDy, float bias, uint levelCount) {
+  SgLevelSelection selection = sgSelectDetailLevel(dShadelDx, dShadelDy, bias, levelCount);
   if (compositeFilter == SG_FILTER_TRILINEAR) return selection;
   selection.fine = selection.blend >= 0.5 ? selection.coarse : selection.fine;
   selection.coarse = selection.fine;
   selection.blend = 0.0;
   return selection;
-}
-
-// The longer axis (the GL isotropic rule, LevelRule's default).
-SgLevelSelection sgSelectDetailLevel(vec2 dShadelDx, vec2 dShadelDy, float bias, uint levelCount) {
-  return sgSelectDetailLevel(dShadelDx, dShadelDy, bias, levelCount, 0.0);
-}
-SgLevelSelection sgSelectFilterLevel(uint compositeFilter, vec2 dShadelDx, vec2 dShadelDy, float bias, uint levelCount) {
-  return sgSelectFilterLevel(compositeFilter, dShadelDx, dShadelDy, bias, levelCount, 0.0);
 }
 
 // sg::shadel::BilinearTaps: level-local shadels {lo.x, hi.x} x {lo.y, hi.y}.

@@ -9,6 +9,8 @@
 
 #include <glm/glm.hpp>
 
+#include <shadelgraph/shadel/level_selection.hpp>
+
 namespace sg::shadel::test {
 
 inline constexpr uint32_t kCaseWords = 20;
@@ -56,9 +58,6 @@ void main() {
   results[r + 13u] = selection.coarse;
   results[r + 14u] = floatBitsToUint(selection.blend);
   results[r + 26u] = sgSelectFilterLevel(SG_FILTER_BILINEAR, dx, dy, uintBitsToFloat(cases[c + 15u]), cases[c + 16u]).fine;
-  // An anisotropy-limited level (LevelRule::maxAnisotropyLog2 0, 0.75, 1.5 or 2.25 by the level count).
-  results[r + 27u] = floatBitsToUint(
-      sgSelectDetailLevel(dx, dy, uintBitsToFloat(cases[c + 15u]), cases[c + 16u], float(cases[c + 16u] % 4u) * 0.75).level);
 
   SgBilinearTaps taps = sgBilinearTaps(uintBitsToFloat(uvec2(cases[c + 17u], cases[c + 18u])), cases[c + 19u]);
   SgLevelRect rect = SgLevelRect(uvec2(1000u, 2000u), cases[c + 19u], 64u);
@@ -89,6 +88,9 @@ std::vector<uint32_t> makeMirrorCases(uint32_t count, uint32_t seed);
 // Compares GPU results with the C++ functions; returns a description of the
 // first mismatch, or an empty string. Level selections within 1e-4 of an
 // integer level are compared only loosely (log2 may differ in the last ulp).
-std::string compareMirrorResults(const std::vector<uint32_t>& cases, const uint32_t* results, uint32_t count);
+// rule: the level rule the shader was compiled with (SG_LEVEL_RULE, the
+// pipeline variant of shadel-mark and composite); {} without it.
+std::string compareMirrorResults(const std::vector<uint32_t>& cases, const uint32_t* results, uint32_t count,
+                                 LevelRule rule = {});
 
 }  // namespace sg::shadel::test
