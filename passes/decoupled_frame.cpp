@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <shadelgraph/gpu/pass_context.hpp>
+#include <shadelgraph/shadel/level_selection.hpp>
 
 namespace sg::passes {
 
@@ -17,9 +18,8 @@ std::pair<std::string, std::string> filterDefine(int filter) {
   return {"SG_FILTER", std::to_string(filter)};
 }
 
-std::optional<std::pair<std::string, std::string>> levelRuleDefine(uint32_t levelRule) {
-  if (levelRule == 0) return std::nullopt;
-  return std::pair<std::string, std::string>{"SG_LEVEL_RULE", std::to_string(levelRule) + "u"};
+std::vector<std::pair<std::string, std::string>> levelRuleDefines(uint32_t levelRule) {
+  return shadel::levelRuleDefines(shadel::unpackLevelRule(levelRule));
 }
 
 std::string levelRuleVariant(uint32_t levelRule) {

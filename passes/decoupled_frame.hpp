@@ -7,10 +7,10 @@
 // (framework/shadel/shaders/decoupled_interface.h).
 #include <functional>
 #include <initializer_list>
-#include <optional>
 #include <span>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <shadelgraph/gpu/buffer.hpp>
 #include <shadelgraph/gpu/descriptors.hpp>
@@ -33,7 +33,7 @@ struct DecoupledFrame {
   std::span<const uint32_t> objectDraws;  // every decoupled object's draw, by object index (materials)
   // Every decoupled object's level rule (shadel::packLevelRule), by object
   // index; empty: all 0 (the isotropic level). A pipeline variant of
-  // shadel-mark and composite (levelRuleDefine), chosen per draw.
+  // shadel-mark and composite (levelRuleDefines), chosen per draw.
   std::span<const uint32_t> levelRules;
   const gpu::Buffer& params;
   const gpu::Buffer& objects;
@@ -84,10 +84,11 @@ struct DecoupledFrame {
 // The define shadel-mark and composite are both compiled with: the filter
 // (SG_FILTER_* of shadel_level.glsl). Throws for a filter outside 0..2.
 std::pair<std::string, std::string> filterDefine(int filter);
-// The define of the shadel-mark and composite variant for objects with a
-// level rule (SG_LEVEL_RULE, shadel_level.glsl): none for rule 0, so objects
-// without one keep the shaders of before the rule and pay nothing for it.
-std::optional<std::pair<std::string, std::string>> levelRuleDefine(uint32_t levelRule);
+// The defines of the shadel-mark and composite variant for objects with
+// level rule `levelRule` (shadel::packLevelRule; shadel::levelRuleDefines):
+// none for rule 0, so objects without one keep the shaders of before the
+// rule and pay nothing for it.
+std::vector<std::pair<std::string, std::string>> levelRuleDefines(uint32_t levelRule);
 // What names a level rule's pipeline variant: "" for rule 0, else "/rule-<hex word>".
 std::string levelRuleVariant(uint32_t levelRule);
 

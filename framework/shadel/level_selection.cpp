@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <glm/gtc/packing.hpp>
 
@@ -21,6 +22,17 @@ uint32_t packLevelRule(LevelRule rule) { return glm::packHalf2x16({rule.maxAniso
 LevelRule unpackLevelRule(uint32_t packed) {
   const glm::vec2 v = glm::unpackHalf2x16(packed);
   return {.maxAnisotropyLog2 = v.x, .bias = v.y};
+}
+
+std::vector<std::pair<std::string, std::string>> levelRuleDefines(LevelRule rule) {
+  if (rule.maxAnisotropyLog2 == 0.0f && rule.bias == 0.0f) return {};
+  // %.9e: a float literal (with a point) that reads back as the same float.
+  const auto literal = [](float f) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9e", double(f));
+    return std::string(text);
+  };
+  return {{"SG_LEVEL_RULE_ANISOTROPY_LOG2", literal(rule.maxAnisotropyLog2)}, {"SG_LEVEL_RULE_BIAS", literal(rule.bias)}};
 }
 
 float levelFootprintSquared(glm::vec2 dShadelDx, glm::vec2 dShadelDy, float maxAnisotropyLog2) {

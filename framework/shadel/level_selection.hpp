@@ -6,6 +6,9 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -42,9 +45,14 @@ struct LevelRule {
 inline constexpr LevelRule kUnmipmappedLevelRule{.maxAnisotropyLog2 = 1.0f, .bias = 0.0f};
 
 // Half floats in one uint (low: maxAnisotropyLog2, high: bias), as GLSL's
-// packHalf2x16: exact for quarter steps. GLSL: sgUnpackLevelRule.
+// packHalf2x16: exact for quarter steps (DecoupledFrame::levelRules).
 uint32_t packLevelRule(LevelRule rule);
 LevelRule unpackLevelRule(uint32_t packed);
+
+// The defines of shadel_level.glsl's variant for `rule`, as float literals:
+// SG_LEVEL_RULE_ANISOTROPY_LOG2 and SG_LEVEL_RULE_BIAS; none for the default
+// rule, whose shaders are those of before the rule.
+std::vector<std::pair<std::string, std::string>> levelRuleDefines(LevelRule rule);
 
 // The squared footprint length the level is log2 of (in level-0 shadels):
 // max(longer² / 4^k, minor²). GLSL: sgLevelFootprintSquared.

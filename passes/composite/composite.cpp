@@ -3,6 +3,7 @@
 #include <array>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <shadelgraph/gpu/pass_context.hpp>
 
@@ -18,7 +19,7 @@ gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView, bool alp
                                             uint32_t levelRule) {
   std::vector<std::pair<std::string, std::string>> defines{filterDefine(filter)};
   if (levelView) defines.emplace_back("SG_VIEW_LEVEL", "1");
-  if (const auto rule = levelRuleDefine(levelRule)) defines.push_back(*rule);
+  for (auto& define : levelRuleDefines(levelRule)) defines.push_back(std::move(define));
   std::vector<std::pair<std::string, std::string>> vertexDefines;
   if (alphaTest) {
     defines.emplace_back("SG_ALPHA_TEST", "1");

@@ -4,6 +4,7 @@
 #include <array>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <shadelgraph/gpu/pass_context.hpp>
@@ -21,7 +22,7 @@ gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline, bool alp
   std::vector<std::pair<std::string, std::string>> defines{filterDefine(filter)};
   if (baseline) defines.emplace_back("SG_MARK_BASELINE", "1");
   if (shadelMasks) defines.emplace_back("SG_SHADEL_MASKS", "1");
-  if (const auto rule = levelRuleDefine(levelRule)) defines.push_back(*rule);
+  for (auto& define : levelRuleDefines(levelRule)) defines.push_back(std::move(define));
   const std::span<const uint32_t> bindings = shadelMasks ? std::span<const uint32_t>(kMaskBindings) : kBindings;
   std::vector<std::pair<std::string, std::string>> vertexDefines;
   if (alphaTest) {

@@ -14,10 +14,6 @@ struct SgLevelSelection {
   float blend;   // weight of coarse; 0 when coarse == fine
 };
 
-// sg::shadel::LevelRule, unpacked (sg::shadel::packLevelRule): x the maximum
-// log2 anisotropy the level follows, y the object's level bias.
-vec2 sgUnpackLevelRule(uint packed) { return unpackHalf2x16(packed); }
-
 // Mirrors sg::shadel::levelFootprintSquared.
 float sgLevelFootprintSquared(vec2 dShadelDx, vec2 dShadelDy, float maxAnisotropyLog2) {
   float longer = max(dot(dShadelDx, dShadelDx), dot(dShadelDy, dShadelDy));
@@ -27,19 +23,20 @@ float sgLevelFootprintSquared(vec2 dShadelDx, vec2 dShadelDy, float maxAnisotrop
   return max(longer * exp2(-2.0 * maxAnisotropyLog2), minor);
 }
 
-// An object's level rule is a pipeline variant of shadel-mark and composite:
-// SG_LEVEL_RULE, its packLevelRule word (passes::levelRuleDefine), set only
-// for objects with a rule. Without it the level is the isotropic one and the
-// shaders are those of before the rule, so other objects pay nothing for it.
-#ifdef SG_LEVEL_RULE
-#define SG_LEVEL_FOOTPRINT_SQUARED(dx, dy) sgLevelFootprintSquared(dx, dy, sgUnpackLevelRule(SG_LEVEL_RULE).x)
-#define SG_LEVEL_BIAS(bias) (bias + sgUnpackLevelRule(SG_LEVEL_RULE).y)
+// An object's level rule (sg::shadel::LevelRule) is a pipeline variant of
+// shadel-mark and composite: SG_LEVEL_RULE_ANISOTROPY_LOG2 and
+// SG_LEVEL_RULE_BIAS (sg::shadel::levelRuleDefines), set only for objects
+// with a rule. Without them the level is the isotropic one and the shaders
+// are those of before the rule, so other objects pay nothing for it.
+#ifdef SG_LEVEL_RULE_ANISOTROPY_LOG2
+#define SG_LEVEL_FOOTPRINT_SQUARED(dx, dy) sgLevelFootprintSquared(dx, dy, SG_LEVEL_RULE_ANISOTROPY_LOG2)
+#define SG_LEVEL_BIAS(bias) (bias + SG_LEVEL_RULE_BIAS)
 #else
 #define SG_LEVEL_FOOTPRINT_SQUARED(dx, dy) max(dot(dx, dx), dot(dy, dy))
 #define SG_LEVEL_BIAS(bias) bias
 #endif
 
-// Mirrors sg::shadel::selectDetailLevel (with SG_LEVEL_RULE: its
+// Mirrors sg::shadel::selectDetailLevel (with a level rule: its
 // maxAnisotropyLog2 and the rule's bias added). dShadelDx/Dy: dFdx/dFdy of
 // the shading UV times the instance's level0Size.
 SgLevelSelection sgSelectDetailLevel(vec2 dShadelDx, vec2 dShadelDy, float bias, uint levelCount) {

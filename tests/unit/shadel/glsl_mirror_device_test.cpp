@@ -12,8 +12,8 @@
 namespace sg::test {
 
 // Without a level rule, and compiled as shadel-mark's and composite's
-// variant for objects with one (SG_LEVEL_RULE): the unmipmapped-texture rule
-// and one with more anisotropy and a bias.
+// variant for objects with one (shadel::levelRuleDefines): the
+// unmipmapped-texture rule and one with more anisotropy and a bias.
 TEST_F(DeviceTest, ShadelGlslMirrorsCpp) {
   library.addDirectory(SG_SOURCE_DIR);
   library.add(shadel::test::kMirrorShaderPath, shadel::test::kMirrorShader);
@@ -22,11 +22,8 @@ TEST_F(DeviceTest, ShadelGlslMirrorsCpp) {
   for (const shadel::LevelRule rule :
        {shadel::LevelRule{}, shadel::kUnmipmappedLevelRule, shadel::LevelRule{.maxAnisotropyLog2 = 2.25f, .bias = -0.25f}}) {
     SCOPED_TRACE("level rule k " + std::to_string(rule.maxAnisotropyLog2) + " bias " + std::to_string(rule.bias));
-    std::vector<std::pair<std::string, std::string>> defines;
-    if (shadel::packLevelRule(rule) != 0)
-      defines.emplace_back("SG_LEVEL_RULE", std::to_string(shadel::packLevelRule(rule)) + "u");
     gpu::Pipeline pipeline(*context, *compiler, *pipelineCache,
-                           gpu::ComputePipelineDesc{.shader = {.path = shadel::test::kMirrorShaderPath, .defines = defines},
+                           gpu::ComputePipelineDesc{.shader = {.path = shadel::test::kMirrorShaderPath, .defines = shadel::levelRuleDefines(rule)},
                                                     .layout = {.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                                                             {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}},
                                                                .pushConstantBytes = 4}});
