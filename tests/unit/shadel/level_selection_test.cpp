@@ -1,7 +1,9 @@
 // Detail-level selection and the trilinear footprint.
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -69,6 +71,19 @@ TEST(LevelSelection, LevelRulePacksIntoOneWord) {
     EXPECT_EQ(back.bias, rule.bias);
   }
   EXPECT_EQ(unpackLevelRule(packLevelRule(kUnmipmappedLevelRule)).maxAnisotropyLog2, kUnmipmappedLevelRule.maxAnisotropyLog2);
+}
+
+TEST(LevelSelection, LevelRuleDefinesAreFloatLiteralsOnlyForARule) {
+  EXPECT_TRUE(levelRuleDefines({}).empty());  // no variant: the shaders of before the rule
+  const auto defines = levelRuleDefines({.maxAnisotropyLog2 = 1.0f, .bias = -0.375f});
+  ASSERT_EQ(defines.size(), 2u);
+  EXPECT_EQ(defines[0].first, "SG_LEVEL_RULE_ANISOTROPY_LOG2");
+  EXPECT_EQ(defines[1].first, "SG_LEVEL_RULE_BIAS");
+  for (const auto& [name, literal] : defines)  // GLSL reads a float only with a point or exponent
+    EXPECT_NE(literal.find_first_of(".e"), std::string::npos) << name << " " << literal;
+  EXPECT_EQ(std::strtof(defines[0].second.c_str(), nullptr), 1.0f);
+  EXPECT_EQ(std::strtof(defines[1].second.c_str(), nullptr), -0.375f);
+  EXPECT_EQ(levelRuleDefines({.maxAnisotropyLog2 = 0.0f, .bias = 0.25f}).size(), 2u);  // a bias alone is a rule
 }
 
 TEST(LevelSelection, BiasShiftsTheLevel) {
