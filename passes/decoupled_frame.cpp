@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <shadelgraph/gpu/pass_context.hpp>
+#include <shadelgraph/shadel/level_selection.hpp>
 
 namespace sg::passes {
 
@@ -14,6 +16,17 @@ std::pair<std::string, std::string> filterDefine(int filter) {
   if (filter < 0 || filter > 2)
     throw std::invalid_argument("composite filter " + std::to_string(filter) + " (0 point, 1 bilinear, 2 trilinear)");
   return {"SG_FILTER", std::to_string(filter)};
+}
+
+std::vector<std::pair<std::string, std::string>> levelRuleDefines(uint32_t levelRule) {
+  return shadel::levelRuleDefines(shadel::unpackLevelRule(levelRule));
+}
+
+std::string levelRuleVariant(uint32_t levelRule) {
+  if (levelRule == 0) return {};
+  char hex[16];
+  std::snprintf(hex, sizeof hex, "%08x", levelRule);
+  return std::string("/rule-") + hex;
 }
 
 gpu::PipelineLayoutDesc decoupledLayout(std::span<const uint32_t> bindings, bool layerImageStorage,
@@ -99,24 +112,35 @@ void readEntryBlocks(graph::Pass& pass, const DecoupledFrame& frame) {
 }
 
 void drawDecoupled(PassContext& ctx, const DecoupledFrame& frame, std::span<const uint32_t> bindings, VkBuffer indirect,
-                   const std::function<const gpu::Pipeline&(bool alphaTest)>& pipeline) {
+                   const std::function<const gpu::Pipeline&(bool alphaTest, uint32_t levelRule)>& pipeline) {
   const auto& draws = frame.view.scene.draws();
+  const auto levelRuleOf = [&](size_t i) {
+    const uint32_t object = frame.objectIds[i];
+    return object < frame.levelRules.size() ? frame.levelRules[object] : 0u;
+  };
+  // The frame's rules, 0 first: without rules the draws go as before them.
+  std::vector<uint32_t> rules{0u};
+  for (size_t i = 0; i < frame.view.draws.size(); ++i) rules.push_back(levelRuleOf(i));
+  std::sort(rules.begin(), rules.end());
+  rules.erase(std::unique(rules.begin(), rules.end()), rules.end());
   for (const bool alphaTest : {false, true}) {
-    const gpu::Pipeline* bound = nullptr;
-    for (size_t i = 0; i < frame.view.draws.size(); ++i) {
-      const render::DrawItem& draw = draws[frame.view.draws[i]];
-      if ((draw.alphaMode == scene::AlphaMode::Mask) != alphaTest) continue;
-      if (!bound) {
-        bound = &pipeline(alphaTest);
-        bindDecoupled(ctx, *bound, frame, bindings);
-        frame.view.scene.bindGeometry(ctx.cmd());
+    for (const uint32_t rule : rules) {
+      const gpu::Pipeline* bound = nullptr;
+      for (size_t i = 0; i < frame.view.draws.size(); ++i) {
+        const render::DrawItem& draw = draws[frame.view.draws[i]];
+        if ((draw.alphaMode == scene::AlphaMode::Mask) != alphaTest || levelRuleOf(i) != rule) continue;
+        if (!bound) {
+          bound = &pipeline(alphaTest, rule);
+          bindDecoupled(ctx, *bound, frame, bindings);
+          frame.view.scene.bindGeometry(ctx.cmd());
+        }
+        if (alphaTest) {
+          const VkDescriptorSet set = frame.view.scene.materialSet(draw.material);
+          vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 1, 1, &set, 0, nullptr);
+        }
+        render::drawItem(ctx.cmd(), *bound, draw, frame.objectIds[i], indirect, frame.view.draws[i],
+                         render::backFacesHidden(frame.view, frame.view.draws[i]));
       }
-      if (alphaTest) {
-        const VkDescriptorSet set = frame.view.scene.materialSet(draw.material);
-        vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 1, 1, &set, 0, nullptr);
-      }
-      render::drawItem(ctx.cmd(), *bound, draw, frame.objectIds[i], indirect, frame.view.draws[i],
-                       render::backFacesHidden(frame.view, frame.view.draws[i]));
     }
   }
 }

@@ -8,6 +8,9 @@
 #include <functional>
 #include <initializer_list>
 #include <span>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <shadelgraph/gpu/buffer.hpp>
 #include <shadelgraph/gpu/descriptors.hpp>
@@ -28,6 +31,10 @@ struct DecoupledFrame {
   render::SceneView view;               // view.draws: the draws of the objects shaded decoupled this frame
   std::span<const uint32_t> objectIds;  // their decoupled object index, one per view.draws entry
   std::span<const uint32_t> objectDraws;  // every decoupled object's draw, by object index (materials)
+  // Every decoupled object's level rule (shadel::packLevelRule), by object
+  // index; empty: all 0 (the isotropic level). A pipeline variant of
+  // shadel-mark and composite (levelRuleDefines), chosen per draw.
+  std::span<const uint32_t> levelRules;
   const gpu::Buffer& params;
   const gpu::Buffer& objects;
   const gpu::Buffer& shadelInstances;
@@ -80,6 +87,13 @@ struct DecoupledFrame {
 // The define shadel-mark and composite are both compiled with: the filter
 // (SG_FILTER_* of shadel_level.glsl). Throws for a filter outside 0..2.
 std::pair<std::string, std::string> filterDefine(int filter);
+// The defines of the shadel-mark and composite variant for objects with
+// level rule `levelRule` (shadel::packLevelRule; shadel::levelRuleDefines):
+// none for rule 0, so objects without one keep the shaders of before the
+// rule and pay nothing for it.
+std::vector<std::pair<std::string, std::string>> levelRuleDefines(uint32_t levelRule);
+// What names a level rule's pipeline variant: "" for rule 0, else "/rule-<hex word>".
+std::string levelRuleVariant(uint32_t levelRule);
 
 // The set-0 layout of a decoupled pass whose shaders use the shared
 // `bindings`; the layer image is a storage image when `layerImageStorage`,
@@ -102,10 +116,12 @@ void dispatchEntrySpans(PassContext& ctx, const gpu::Pipeline& pipeline, const D
 void readEntryBlocks(graph::Pass& pass, const DecoupledFrame& frame);
 
 // Draws the frame's decoupled objects as their decoupled object ids (culled
-// by `indirect` when set): the opaque ones with pipeline(false), then the
-// alpha-mask ones with pipeline(true), their alpha-tested variant, whose set 1
-// is the draw's scene material. Set 0 is bound for each from `bindings`.
+// by `indirect` when set): the opaque ones with pipeline(false, rule), then the
+// alpha-mask ones with pipeline(true, rule), their alpha-tested variant, whose
+// set 1 is the draw's scene material; within each, the objects without a level
+// rule (0) first, then those of each rule (DecoupledFrame::levelRules). Set 0
+// is bound for each pipeline from `bindings`.
 void drawDecoupled(PassContext& ctx, const DecoupledFrame& frame, std::span<const uint32_t> bindings, VkBuffer indirect,
-                   const std::function<const gpu::Pipeline&(bool alphaTest)>& pipeline);
+                   const std::function<const gpu::Pipeline&(bool alphaTest, uint32_t levelRule)>& pipeline);
 
 }  // namespace sg::passes

@@ -9,6 +9,16 @@ Bounds worldBounds(const Scene& scene) {
   return bounds;
 }
 
+bool samplesUnmipmappedTexture(const Scene& scene, int material) {
+  if (material < 0 || static_cast<size_t>(material) >= scene.materials.size()) return false;
+  for (const TextureRef& ref : scene.materials[static_cast<size_t>(material)].textureSlots()) {
+    if (!ref.present() || static_cast<size_t>(ref.texture) >= scene.textures.size()) continue;
+    const auto sampler = static_cast<size_t>(scene.textures[static_cast<size_t>(ref.texture)].sampler);
+    if (sampler < scene.samplers.size() && scene.samplers[sampler].mipmapMode == MipmapMode::None) return true;
+  }
+  return false;
+}
+
 size_t instancedTriangleCount(const Scene& scene) {
   size_t count = 0;
   for (const Instance& instance : scene.instances)

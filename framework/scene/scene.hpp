@@ -42,6 +42,11 @@ Bounds worldBounds(const Scene& scene);
 // Triangles drawn: instanced meshes counted once per instance.
 size_t instancedTriangleCount(const Scene& scene);
 
+// Whether `material` (an index into scene.materials; out of range: false)
+// samples a texture whose sampler has no mip levels (glTF minFilter NEAREST or
+// LINEAR): minified, it is sampled unfiltered.
+bool samplesUnmipmappedTexture(const Scene& scene, int material);
+
 // Appends `other` to `into`, re-basing its indices, placing its instances,
 // lights, cameras and root nodes under `transform`, and prefixing its warnings.
 void appendScene(Scene& into, Scene other, const glm::mat4& transform, const std::string& warningPrefix = {});

@@ -1,5 +1,8 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+
+#include <glm/gtc/packing.hpp>
 
 #include <shadelgraph/shadel/level_selection.hpp>
 #include <shadelgraph/shadel/remap_entry.hpp>
@@ -14,8 +17,35 @@ constexpr float kMinFootprintSquared = 1e-20f;
 
 }  // namespace
 
-LevelSelection selectDetailLevel(glm::vec2 dShadelDx, glm::vec2 dShadelDy, float bias, uint32_t levelCount) {
-  const float rhoSquared = std::max(glm::dot(dShadelDx, dShadelDx), glm::dot(dShadelDy, dShadelDy));
+uint32_t packLevelRule(LevelRule rule) { return glm::packHalf2x16({rule.maxAnisotropyLog2, rule.bias}); }
+
+LevelRule unpackLevelRule(uint32_t packed) {
+  const glm::vec2 v = glm::unpackHalf2x16(packed);
+  return {.maxAnisotropyLog2 = v.x, .bias = v.y};
+}
+
+std::vector<std::pair<std::string, std::string>> levelRuleDefines(LevelRule rule) {
+  if (rule.maxAnisotropyLog2 == 0.0f && rule.bias == 0.0f) return {};
+  // %.9e: a float literal (with a point) that reads back as the same float.
+  const auto literal = [](float f) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9e", double(f));
+    return std::string(text);
+  };
+  return {{"SG_LEVEL_RULE_ANISOTROPY_LOG2", literal(rule.maxAnisotropyLog2)}, {"SG_LEVEL_RULE_BIAS", literal(rule.bias)}};
+}
+
+float levelFootprintSquared(glm::vec2 dShadelDx, glm::vec2 dShadelDy, float maxAnisotropyLog2) {
+  const float longer = std::max(glm::dot(dShadelDx, dShadelDx), glm::dot(dShadelDy, dShadelDy));
+  if (!(maxAnisotropyLog2 > 0.0f)) return longer;
+  const float det = dShadelDx.x * dShadelDy.y - dShadelDx.y * dShadelDy.x;
+  const float minor = longer > 0.0f ? det * det / longer : 0.0f;
+  return std::max(longer * std::exp2(-2.0f * maxAnisotropyLog2), minor);
+}
+
+LevelSelection selectDetailLevel(glm::vec2 dShadelDx, glm::vec2 dShadelDy, float bias, uint32_t levelCount,
+                                 float maxAnisotropyLog2) {
+  const float rhoSquared = levelFootprintSquared(dShadelDx, dShadelDy, maxAnisotropyLog2);
   LevelSelection selection;
   selection.level = 0.5f * std::log2(std::max(rhoSquared, kMinFootprintSquared)) + bias;
   float clamped = selection.level;
@@ -28,8 +58,8 @@ LevelSelection selectDetailLevel(glm::vec2 dShadelDx, glm::vec2 dShadelDy, float
 }
 
 LevelSelection selectFilterLevel(CompositeFilter filter, glm::vec2 dShadelDx, glm::vec2 dShadelDy, float bias,
-                                 uint32_t levelCount) {
-  LevelSelection selection = selectDetailLevel(dShadelDx, dShadelDy, bias, levelCount);
+                                 uint32_t levelCount, float maxAnisotropyLog2) {
+  LevelSelection selection = selectDetailLevel(dShadelDx, dShadelDy, bias, levelCount, maxAnisotropyLog2);
   if (filter == CompositeFilter::Trilinear) return selection;
   // fine + blend is the clamped level; rounding it cannot pass levelCount - 1.
   selection.fine = selection.blend >= 0.5f ? selection.coarse : selection.fine;

@@ -6,6 +6,9 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -20,13 +23,50 @@ struct LevelSelection {
   float blend = 0.0f;   // weight of `coarse`; 0 when coarse == fine
 };
 
+// How an object's level follows its pixel footprint (SgDecoupledObject.levelRule,
+// packed as two halves). maxAnisotropyLog2 k: the level follows the footprint's
+// minor axis (|det J| / the longer derivative) down to k levels below the
+// longer derivative's (EXT_texture_filter_anisotropic's lambda with max
+// anisotropy 2^k); 0 is the isotropic GL rule. bias: added to the global bias.
+// The default (0, 0) is every object's rule but kUnmipmappedLevelRule's.
+struct LevelRule {
+  float maxAnisotropyLog2 = 0.0f;
+  float bias = 0.0f;
+};
+// The rule of objects whose material samples a texture without mip levels
+// (scene::samplesUnmipmappedTexture). Forward reads such a texture at every
+// pixel unfiltered, so its image holds detail at the pixel's rate in every
+// direction; the isotropic nearest level shades up to sqrt(2) pixels apart
+// along the footprint's longer axis and loses it. Anisotropy up to 2 (k = 1),
+// chosen by measurement: MorphPrimitivesTest then lands closer than forward
+// to a 16-sample reference at 640x360 and 1280x720 with 1.17 shadels per
+// covered pixel; k = 1.5 is 1.48 (docs/decoupled-shading.md, "Unmipmapped
+// textures").
+inline constexpr LevelRule kUnmipmappedLevelRule{.maxAnisotropyLog2 = 1.0f, .bias = 0.0f};
+
+// Half floats in one uint (low: maxAnisotropyLog2, high: bias), as GLSL's
+// packHalf2x16: exact for quarter steps (DecoupledFrame::levelRules).
+uint32_t packLevelRule(LevelRule rule);
+LevelRule unpackLevelRule(uint32_t packed);
+
+// The defines of shadel_level.glsl's variant for `rule`, as float literals:
+// SG_LEVEL_RULE_ANISOTROPY_LOG2 and SG_LEVEL_RULE_BIAS; none for the default
+// rule, whose shaders are those of before the rule.
+std::vector<std::pair<std::string, std::string>> levelRuleDefines(LevelRule rule);
+
+// The squared footprint length the level is log2 of (in level-0 shadels):
+// max(longer² / 4^k, minor²). GLSL: sgLevelFootprintSquared.
+float levelFootprintSquared(glm::vec2 dShadelDx, glm::vec2 dShadelDy, float maxAnisotropyLog2);
+
 // dShadelDx/dShadelDy: the shading-UV derivatives per pixel in level-0
 // shadels (dFdx(uv) * level0Size). The level is the isotropic one of the GL
 // spec, log2 of the longer footprint axis, plus the global fractional bias
 // (raised by the shade-space adjuster when storage fills). Zero and
 // NaN derivatives give level 0, infinite ones the coarsest. levelCount >= 1.
 // GLSL: sgSelectDetailLevel.
-LevelSelection selectDetailLevel(glm::vec2 dShadelDx, glm::vec2 dShadelDy, float bias, uint32_t levelCount);
+// maxAnisotropyLog2: LevelRule's (0: the longer axis).
+LevelSelection selectDetailLevel(glm::vec2 dShadelDx, glm::vec2 dShadelDy, float bias, uint32_t levelCount,
+                                 float maxAnisotropyLog2 = 0.0f);
 
 // The 2x2 bilinear taps of a level of `levelSize` shadels at a shading UV in
 // [0,1]²: level-local shadels {lo.x, hi.x} x {lo.y, hi.y}, clamped to the
@@ -64,7 +104,7 @@ enum class CompositeFilter : int { Point = 0, Bilinear = 1, Trilinear = 2 };
 // floor would shade 1-4 shadels per pixel instead of 0.5-2. fine == coarse,
 // blend 0. GLSL: sgSelectFilterLevel.
 LevelSelection selectFilterLevel(CompositeFilter filter, glm::vec2 dShadelDx, glm::vec2 dShadelDy, float bias,
-                                 uint32_t levelCount);
+                                 uint32_t levelCount, float maxAnisotropyLog2 = 0.0f);
 
 // The point filter's level-local shadel: the bilinear tap nearest the sample
 // (weight >= 0.5 picks hi). GLSL: sgNearestTap.

@@ -3,6 +3,7 @@
 #include <array>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <shadelgraph/gpu/pass_context.hpp>
 
@@ -14,9 +15,11 @@ constexpr std::array kBindings{kBindFrame, kBindParams, kBindObjects,  kBindShad
                                kBindLevelRects, kBindRemap, kBindChunkSlots, kBindCounters, kBindLayerImage};
 }  // namespace
 
-gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView, bool alphaTest, VkDescriptorSetLayout materialSet) {
+gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView, bool alphaTest, VkDescriptorSetLayout materialSet,
+                                            uint32_t levelRule) {
   std::vector<std::pair<std::string, std::string>> defines{filterDefine(filter)};
   if (levelView) defines.emplace_back("SG_VIEW_LEVEL", "1");
+  for (auto& define : levelRuleDefines(levelRule)) defines.push_back(std::move(define));
   std::vector<std::pair<std::string, std::string>> vertexDefines;
   if (alphaTest) {
     defines.emplace_back("SG_ALPHA_TEST", "1");
@@ -55,11 +58,12 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
   pass.execute([indirect = render::readDrawCommands(pass, frame.view).indirect, frame, color, depth,
                 clear](PassContext& ctx) {
     ctx.beginRendering({ColorTarget{color, clear}}, DepthTarget{depth, {}, true}, true);
-    drawDecoupled(ctx, frame, kBindings, indirect, [&](bool alphaTest) -> const gpu::Pipeline& {
-      const std::string variant =
-          std::to_string(frame.filter) + (frame.levelView ? "/level" : "") + (alphaTest ? "/alpha-test" : "");
+    drawDecoupled(ctx, frame, kBindings, indirect, [&](bool alphaTest, uint32_t levelRule) -> const gpu::Pipeline& {
+      const std::string variant = std::to_string(frame.filter) + (frame.levelView ? "/level" : "") +
+                                  (alphaTest ? "/alpha-test" : "") + levelRuleVariant(levelRule);
       return ctx.device().pipeline("composite/" + variant, [&] {
-        return compositePipeline(frame.filter, frame.levelView, alphaTest, frame.view.scene.materialSetLayout());
+        return compositePipeline(frame.filter, frame.levelView, alphaTest, frame.view.scene.materialSetLayout(),
+                                 levelRule);
       });
     });
     ctx.endRendering();

@@ -13,8 +13,9 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
                                    graph::ResourceHandle depth, std::optional<VkClearColorValue> clear = {});
 // filter: 0 point, 1 bilinear, 2 trilinear; levelView shows the detail level
 // instead; alphaTest: the variant for alpha-mask objects, `materialSet` (the
-// scene material) its set 1.
+// scene material) its set 1; levelRule: the variant for objects with that
+// level rule (shadel::packLevelRule; 0 none), as shadel-mark's.
 gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView, bool alphaTest = false,
-                                            VkDescriptorSetLayout materialSet = VK_NULL_HANDLE);
+                                            VkDescriptorSetLayout materialSet = VK_NULL_HANDLE, uint32_t levelRule = 0);
 
 }  // namespace sg::passes

@@ -4,6 +4,7 @@
 #include <array>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <shadelgraph/gpu/pass_context.hpp>
@@ -17,10 +18,11 @@ constexpr std::array kMaskBindings{kBindFrame,      kBindParams, kBindObjects,  
 }  // namespace
 
 gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline, bool alphaTest, VkDescriptorSetLayout materialSet,
-                                             bool shadelMasks) {
+                                             bool shadelMasks, uint32_t levelRule) {
   std::vector<std::pair<std::string, std::string>> defines{filterDefine(filter)};
   if (baseline) defines.emplace_back("SG_MARK_BASELINE", "1");
   if (shadelMasks) defines.emplace_back("SG_SHADEL_MASKS", "1");
+  for (auto& define : levelRuleDefines(levelRule)) defines.push_back(std::move(define));
   const std::span<const uint32_t> bindings = shadelMasks ? std::span<const uint32_t>(kMaskBindings) : kBindings;
   std::vector<std::pair<std::string, std::string>> vertexDefines;
   if (alphaTest) {
@@ -66,11 +68,13 @@ void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::Reso
   pass.execute([indirect = render::readDrawCommands(pass, frame.view).indirect, frame, depth, masks](PassContext& ctx) {
     ctx.beginRendering({}, DepthTarget{depth, {}, true}, true);
     const std::span<const uint32_t> bindings = masks ? std::span<const uint32_t>(kMaskBindings) : kBindings;
-    drawDecoupled(ctx, frame, bindings, indirect, [&](bool alphaTest) -> const gpu::Pipeline& {
+    drawDecoupled(ctx, frame, bindings, indirect, [&](bool alphaTest, uint32_t levelRule) -> const gpu::Pipeline& {
       const std::string variant = std::to_string(frame.filter) + (frame.baseline ? "/baseline" : "") +
-                                  (alphaTest ? "/alpha-test" : "") + (masks ? "/masks" : "");
+                                  (alphaTest ? "/alpha-test" : "") + (masks ? "/masks" : "") +
+                                  levelRuleVariant(levelRule);
       return ctx.device().pipeline("shadel-mark/" + variant, [&] {
-        return shadelMarkPipeline(frame.filter, frame.baseline, alphaTest, frame.view.scene.materialSetLayout(), masks);
+        return shadelMarkPipeline(frame.filter, frame.baseline, alphaTest, frame.view.scene.materialSetLayout(), masks,
+                                  levelRule);
       });
     });
     ctx.endRendering();

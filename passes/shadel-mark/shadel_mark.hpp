@@ -13,9 +13,11 @@ void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::Reso
 // filter: 0 point, 1 bilinear, 2 trilinear (what composite filters with);
 // baseline: the mark before issue 14 (bench --baseline); alphaTest: the
 // variant for alpha-mask objects, `materialSet` (the scene material) its set 1;
-// shadelMasks: also the shadel masks (DecoupledFrame::shadelMasks).
+// shadelMasks: also the shadel masks (DecoupledFrame::shadelMasks);
+// levelRule: the variant for objects with that level rule
+// (shadel::packLevelRule; 0 none), which composite must be compiled with too.
 gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline = false, bool alphaTest = false,
                                              VkDescriptorSetLayout materialSet = VK_NULL_HANDLE,
-                                             bool shadelMasks = false);
+                                             bool shadelMasks = false, uint32_t levelRule = 0);
 
 }  // namespace sg::passes

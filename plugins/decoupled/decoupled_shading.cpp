@@ -8,9 +8,11 @@
 #include <shadelgraph/gpu/pass_context.hpp>
 #include <decoupled_frame.hpp>
 #include <shadelgraph/render/material_variants.hpp>
+#include <shadelgraph/scene/scene.hpp>
 #include <shadelgraph/scene/uv_chart.hpp>
 #include <shadelgraph/shadel/id_map_cache.hpp>
 #include <shadelgraph/shadel/level0_resolution.hpp>
+#include <shadelgraph/shadel/level_selection.hpp>
 #include <shadelgraph/shadel/shadel_gpu_tables.hpp>
 
 #include "layer-shade/layer_shade.hpp"
@@ -34,6 +36,12 @@ gpu::Buffer upload(gpu::Device& device, const std::vector<T>& data, const char* 
                      {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryLocation::Upload, name, "decoupled tables"});
   if (!data.empty()) buffer.write(data.data(), data.size() * sizeof(T));
   return buffer;
+}
+
+// How an object's level follows its footprint (DecoupledFrame::levelRules).
+uint32_t levelRule(const scene::Scene& scene, uint32_t material) {
+  return shadel::packLevelRule(scene::samplesUnmipmappedTexture(scene, int(material)) ? shadel::kUnmipmappedLevelRule
+                                                                                       : shadel::LevelRule{});
 }
 
 // A material that reads neighbours (support) or its own last value
@@ -114,6 +122,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
       slot.record.world = draw.world;
       slot.record.material = draw.material;
       slot.record.supportChunks = supportRadius(materials, material) > 0 ? 1u : 0u;
+      slot.levelRule = levelRule(in.scene, draw.material);
       slot.materialStack = draw.materialStack;
       slot.changedFrame = frames_;
       slot.reshadedWhole = reshadedWhole(materials, material);
@@ -208,6 +217,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
     ++allocatedObjects_;
     slot.record = {draw.world, draw.firstIndex, draw.vertexOffset, draw.indexCount / 3, draw.material, offset,
                    uint32_t(primitive.uvSet), primitive.tileOffset, supportRadius(materials, material) > 0 ? 1u : 0u, 0u, 0u, 0u};
+    slot.levelRule = levelRule(in.scene, draw.material);
   }
 }
 
@@ -415,9 +425,12 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
   graph::RenderGraph& graph = ctx.graph();
   frame_.reset();
   if (!hasObjects()) return;
+  levelRules_.clear();
+  for (const auto& slot : slots_) levelRules_.push_back(slot.levelRule);
   frame_.emplace(passes::DecoupledFrame{.view = ctx.view(frameObjects_),
                                         .objectIds = frameObjects_,
                                         .objectDraws = identity_,
+                                        .levelRules = levelRules_,
                                         .params = params_[ring()], .objects = objects_[ring()], .shadelInstances = shadelInstances_,
                                         .levelRects = levelRects_, .ownedEntries = ownedEntries_, .idMaps = idMapBuffer_,
                                         .ownedEntryCount = ownedEntryCount_, .objectCount = objectCount,

@@ -225,6 +225,7 @@ class DecoupledShading {
     bool allocated = false;
     std::string reason;  // why not, when it asked to be
     DecoupledObject record{};
+    uint32_t levelRule = 0;  // how its level follows its footprint (shadel::packLevelRule): a pipeline variant
     std::string materialStack;  // the material its stored shading was shaded with
     uint64_t changedFrame = 0;  // the frame it was allocated, moved or changed material: nothing to reuse then
     uint64_t materialFrame = 0;  // the frame it was allocated or changed material (its kept layers are recomputed)
@@ -238,6 +239,7 @@ class DecoupledShading {
   std::vector<bool> lastShadowed_;       // per light: it had shadow maps last frame
   uint32_t allocatedObjects_ = 0;
   std::vector<uint32_t> identity_;  // draw index -> object index (the same)
+  std::vector<uint32_t> levelRules_;  // this frame's, by object index (DecoupledFrame::levelRules)
   std::map<std::pair<int, uint32_t>, std::pair<shadel::DetailLevels, uint32_t>> idMaps_;  // by mesh and primitive: levels, ID-map offset
   std::set<std::pair<int, uint32_t>> noIdMapRoom_;  // primitives whose map would not fit the ID-map buffer
   std::vector<ShrunkIdMap> shrunkIdMaps_;

@@ -186,8 +186,11 @@ TEST_P(DecoupledFilters, ShadelMasksShadeWhatCompositeReads) {
   EXPECT_GT(skipped, 0u) << "the masks left nothing out";
 }
 
+// MorphPrimitivesTest: its texture has no mip levels, so its level follows
+// the footprint's anisotropy (shadel::kUnmipmappedLevelRule) in both passes.
 INSTANTIATE_TEST_SUITE_P(Scenes, DecoupledFilters,
-                         ::testing::Combine(::testing::Values("DefaultScene", "Suzanne", "Duck", "DamagedHelmet"),
+                         ::testing::Combine(::testing::Values("DefaultScene", "Suzanne", "Duck", "DamagedHelmet",
+                                                              "MorphPrimitivesTest"),
                                             ::testing::Values(0, 1, 2)),
                          [](const auto& testInfo) { return filterTestName(testInfo.param); });
 

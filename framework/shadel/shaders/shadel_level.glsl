@@ -14,12 +14,35 @@ struct SgLevelSelection {
   float blend;   // weight of coarse; 0 when coarse == fine
 };
 
-// Mirrors sg::shadel::selectDetailLevel. dShadelDx/Dy: dFdx/dFdy of the
-// shading UV times the instance's level0Size.
+// Mirrors sg::shadel::levelFootprintSquared.
+float sgLevelFootprintSquared(vec2 dShadelDx, vec2 dShadelDy, float maxAnisotropyLog2) {
+  float longer = max(dot(dShadelDx, dShadelDx), dot(dShadelDy, dShadelDy));
+  if (!(maxAnisotropyLog2 > 0.0)) return longer;
+  float det = dShadelDx.x * dShadelDy.y - dShadelDx.y * dShadelDy.x;
+  float minor = longer > 0.0 ? det * det / longer : 0.0;
+  return max(longer * exp2(-2.0 * maxAnisotropyLog2), minor);
+}
+
+// An object's level rule (sg::shadel::LevelRule) is a pipeline variant of
+// shadel-mark and composite: SG_LEVEL_RULE_ANISOTROPY_LOG2 and
+// SG_LEVEL_RULE_BIAS (sg::shadel::levelRuleDefines), set only for objects
+// with a rule. Without them the level is the isotropic one and the shaders
+// are those of before the rule, so other objects pay nothing for it.
+#ifdef SG_LEVEL_RULE_ANISOTROPY_LOG2
+#define SG_LEVEL_FOOTPRINT_SQUARED(dx, dy) sgLevelFootprintSquared(dx, dy, SG_LEVEL_RULE_ANISOTROPY_LOG2)
+#define SG_LEVEL_BIAS(bias) (bias + SG_LEVEL_RULE_BIAS)
+#else
+#define SG_LEVEL_FOOTPRINT_SQUARED(dx, dy) max(dot(dx, dx), dot(dy, dy))
+#define SG_LEVEL_BIAS(bias) bias
+#endif
+
+// Mirrors sg::shadel::selectDetailLevel (with a level rule: its
+// maxAnisotropyLog2 and the rule's bias added). dShadelDx/Dy: dFdx/dFdy of
+// the shading UV times the instance's level0Size.
 SgLevelSelection sgSelectDetailLevel(vec2 dShadelDx, vec2 dShadelDy, float bias, uint levelCount) {
-  float rhoSquared = max(dot(dShadelDx, dShadelDx), dot(dShadelDy, dShadelDy));
+  float rhoSquared = SG_LEVEL_FOOTPRINT_SQUARED(dShadelDx, dShadelDy);
   SgLevelSelection selection;
-  selection.level = 0.5 * log2(max(rhoSquared, 1e-20)) + bias;
+  selection.level = 0.5 * log2(max(rhoSquared, 1e-20)) + SG_LEVEL_BIAS(bias);
   float clamped = selection.level;
   if (!(clamped >= 0.0)) clamped = 0.0;
   clamped = min(clamped, float(levelCount - 1u));

@@ -36,6 +36,7 @@
 #include <shade-reuse/shade_reuse.hpp>
 #include <shadows/shadows.hpp>
 #include <shadelgraph/gpu/shader_compiler.hpp>
+#include <shadelgraph/shadel/level_selection.hpp>
 #include <support-expand/support_expand.hpp>
 #include <tonemap/tonemap.hpp>
 #include <work-aggregate/work_aggregate.hpp>
@@ -237,6 +238,8 @@ class ShaderInterface : public ::testing::Test {
 
 TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   std::string errors;
+  // shadel-mark's and composite's variant for objects with a level rule.
+  const uint32_t kLevelRule = shadel::packLevelRule(shadel::kUnmipmappedLevelRule);
   errors += mismatches("z-prepass", passes::zPrepassPipeline());
   errors += mismatches("z-prepass alpha-test", passes::zPrepassAlphaTestPipeline(VK_NULL_HANDLE));
   errors += mismatches("exposure-meter", passes::exposureMeterPipeline());
@@ -259,9 +262,10 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
     for (bool baseline : {false, true})
       for (bool alphaTest : {false, true})
         for (bool masks : {false, !baseline})  // the baseline mark has no masks
-          errors += mismatches("shadel-mark filter=" + std::to_string(filter) + (alphaTest ? " alpha-test" : "") +
-                                   (masks ? " masks" : ""),
-                               passes::shadelMarkPipeline(filter, baseline, alphaTest, VK_NULL_HANDLE, masks));
+          for (uint32_t rule : {0u, kLevelRule})
+            errors += mismatches("shadel-mark filter=" + std::to_string(filter) + (alphaTest ? " alpha-test" : "") +
+                                     (masks ? " masks" : "") + passes::levelRuleVariant(rule),
+                                 passes::shadelMarkPipeline(filter, baseline, alphaTest, VK_NULL_HANDLE, masks, rule));
   for (bool header : {false, true}) errors += mismatches("live-entry-blocks", passes::liveEntryBlocksPipeline(header));
   for (bool apply : {false, true}) errors += mismatches("support-expand", passes::supportExpandPipeline(apply));
   for (int phase : {1, 2}) errors += mismatches("shadel-allocate", passes::shadelAllocatePipeline(phase));
@@ -274,8 +278,10 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   for (int filter : {0, 1, 2})
     for (bool levelView : {false, true})
       for (bool alphaTest : {false, true})
-        errors += mismatches("composite filter=" + std::to_string(filter) + (alphaTest ? " alpha-test" : ""),
-                             passes::compositePipeline(filter, levelView, alphaTest));
+        for (uint32_t rule : {0u, kLevelRule})
+          errors += mismatches("composite filter=" + std::to_string(filter) + (alphaTest ? " alpha-test" : "") +
+                                   passes::levelRuleVariant(rule),
+                               passes::compositePipeline(filter, levelView, alphaTest, VK_NULL_HANDLE, rule));
   errors += mismatches("debug-occupancy", passes::occupancyViewPipeline());
   errors += mismatches("debug-sheet", passes::sheetViewPipeline());
   for (const auto& name : registry_.materialNames()) {

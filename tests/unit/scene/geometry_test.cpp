@@ -3,6 +3,7 @@
 
 #include <shadelgraph/scene/gltf_loader.hpp>
 #include <shadelgraph/scene/normals.hpp>
+#include <shadelgraph/scene/scene.hpp>
 #include <shadelgraph/scene/tangents.hpp>
 #include <shadelgraph/scene/triangulate.hpp>
 
@@ -10,6 +11,28 @@
 
 namespace sg::scene {
 namespace {
+
+// Decoupled shading picks an object's level from the shorter footprint axis
+// when its material samples a texture without mip levels.
+TEST(SceneQueries, SamplesUnmipmappedTextureLooksAtEveryTextureSlotsSampler) {
+  Scene scene;
+  scene.samplers = {Sampler{}, Sampler{.minFilter = Filter::Linear, .mipmapMode = MipmapMode::None}};
+  scene.textures.resize(2);
+  scene.textures[0].sampler = 0;  // mipmapped
+  scene.textures[1].sampler = 1;  // minFilter LINEAR: no mips
+  scene.materials.resize(4);
+  scene.materials[1].baseColorTexture.texture = 0;
+  scene.materials[2].baseColorTexture.texture = 0;
+  scene.materials[2].occlusionTexture.texture = 1;
+  scene.materials[3].clearcoat = Clearcoat{};
+  scene.materials[3].clearcoat->normalTexture.texture = 1;
+  EXPECT_FALSE(samplesUnmipmappedTexture(scene, 0));  // untextured
+  EXPECT_FALSE(samplesUnmipmappedTexture(scene, 1));
+  EXPECT_TRUE(samplesUnmipmappedTexture(scene, 2));
+  EXPECT_TRUE(samplesUnmipmappedTexture(scene, 3));  // an extension's slot counts too
+  EXPECT_FALSE(samplesUnmipmappedTexture(scene, -1));
+  EXPECT_FALSE(samplesUnmipmappedTexture(scene, 4));
+}
 
 TEST(Triangulate, StripAlternatesWinding) {
   const std::vector<uint32_t> strip{0, 1, 2, 3, 4};

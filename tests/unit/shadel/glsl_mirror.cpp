@@ -44,7 +44,8 @@ std::vector<uint32_t> makeMirrorCases(uint32_t count, uint32_t seed) {
   return cases;
 }
 
-std::string compareMirrorResults(const std::vector<uint32_t>& cases, const uint32_t* results, uint32_t count) {
+std::string compareMirrorResults(const std::vector<uint32_t>& cases, const uint32_t* results, uint32_t count,
+                                 LevelRule rule) {
   for (uint32_t i = 0; i < count; ++i) {
     const uint32_t* c = cases.data() + size_t{i} * kCaseWords;
     const uint32_t* r = results + size_t{i} * kResultWords;
@@ -67,8 +68,8 @@ std::string compareMirrorResults(const std::vector<uint32_t>& cases, const uint3
     for (size_t k = 0; k < std::size(expected); ++k)
       if (r[k] != expected[k]) return fail(names[k], r[k], expected[k]);
 
-    const LevelSelection selection =
-        selectDetailLevel({value(c[11]), value(c[12])}, {value(c[13]), value(c[14])}, value(c[15]), c[16]);
+    const LevelSelection selection = selectDetailLevel({value(c[11]), value(c[12])}, {value(c[13]), value(c[14])},
+                                                       value(c[15]) + rule.bias, c[16], rule.maxAnisotropyLog2);
     if (std::abs(value(r[11]) - selection.level) > 1e-5f * std::max(1.0f, std::abs(selection.level)))
       return fail("level", value(r[11]), selection.level);
     const bool nearBoundary = std::abs(selection.level - std::round(selection.level)) < 1e-4f;
@@ -78,8 +79,9 @@ std::string compareMirrorResults(const std::vector<uint32_t>& cases, const uint3
       if (std::abs(value(r[14]) - selection.blend) > 1e-5f) return fail("blend", value(r[14]), selection.blend);
     }
     // The nearest level's boundaries are the half levels.
-    const LevelSelection nearestLevel = selectFilterLevel(CompositeFilter::Bilinear, {value(c[11]), value(c[12])},
-                                                          {value(c[13]), value(c[14])}, value(c[15]), c[16]);
+    const LevelSelection nearestLevel =
+        selectFilterLevel(CompositeFilter::Bilinear, {value(c[11]), value(c[12])}, {value(c[13]), value(c[14])},
+                          value(c[15]) + rule.bias, c[16], rule.maxAnisotropyLog2);
     const bool nearHalf = std::abs(selection.level - 0.5f - std::round(selection.level - 0.5f)) < 1e-4f;
     if (!nearHalf && r[26] != nearestLevel.fine) return fail("nearest level", r[26], nearestLevel.fine);
 

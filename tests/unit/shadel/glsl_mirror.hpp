@@ -9,6 +9,8 @@
 
 #include <glm/glm.hpp>
 
+#include <shadelgraph/shadel/level_selection.hpp>
+
 namespace sg::shadel::test {
 
 inline constexpr uint32_t kCaseWords = 20;
@@ -86,6 +88,9 @@ std::vector<uint32_t> makeMirrorCases(uint32_t count, uint32_t seed);
 // Compares GPU results with the C++ functions; returns a description of the
 // first mismatch, or an empty string. Level selections within 1e-4 of an
 // integer level are compared only loosely (log2 may differ in the last ulp).
-std::string compareMirrorResults(const std::vector<uint32_t>& cases, const uint32_t* results, uint32_t count);
+// rule: the level rule the shader was compiled with (levelRuleDefines, the
+// pipeline variant of shadel-mark and composite); {} without it.
+std::string compareMirrorResults(const std::vector<uint32_t>& cases, const uint32_t* results, uint32_t count,
+                                 LevelRule rule = {});
 
 }  // namespace sg::shadel::test

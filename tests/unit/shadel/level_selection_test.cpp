@@ -1,7 +1,9 @@
 // Detail-level selection and the trilinear footprint.
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -30,6 +32,58 @@ TEST(LevelSelection, KnownDerivativesGiveKnownLevels) {
   EXPECT_EQ(s.fine, 1u);
   EXPECT_EQ(s.coarse, 2u);
   EXPECT_NEAR(s.blend, std::log2(3.0f) - 1.0f, 1e-5f);
+}
+
+TEST(LevelSelection, AnisotropyLimitFollowsTheMinorAxisUpToKLevels) {
+  // Four shadels per pixel along y, one along x (anisotropy 4, two levels):
+  // the isotropic rule says level 2; each level of allowed anisotropy takes
+  // one off, down to the minor axis's level 0.
+  EXPECT_FLOAT_EQ(selectDetailLevel({1, 0}, {0, 4}, 0.0f, 9).level, 2.0f);
+  EXPECT_FLOAT_EQ(selectDetailLevel({1, 0}, {0, 4}, 0.0f, 9, 0.0f).level, 2.0f);
+  EXPECT_FLOAT_EQ(selectDetailLevel({1, 0}, {0, 4}, 0.0f, 9, 0.5f).level, 1.5f);
+  EXPECT_FLOAT_EQ(selectDetailLevel({1, 0}, {0, 4}, 0.0f, 9, 1.0f).level, 1.0f);
+  EXPECT_FLOAT_EQ(selectDetailLevel({1, 0}, {0, 4}, 0.0f, 9, 2.0f).level, 0.0f);
+  EXPECT_FLOAT_EQ(selectDetailLevel({1, 0}, {0, 4}, 0.0f, 9, 3.0f).level, 0.0f);  // never finer than the minor axis
+  // A sheared footprint whose two derivatives are both long (4 and sqrt(17))
+  // but which is thin (|det| = 4: minor axis 4 / sqrt(17)): the shorter of
+  // the two derivatives would say level 2, the minor axis about 0.
+  EXPECT_NEAR(std::sqrt(levelFootprintSquared({4, 0}, {4, 1}, 8.0f)), 4.0f / std::sqrt(17.0f), 1e-5f);
+  EXPECT_NEAR(selectDetailLevel({4, 0}, {4, 1}, 0.0f, 9, 1.0f).level, std::log2(std::sqrt(17.0f) / 2.0f), 1e-5f);
+  // Isotropic footprints (any rotation): every limit gives the same level.
+  const glm::vec2 dx{3.0f * std::cos(0.3f), 3.0f * std::sin(0.3f)}, dy{-3.0f * std::sin(0.3f), 3.0f * std::cos(0.3f)};
+  EXPECT_NEAR(selectDetailLevel(dx, dy, 0.0f, 9, 2.0f).level, selectDetailLevel(dx, dy, 0.0f, 9).level, 1e-5f);
+  // A footprint with no area (a line) is k levels below its length, not level 0.
+  EXPECT_NEAR(selectDetailLevel({5, 0}, {10, 0}, 0.0f, 9, 1.0f).level, std::log2(5.0f), 1e-5f);
+  const LevelSelection zero = selectDetailLevel({0, 0}, {0, 0}, 0.0f, 9, 1.0f);
+  EXPECT_EQ(zero.fine, 0u);
+  EXPECT_EQ(zero.blend, 0.0f);
+  EXPECT_EQ(selectDetailLevel({NAN, 0}, {0, 1}, 0.0f, 9, 1.0f).fine, 0u);
+  // The filters' nearest level follows the limit too.
+  EXPECT_EQ(selectFilterLevel(CompositeFilter::Bilinear, {1, 0}, {0, 6}, 0.0f, 9).fine, 3u);  // round(2.58)
+  EXPECT_EQ(selectFilterLevel(CompositeFilter::Bilinear, {1, 0}, {0, 6}, 0.0f, 9, 1.0f).fine, 2u);  // round(1.58)
+}
+
+TEST(LevelSelection, LevelRulePacksIntoOneWord) {
+  EXPECT_EQ(packLevelRule({}), 0u);  // the default: what a zero-filled record means
+  for (const LevelRule rule : {LevelRule{1.0f, 0.0f}, LevelRule{0.5f, -0.5f}, LevelRule{2.25f, 0.75f}}) {
+    const LevelRule back = unpackLevelRule(packLevelRule(rule));
+    EXPECT_EQ(back.maxAnisotropyLog2, rule.maxAnisotropyLog2);
+    EXPECT_EQ(back.bias, rule.bias);
+  }
+  EXPECT_EQ(unpackLevelRule(packLevelRule(kUnmipmappedLevelRule)).maxAnisotropyLog2, kUnmipmappedLevelRule.maxAnisotropyLog2);
+}
+
+TEST(LevelSelection, LevelRuleDefinesAreFloatLiteralsOnlyForARule) {
+  EXPECT_TRUE(levelRuleDefines({}).empty());  // no variant: the shaders of before the rule
+  const auto defines = levelRuleDefines({.maxAnisotropyLog2 = 1.0f, .bias = -0.375f});
+  ASSERT_EQ(defines.size(), 2u);
+  EXPECT_EQ(defines[0].first, "SG_LEVEL_RULE_ANISOTROPY_LOG2");
+  EXPECT_EQ(defines[1].first, "SG_LEVEL_RULE_BIAS");
+  for (const auto& [name, literal] : defines)  // GLSL reads a float only with a point or exponent
+    EXPECT_NE(literal.find_first_of(".e"), std::string::npos) << name << " " << literal;
+  EXPECT_EQ(std::strtof(defines[0].second.c_str(), nullptr), 1.0f);
+  EXPECT_EQ(std::strtof(defines[1].second.c_str(), nullptr), -0.375f);
+  EXPECT_EQ(levelRuleDefines({.maxAnisotropyLog2 = 0.0f, .bias = 0.25f}).size(), 2u);  // a bias alone is a rule
 }
 
 TEST(LevelSelection, BiasShiftsTheLevel) {
