@@ -204,6 +204,10 @@ void Context::pickPhysicalDevice(const ContextOptions& options) {
     }
   }
   if (!physicalDevice_) throw GpuError("no usable Vulkan 1.3 device:" + (rejected.empty() ? std::string(" none matched SG_DEVICE") : rejected));
+  VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+  VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroup};
+  vkGetPhysicalDeviceProperties2(physicalDevice_, &properties);
+  subgroupSize_ = subgroup.subgroupSize;
 }
 
 void Context::createDevice(const ContextOptions& options) {

@@ -53,6 +53,10 @@ class Context {
   std::vector<uint32_t> queueFamilies() const;
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   std::string deviceName() const { return properties_.deviceName; }
+  // How many invocations run as one SIMD unit (8 on lavapipe with 256-bit
+  // vectors, 32 or 64 on GPUs): shaders that share per-workgroup setup size
+  // their workgroups by it.
+  uint32_t subgroupSize() const { return subgroupSize_; }
   std::string driverDescription() const;
   bool validationEnabled() const { return validation_; }
   // Messages from the validation layer (errors and non-allowed warnings).
@@ -76,6 +80,7 @@ class Context {
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
   VkPhysicalDevice physicalDevice_ = VK_NULL_HANDLE;
   VkPhysicalDeviceProperties properties_{};
+  uint32_t subgroupSize_ = 0;
   VkDevice device_ = VK_NULL_HANDLE;
   QueueInfo queues_[3];
   VkCommandPool immediatePool_ = VK_NULL_HANDLE;

@@ -3,7 +3,6 @@
 #include <map>
 
 #include <shadelgraph/gpu/pass_context.hpp>
-#include <shadelgraph/gpu/subgroup.hpp>
 #include <shadelgraph/render/light_binding.hpp>
 #include <shadelgraph/render/material_variants.hpp>
 #include <shadelgraph/render/environment_binding.hpp>
@@ -23,9 +22,8 @@ constexpr uint32_t kBaseBindings[] = {kBindFrame,    kBindParams,   kBindObjects
 // layer, its plugin and the author's file:line.
 const gpu::Pipeline& layerPipeline(PassContext& ctx, const DecoupledFrame& frame, const plugin::MaterialLayer& layer) {
   const render::TextureSet* textures = frame.view.layerTextures.forLayer(layer);
-  const uint32_t invocations = frame.layerShadeInvocations != 0
-                                   ? frame.layerShadeInvocations
-                                   : gpu::subgroupSize(ctx.device().context().physicalDevice());
+  const uint32_t invocations =
+      frame.layerShadeInvocations != 0 ? frame.layerShadeInvocations : ctx.device().context().subgroupSize();
   const uint32_t rows = chunkRowsPerInvocation(invocations);
   const auto describe = [&] {
     gpu::ComputePipelineDesc desc = layerShadePipeline(layer, rows);
