@@ -1,6 +1,7 @@
 #include <shadelgraph/graph/place_transients.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 #include <type_traits>
 
@@ -26,8 +27,6 @@ void bucketBy(std::span<const TransientLifetime> transients, uint32_t positions,
 // walk: +5.9% at 100 transients, +3.0% at 200, even at 300, -4.3% at 500,
 // -13% at 1000.
 constexpr std::size_t kBlockListFrom = 320;
-
-constexpr QueueClass kQueues[] = {QueueClass::Graphics, QueueClass::AsyncCompute, QueueClass::Transfer};
 
 // From which position a transient's memory may be taken over on `queue`
 // (kInvalidIndex: never), and the waits that prove it.
@@ -71,8 +70,9 @@ void sweep(std::span<const TransientLifetime> transients, std::span<const Memory
       const MemoryPlacement& m = plan.placements[done.id];
       if (!plan.heaps[m.heap].aliasing) continue;
       QueueMask now = QueueMask::None;
-      for (const QueueClass q : kQueues) {
-        if (!any(used & toMask(q))) continue;
+      // Only the queues in use, lowest first (each bit of the mask is a queue index).
+      for (auto bits = static_cast<uint32_t>(used); bits != 0; bits &= bits - 1) {
+        const auto q = static_cast<QueueClass>(std::countr_zero(bits));
         PipelineStage unused = PipelineStage::None;
         const uint32_t from = availableFrom(done, q, queues, unused);
         if (from <= t.firstUse) {
@@ -139,10 +139,9 @@ void sweep(std::span<const TransientLifetime> transients, std::span<const Memory
     }
     for (const uint32_t p : previous) {
       const TransientLifetime& before = transients[p];
-      if (before.queues != taker) {
-        for (const QueueClass q : kQueues) {
-          if (toMask(q) == taker) availableFrom(before, q, queues, plan.takeOverWaits[t.id]);
-        }
+      if (before.queues != taker && queueCount(taker) == 1) {
+        const auto q = static_cast<QueueClass>(std::countr_zero(static_cast<uint32_t>(taker)));
+        availableFrom(before, q, queues, plan.takeOverWaits[t.id]);
       }
       aliasPairs.emplace_back(t.id, before.id);
       aliasPairs.emplace_back(before.id, t.id);
