@@ -352,11 +352,13 @@ void measureCoverage(gpu::Device& device, const Scenes& scenes, const std::vecto
         for (int f = 0; f < frames; ++f) frame = session->renderer->render(view);  // the adjuster settles
       };
       settle();
+      // Auto mode decides per frame (tiny objects, minified textures without
+      // mip levels), so a sample model may be forward at one size only.
+      if (!named && session->decoupled->stats().objects == 0) {
+        forwardOnly.push_back(name + " at " + size.text);
+        continue;
+      }
       if (i == 0 && session->decoupled->stats().objects == 0) {
-        if (!named) {
-          forwardOnly.push_back(name);
-          break;
-        }
         std::fprintf(stderr, "[bench] targets: %s is forward in auto mode: measured in mode decoupled\n", name.c_str());
         detail = "mode decoupled (auto: forward)";
         session = std::make_unique<BenchSession>();

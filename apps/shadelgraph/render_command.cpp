@@ -76,6 +76,10 @@ void writeStats(const std::string& path, const AppSession& session, const render
   nlohmann::json runTime = nlohmann::json::array();
   for (const auto& f : session.decoupled->runTimeForward())
     runTime.push_back({{"name", session.scene.instances[f.instance].name}, {"primitive", f.primitive}, {"reason", f.reason}});
+  // Objects mode auto drew forward in the last frame, and why (tiny, a minified texture without mip levels).
+  nlohmann::json thisFrame = nlohmann::json::array();
+  for (const auto& f : session.decoupled->frameForward())
+    thisFrame.push_back({{"name", session.scene.instances[f.instance].name}, {"primitive", f.primitive}, {"reason", f.reason}});
   nlohmann::json stats{{"frame_ms", frame.timings.frameMs},
                        {"gpu_ms", frame.timings.gpuMs},
                        // GPU time of each raster frame of --frames (first to last timestamp of
@@ -93,6 +97,7 @@ void writeStats(const std::string& path, const AppSession& session, const render
                        {"objects_decoupled", d.objects},
                        {"objects", objects},
                        {"forward_at_run_time", runTime},
+                       {"forward_this_frame", thisFrame},
                        {"covered_pixels", d.counters.coveredPixels},
                        {"shadels_marked", uint64_t(d.counters.chunksMarked) * 64},
                        {"shadels_allocated", uint64_t(d.counters.chunksAllocated) * 64},
@@ -220,6 +225,9 @@ void runRender(const RenderArgs& args) {
     for (const auto& f : session.decoupled->runTimeForward())
       std::printf("forward: %s primitive %u (%s)\n", session.scene.instances[f.instance].name.c_str(), f.primitive,
                   f.reason.c_str());
+  for (const auto& f : session.decoupled->frameForward())
+    std::printf("forward this frame: %s primitive %u (%s)\n", session.scene.instances[f.instance].name.c_str(), f.primitive,
+                f.reason.c_str());
   for (const auto& shrunk : session.decoupled->shrunkIdMaps())
     std::printf("warning: object '%s' primitive %u: triangle-ID map shrunk to fit the %.0f MiB buffer, level 0 %u -> %u\n",
                 session.scene.instances[shrunk.instance].name.c_str(), shrunk.primitive,

@@ -1,6 +1,7 @@
 #include "decoupled_shading.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <stdexcept>
@@ -123,6 +124,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
       slot.record.material = draw.material;
       slot.record.supportChunks = supportRadius(materials, material) > 0 ? 1u : 0u;
       slot.levelRule = levelRule(in.scene, draw.material);
+      slot.unmipmapped = shadel::unmipmappedTexels(in.scene, primitiveMesh(in.scene.meshes[size_t(in.scene.instances[draw.instance].mesh)], draw.primitive));
       slot.materialStack = draw.materialStack;
       slot.changedFrame = frames_;
       slot.reshadedWhole = reshadedWhole(materials, material);
@@ -218,6 +220,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
     slot.record = {draw.world, draw.firstIndex, draw.vertexOffset, draw.indexCount / 3, draw.material, offset,
                    uint32_t(primitive.uvSet), primitive.tileOffset, supportRadius(materials, material) > 0 ? 1u : 0u, 0u, 0u, 0u};
     slot.levelRule = levelRule(in.scene, draw.material);
+    slot.unmipmapped = shadel::unmipmappedTexels(in.scene, primitiveMesh(in.scene.meshes[size_t(key.first)], key.second));
   }
 }
 
@@ -260,12 +263,15 @@ void DecoupledShading::uploadTables(gpu::Device& device) {
   idMapBuffer_ = upload(device, idTexels_, "triangle-ID maps");
 }
 
-// Objects in mode auto that are tiny on screen this frame go forward; they
-// keep their shadel space and simply mark nothing. Objects outside the view
-// are not in the frame's draws at all (nor their materials compiled).
+// Objects in mode auto go forward in frames where decoupled shading cannot
+// serve them: tiny on screen, or sampling a texture without mip levels that
+// is minified (unmipmapped_minification.hpp). They keep their shadel space
+// and simply mark nothing. Objects outside the view are not in the frame's
+// draws at all (nor their materials compiled).
 void DecoupledShading::selectFrameObjects(render::FrameContext& ctx) {
   frameObjects_.clear();
   frameMaterials_.clear();
+  frameForward_.clear();
   const auto& in = ctx.inputs();
   const auto& draws = ctx.gpuScene().draws();
   std::vector<uint32_t> forward;
@@ -273,9 +279,24 @@ void DecoupledShading::selectFrameObjects(render::FrameContext& ctx) {
     const glm::vec4 sphere = in.drawSpheres[d];
     const float distance = glm::distance(glm::vec3(sphere), in.cameraPosition);
     const bool automatic = in.objectModes[draws[d].instance] == scene::ShadingMode::Auto;
-    const bool tiny = automatic && in.pixelsPerUnitAtUnitDistance > 0.0f && distance > sphere.w &&
-                      sphere.w * in.pixelsPerUnitAtUnitDistance / distance < kTinyObjectPixels;
-    if (!slots_[d].allocated || tiny) {
+    std::string why;
+    if (automatic && slots_[d].allocated && in.pixelsPerUnitAtUnitDistance > 0.0f) {
+      const bool tiny = distance > sphere.w && sphere.w * in.pixelsPerUnitAtUnitDistance / distance < kTinyObjectPixels;
+      // The sphere's centre stands for the object's distance; the uniform part of its world scale for its size.
+      const double scale = std::cbrt(std::abs(double(glm::determinant(glm::mat3(draws[d].world)))));
+      const double texelsPerPixel = shadel::unmipmappedTexelsPerPixel(slots_[d].unmipmapped, scale, distance,
+                                                                      in.pixelsPerUnitAtUnitDistance);
+      if (tiny) {
+        why = "tiny on screen";
+      } else if (settings_.forwardMinifiedUnmipmapped && texelsPerPixel > shadel::kMaxUnmipmappedTexelsPerPixel) {
+        char text[160];
+        std::snprintf(text, sizeof text, "texture '%s' has no mip levels and is minified, %.1f texels per pixel",
+                      slots_[d].unmipmapped.texture.c_str(), texelsPerPixel);
+        why = text;
+      }
+    }
+    if (!why.empty()) frameForward_.push_back({draws[d].instance, draws[d].primitive, why});
+    if (!slots_[d].allocated || !why.empty()) {
       forward.push_back(d);
     } else {
       frameObjects_.push_back(d);

@@ -19,6 +19,7 @@
 #include <shadelgraph/shadel/live_entry_spans.hpp>
 #include <shadelgraph/shadel/shadel_space.hpp>
 #include <shadelgraph/shadel/shadel_storage.hpp>
+#include <shadelgraph/shadel/unmipmapped_minification.hpp>
 
 #include "chunk_slots.hpp"
 #include "decoupled_tables.hpp"
@@ -76,6 +77,10 @@ struct DecoupledSettings {
   // object (shadel::screenRateLevel0Size); false: from textures and triangle
   // count only, as before (comparisons).
   bool screenRateLevel0 = true;
+  // Mode auto draws an object forward in frames where a texture it samples
+  // without mip levels is minified (shadel/unmipmapped_minification.hpp);
+  // false: decoupled there, as before (comparisons).
+  bool forwardMinifiedUnmipmapped = true;
   // The per-entry passes visit only the owned entries of objects shaded this
   // frame or still holding stored chunks (shadel::liveEntrySpans); false:
   // every allocated object's, culled or not, as before (comparisons).
@@ -177,6 +182,9 @@ class DecoupledShading {
     std::string reason;
   };
   std::vector<RunTimeForward> runTimeForward() const;
+  // Decoupled objects in mode auto drawn forward in the last frame, and why
+  // (tiny on screen; a texture without mip levels minified: unmipmapped_minification.hpp).
+  const std::vector<RunTimeForward>& frameForward() const { return frameForward_; }
   // Triangle-ID maps made coarser than their object asked for so that all fit
   // the one buffer (id_map_budget.hpp): that object shades at most this fine.
   struct ShrunkIdMap {
@@ -226,6 +234,7 @@ class DecoupledShading {
     std::string reason;  // why not, when it asked to be
     DecoupledObject record{};
     uint32_t levelRule = 0;  // how its level follows its footprint (shadel::packLevelRule): a pipeline variant
+    shadel::UnmipmappedTexels unmipmapped;  // its finest texture without mip levels (auto: forward where minified)
     std::string materialStack;  // the material its stored shading was shaded with
     uint64_t changedFrame = 0;  // the frame it was allocated, moved or changed material: nothing to reuse then
     uint64_t materialFrame = 0;  // the frame it was allocated or changed material (its kept layers are recomputed)
@@ -248,6 +257,7 @@ class DecoupledShading {
   // This frame: the objects shaded decoupled (draws = ids, materials).
   std::vector<uint32_t> frameObjects_;
   std::vector<std::string> frameMaterials_;
+  std::vector<RunTimeForward> frameForward_;  // allocated objects drawn forward this frame (mode auto)
   LayerPlan layerPlan_;
   LayerHistory history_;
   LayerHistory::Declared declaredHistory_;
