@@ -54,8 +54,9 @@ void markLevel(uint level) {
 
 const bool kMarkCoarse = true;
 #else
-layout(location = kMarkLevelsLocation) flat in uvec4 inLevelOrigins[kMarkLevelOriginVectors];
-layout(location = kMarkLevelsLocation + kMarkLevelOriginVectors) flat in uvec2 inLevels;  // level0Size, levelCount
+layout(location = kMarkLevelsLocation) flat in uvec2 inLevels;  // level0Size, levelCount
+layout(location = kMarkLevelOriginsLocation) flat in uvec4 inLevelPacked[kMarkLevelVectors];
+layout(location = kMarkLevelOwnedLocation) flat in uvec4 inLevelOwned[kMarkLevelVectors];
 
 #ifdef SG_SHADEL_MASKS
 layout(set = 0, binding = kBindShadelMasks, std430) buffer ShadelMasks { uint64_t shadelMasks[]; };
@@ -75,10 +76,11 @@ uint64_t sgBoxBits(uvec2 lo, uvec2 hi) {
 // below, diagonal) whose first column / row fills the gutter the footprint
 // reaches gets that part when it is inside the level (else the gutter repeats
 // the tile's own edge shadels, which the clamped own box holds). Each
-// chunk's shadel mask (slot storageBase + chunk; shadel-clear sets
-// storageBase for every owned entry) is read first and set only when bits
+// chunk's shadel mask (slot storageBase + chunk, the storageBase
+// shadel-clear gives the entry: sgMarkStorageBase) is read first and set only when bits
 // are missing.
-void markFootprint(SgLevelRect rect, SgBilinearTaps taps, uvec2 tile) {
+void markFootprint(SgMarkLevel level, SgBilinearTaps taps, uvec2 tile) {
+  SgLevelRect rect = level.rect;
   uvec2 inChunk = tile & (SG_CHUNK_SIZE - 1u);
   uvec2 lo = inChunk, hi = inChunk + 1u;
   if (SG_FILTER == SG_FILTER_POINT) {
@@ -102,15 +104,16 @@ void markFootprint(SgLevelRect rect, SgBilinearTaps taps, uvec2 tile) {
     chunks &= chunks - 1u;
     uvec2 step = uvec2(which & 1u, which >> 1u);
     uint64_t bits = which == 0u ? ownBits : which == 1u ? rightBits : which == 2u ? belowBits : uint64_t(1);
-    SgShadelAddress n = sgShadelAddress(chunkOrigin + step * SG_CHUNK_SIZE, params.entriesPerSideLog2);
-    uint slot = remap[n.entryIndex].storageBase + n.chunkIndex;
+    uvec2 origin = chunkOrigin + step * SG_CHUNK_SIZE;
+    uint slot = sgMarkStorageBase(level, origin) + sgShadelAddress(origin, params.entriesPerSideLog2).chunkIndex;
     if ((shadelMasks[slot] & bits) != bits) atomicOr(shadelMasks[slot], bits);
   }
 }
 #endif
 
-void markLevel(uint level) {
-  SgLevelRect rect = sgUnpackLevelRect(inLevelOrigins, inLevels, level);
+void markLevel(uint index) {
+  SgMarkLevel level = sgUnpackMarkLevel(inLevelPacked, inLevelOwned, inLevels, index);
+  SgLevelRect rect = level.rect;
   SgBilinearTaps taps = sgBilinearTaps(inShadingUv, rect.size);
   uvec2 tile = sgFootprintTileShadel(rect, taps);
   SgShadelAddress a = sgShadelAddress(tile, params.entriesPerSideLog2);
@@ -119,7 +122,7 @@ void markLevel(uint level) {
   // read is much cheaper than an atomic.
   if ((remap[a.entryIndex].occupancy & bit) == uint64_t(0)) atomicOr(remap[a.entryIndex].occupancy, bit);
 #ifdef SG_SHADEL_MASKS
-  markFootprint(rect, taps, tile);
+  markFootprint(level, taps, tile);
 #endif
 }
 

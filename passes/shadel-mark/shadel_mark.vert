@@ -17,8 +17,9 @@ layout(location = 2) out vec2 outUv1;
 layout(location = 3) out float outColorAlpha;
 #endif
 #ifndef SG_MARK_BASELINE
-layout(location = kMarkLevelsLocation) flat out uvec4 outLevelOrigins[kMarkLevelOriginVectors];
-layout(location = kMarkLevelsLocation + kMarkLevelOriginVectors) flat out uvec2 outLevels;
+layout(location = kMarkLevelsLocation) flat out uvec2 outLevels;
+layout(location = kMarkLevelOriginsLocation) flat out uvec4 outLevelPacked[kMarkLevelVectors];
+layout(location = kMarkLevelOwnedLocation) flat out uvec4 outLevelOwned[kMarkLevelVectors];
 #endif
 
 void main() {
@@ -35,13 +36,20 @@ void main() {
 #ifndef SG_MARK_BASELINE
   SgShadelInstance instance = shadelInstances[object.objectId];
   outLevels = uvec2(instance.level0Size, instance.levelCount);
-  for (uint v = 0u; v < kMarkLevelOriginVectors; ++v) {
-    uvec4 packed = uvec4(0u);
+  uint owned = instance.firstOwnedEntry;
+  for (uint v = 0u; v < kMarkLevelVectors; ++v) {
+    uvec4 packed = uvec4(0u), first = uvec4(0u);
     for (uint c = 0u; c < 4u; ++c) {
       uint level = 4u * v + c;
-      if (level < instance.levelCount) packed[c] = sgPackLevelOrigin(levelRects[instance.firstLevelRect + level].origin);
+      if (level < instance.levelCount) {
+        SgLevelRect rect = levelRects[instance.firstLevelRect + level];
+        packed[c] = sgPackMarkLevel(rect);
+        first[c] = owned;
+        owned += sgMarkLevelEntries(rect);
+      }
     }
-    outLevelOrigins[v] = packed;
+    outLevelPacked[v] = packed;
+    outLevelOwned[v] = first;
   }
 #endif
 }
