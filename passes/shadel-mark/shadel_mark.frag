@@ -54,9 +54,8 @@ void markLevel(uint level) {
 
 const bool kMarkCoarse = true;
 #else
-layout(location = kMarkLevelsLocation) flat in uvec2 inLevels;  // level0Size, levelCount
-layout(location = kMarkLevelOriginsLocation) flat in uvec4 inLevelPacked[kMarkLevelVectors];
-layout(location = kMarkLevelOwnedLocation) flat in uvec4 inLevelOwned[kMarkLevelVectors];
+layout(location = kMarkLevelsLocation) flat in uvec3 inLevels;  // level0Size, levelCount, firstOwnedEntry
+layout(location = kMarkLevelOriginsLocation) flat in uvec4 inLevelOrigins[kMarkLevelVectors];
 
 #ifdef SG_SHADEL_MASKS
 layout(set = 0, binding = kBindShadelMasks, std430) buffer ShadelMasks { uint64_t shadelMasks[]; };
@@ -112,7 +111,7 @@ void markFootprint(SgMarkLevel level, SgBilinearTaps taps, uvec2 tile) {
 #endif
 
 void markLevel(uint index) {
-  SgMarkLevel level = sgUnpackMarkLevel(inLevelPacked, inLevelOwned, inLevels, index);
+  SgMarkLevel level = sgUnpackMarkLevel(inLevelOrigins, inLevels, index);
   SgLevelRect rect = level.rect;
   SgBilinearTaps taps = sgBilinearTaps(inShadingUv, rect.size);
   uvec2 tile = sgFootprintTileShadel(rect, taps);
@@ -134,7 +133,7 @@ void main() {
   SgShadelInstance instance = shadelInstances[object.objectId];
   uvec2 levels = uvec2(instance.level0Size, instance.levelCount);
 #else
-  uvec2 levels = inLevels;
+  uvec2 levels = inLevels.xy;
 #endif
   float size0 = float(levels.x);
   SgLevelSelection sel =

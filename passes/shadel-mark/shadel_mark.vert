@@ -17,9 +17,8 @@ layout(location = 2) out vec2 outUv1;
 layout(location = 3) out float outColorAlpha;
 #endif
 #ifndef SG_MARK_BASELINE
-layout(location = kMarkLevelsLocation) flat out uvec2 outLevels;
-layout(location = kMarkLevelOriginsLocation) flat out uvec4 outLevelPacked[kMarkLevelVectors];
-layout(location = kMarkLevelOwnedLocation) flat out uvec4 outLevelOwned[kMarkLevelVectors];
+layout(location = kMarkLevelsLocation) flat out uvec3 outLevels;
+layout(location = kMarkLevelOriginsLocation) flat out uvec4 outLevelOrigins[kMarkLevelVectors];
 #endif
 
 void main() {
@@ -35,21 +34,14 @@ void main() {
 #endif
 #ifndef SG_MARK_BASELINE
   SgShadelInstance instance = shadelInstances[object.objectId];
-  outLevels = uvec2(instance.level0Size, instance.levelCount);
-  uint owned = instance.firstOwnedEntry;
+  outLevels = uvec3(instance.level0Size, instance.levelCount, instance.firstOwnedEntry);
   for (uint v = 0u; v < kMarkLevelVectors; ++v) {
-    uvec4 packed = uvec4(0u), first = uvec4(0u);
+    uvec4 packed = uvec4(0u);
     for (uint c = 0u; c < 4u; ++c) {
       uint level = 4u * v + c;
-      if (level < instance.levelCount) {
-        SgLevelRect rect = levelRects[instance.firstLevelRect + level];
-        packed[c] = sgPackMarkLevel(rect);
-        first[c] = owned;
-        owned += sgMarkLevelEntries(rect);
-      }
+      if (level < instance.levelCount) packed[c] = sgPackMarkOrigin(levelRects[instance.firstLevelRect + level].origin);
     }
-    outLevelPacked[v] = packed;
-    outLevelOwned[v] = first;
+    outLevelOrigins[v] = packed;
   }
 #endif
 }
