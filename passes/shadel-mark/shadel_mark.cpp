@@ -25,6 +25,7 @@ gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline, bool alp
   for (auto& define : levelRuleDefines(levelRule)) defines.push_back(std::move(define));
   const std::span<const uint32_t> bindings = shadelMasks ? std::span<const uint32_t>(kMaskBindings) : kBindings;
   std::vector<std::pair<std::string, std::string>> vertexDefines;
+  if (baseline) vertexDefines.emplace_back("SG_MARK_BASELINE", "1");  // the baseline reads its levels itself
   if (alphaTest) {
     defines.emplace_back("SG_ALPHA_TEST", "1");
     vertexDefines.emplace_back("SG_ALPHA_TEST", "1");

@@ -6,11 +6,18 @@
 // tile in shade storage (the chunk and a one-shadel gutter) holds the whole
 // footprint. One remap read per level, an atomic only when the bit is missing.
 // With SG_SHADEL_MASKS it also marks which shadels of the chunk the footprint
-// reads (layer-shade shades only those): one more atomicOr per level, and
-// one per neighbour chunk whose first row or column fills the tile's gutter.
+// reads (layer-shade shades only those), and of each neighbour chunk whose
+// first row or column fills the tile's gutter.
 // Early depth test: hidden surfaces mark nothing. No colour output.
+//
+// Cost on lavapipe: every buffer read or atomic in a fragment shader is a
+// loop over the 8 lanes, whether or not a lane takes its branch (an `if` is
+// only a mask). So the shader keeps few of them in its code: the levels come
+// flat from the vertex shader, and the chunks a footprint touches are marked
+// in one loop that runs as often as the lane with the most chunks needs.
 #include <framework/render/shaders/object.glsl>
 #include <framework/shadel/shaders/decoupled.glsl>
+#include <passes/shadel-mark/shadel_mark_levels.glsl>
 
 #ifndef SG_FILTER
 #error "SG_FILTER: the composite filter (passes::filterDefine)"
@@ -47,40 +54,32 @@ void markLevel(uint level) {
 
 const bool kMarkCoarse = true;
 #else
+layout(location = kMarkLevelsLocation) flat in uvec3 inLevels;  // level0Size, levelCount, firstOwnedEntry
+layout(location = kMarkLevelOriginsLocation) flat in uvec4 inLevelOrigins[kMarkLevelVectors];
+
 #ifdef SG_SHADEL_MASKS
 layout(set = 0, binding = kBindShadelMasks, std430) buffer ShadelMasks { uint64_t shadelMasks[]; };
 
-// Sets `bits` in the shadel mask of chunk `chunk` of a remap entry whose
-// chunk slots start at `storageBase` (shadel-clear sets it for every owned
-// entry). Read first, as for the chunk bit.
-void markShadels(uint storageBase, uint chunk, uint64_t bits) {
-  uint slot = storageBase + chunk;
-  if ((shadelMasks[slot] & bits) != bits) atomicOr(shadelMasks[slot], bits);
-}
-
-// The neighbour chunk `step` chunks from the tile's (right, below or
-// diagonal) gives its first column / row to the tile's gutter when it is
-// inside the level; else the gutter repeats the tile's own edge shadels,
-// which the tile's own mask holds (clamped box below).
-void markNeighbour(SgLevelRect rect, uvec2 chunkOrigin, uvec2 step, uint64_t bits) {
-  uvec2 origin = chunkOrigin + step * SG_CHUNK_SIZE;
-  if (any(greaterThanEqual(origin - rect.origin, uvec2(rect.size)))) return;
-  SgShadelAddress n = sgShadelAddress(origin, params.entriesPerSideLog2);
-  markShadels(remap[n.entryIndex].storageBase, n.chunkIndex, bits);
-}
-
-// The shadels of a chunk in the box [lo, hi] (inclusive, inside [0,8)²).
+// The shadels of a chunk in the box [lo, hi] (inclusive, inside [0,8)²):
+// the row's bits times one bit per row of the box (no carries: row < 256).
 uint64_t sgBoxBits(uvec2 lo, uvec2 hi) {
   uint row = ((2u << (hi.x - lo.x)) - 1u) << lo.x;
-  uint64_t bits = uint64_t(0);
-  for (uint y = lo.y; y <= hi.y; ++y) bits |= uint64_t(row) << (SG_CHUNK_SIZE * y);
-  return bits;
+  uint64_t rows = (uint64_t(0x0101010101010101ul) >> (SG_CHUNK_SIZE * (7u - (hi.y - lo.y)))) << (SG_CHUNK_SIZE * lo.y);
+  return uint64_t(row) * rows;
 }
 
 // What composite reads of the tile: the footprint's taps at (tile & 7) +
 // [lo, hi] in the 9x9 tile, whatever their weight (a weight-0 tap is still
-// fetched). Point: the nearest tap only; bilinear, trilinear: the 2x2.
-void markFootprint(SgLevelRect rect, SgBilinearTaps taps, uvec2 tile, uint storageBase, uint chunk) {
+// fetched). Point: the nearest tap only; bilinear, trilinear: the 2x2. The
+// tile's own chunk gets the part inside it; each neighbour chunk (right,
+// below, diagonal) whose first column / row fills the gutter the footprint
+// reaches gets that part when it is inside the level (else the gutter repeats
+// the tile's own edge shadels, which the clamped own box holds). Each
+// chunk's shadel mask (slot storageBase + chunk, the storageBase
+// shadel-clear gives the entry: sgMarkStorageBase) is read first and set only when bits
+// are missing.
+void markFootprint(SgMarkLevel level, SgBilinearTaps taps, uvec2 tile) {
+  SgLevelRect rect = level.rect;
   uvec2 inChunk = tile & (SG_CHUNK_SIZE - 1u);
   uvec2 lo = inChunk, hi = inChunk + 1u;
   if (SG_FILTER == SG_FILTER_POINT) {
@@ -88,28 +87,41 @@ void markFootprint(SgLevelRect rect, SgBilinearTaps taps, uvec2 tile, uint stora
     hi = lo;
   }
   uvec2 last = uvec2(SG_CHUNK_SIZE - 1u);
-  markShadels(storageBase, chunk, sgBoxBits(min(lo, last), min(hi, last)));
   uvec2 chunkOrigin = tile - inChunk;
-  if (hi.x == SG_CHUNK_SIZE && lo.y <= last.y)
-    markNeighbour(rect, chunkOrigin, uvec2(1, 0), sgBoxBits(uvec2(0, lo.y), uvec2(0, min(hi.y, last.y))));
-  if (hi.y == SG_CHUNK_SIZE && lo.x <= last.x)
-    markNeighbour(rect, chunkOrigin, uvec2(0, 1), sgBoxBits(uvec2(lo.x, 0), uvec2(min(hi.x, last.x), 0)));
-  if (all(equal(hi, uvec2(SG_CHUNK_SIZE)))) markNeighbour(rect, chunkOrigin, uvec2(1, 1), uint64_t(1));
+  // Inside the level: the right, lower and diagonal neighbour chunks.
+  bvec2 nextInside = lessThan(chunkOrigin + SG_CHUNK_SIZE - rect.origin, uvec2(rect.size));
+  // Bit 0 the own chunk, 1 right, 2 below, 3 diagonal: the chunks to mark.
+  uint chunks = 1u;
+  if (hi.x == SG_CHUNK_SIZE && lo.y <= last.y && nextInside.x) chunks |= 2u;
+  if (hi.y == SG_CHUNK_SIZE && lo.x <= last.x && nextInside.y) chunks |= 4u;
+  if (all(equal(hi, uvec2(SG_CHUNK_SIZE))) && all(nextInside)) chunks |= 8u;
+  uint64_t ownBits = sgBoxBits(min(lo, last), min(hi, last));
+  uint64_t rightBits = sgBoxBits(uvec2(0, lo.y), uvec2(0, min(hi.y, last.y)));
+  uint64_t belowBits = sgBoxBits(uvec2(lo.x, 0), uvec2(min(hi.x, last.x), 0));
+  while (chunks != 0u) {
+    uint which = uint(findLSB(chunks));
+    chunks &= chunks - 1u;
+    uvec2 step = uvec2(which & 1u, which >> 1u);
+    uint64_t bits = which == 0u ? ownBits : which == 1u ? rightBits : which == 2u ? belowBits : uint64_t(1);
+    uvec2 origin = chunkOrigin + step * SG_CHUNK_SIZE;
+    uint slot = sgMarkStorageBase(level, origin) + sgShadelAddress(origin, params.entriesPerSideLog2).chunkIndex;
+    if ((shadelMasks[slot] & bits) != bits) atomicOr(shadelMasks[slot], bits);
+  }
 }
 #endif
 
-void markLevel(uint level) {
-  SgLevelRect rect = sgLevelRect(object.objectId, level);
+void markLevel(uint index) {
+  SgMarkLevel level = sgUnpackMarkLevel(inLevelOrigins, inLevels, index);
+  SgLevelRect rect = level.rect;
   SgBilinearTaps taps = sgBilinearTaps(inShadingUv, rect.size);
   uvec2 tile = sgFootprintTileShadel(rect, taps);
   SgShadelAddress a = sgShadelAddress(tile, params.entriesPerSideLog2);
-  SgRemapEntry entry = remap[a.entryIndex];
   uint64_t bit = sgChunkBit(a.chunkIndex);
   // Read first: most pixels find their chunk already marked, and a plain
   // read is much cheaper than an atomic.
-  if ((entry.occupancy & bit) == uint64_t(0)) atomicOr(remap[a.entryIndex].occupancy, bit);
+  if ((remap[a.entryIndex].occupancy & bit) == uint64_t(0)) atomicOr(remap[a.entryIndex].occupancy, bit);
 #ifdef SG_SHADEL_MASKS
-  markFootprint(rect, taps, tile, entry.storageBase, a.chunkIndex);
+  markFootprint(level, taps, tile);
 #endif
 }
 
@@ -117,11 +129,15 @@ const bool kMarkCoarse = SG_FILTER == SG_FILTER_TRILINEAR;
 #endif
 
 void main() {
+#ifdef SG_MARK_BASELINE
   SgShadelInstance instance = shadelInstances[object.objectId];
-  float size0 = float(instance.level0Size);
+  uvec2 levels = uvec2(instance.level0Size, instance.levelCount);
+#else
+  uvec2 levels = inLevels.xy;
+#endif
+  float size0 = float(levels.x);
   SgLevelSelection sel =
-      sgSelectFilterLevel(SG_FILTER, dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0, params.bias,
-                          instance.levelCount);
+      sgSelectFilterLevel(SG_FILTER, dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0, params.bias, levels.y);
 #ifdef SG_ALPHA_TEST
   if (sgMaskedOut(inUv0, inUv1, inColorAlpha)) return;  // after the derivatives: uniform control flow for them
 #endif
