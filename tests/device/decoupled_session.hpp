@@ -110,4 +110,10 @@ class Session {
   std::unique_ptr<render::Renderer> renderer_;
 };
 
+// The forward image of `scene` at `settings`: the reference decoupled renders are compared with.
+inline gpu::HostImage forwardImage(const scene::Scene& scene, const render::RenderSettings& settings) {
+  Session forward(scene, scene::ShadingMode::Forward);
+  return forward.renderer().render(settings).image;
+}
+
 }  // namespace sg::test

@@ -22,11 +22,7 @@ TEST(DecoupledLevel0, ThinBevelsAreShadedAtTheScreensRate) {
   SG_REQUIRE_ASSETS();
   const scene::Scene scene = scene::loadGltf(samplePath("OrientationTest"));
   const render::RenderSettings size{.width = 640, .height = 360};
-  gpu::HostImage forward;
-  {
-    Session f(scene, scene::ShadingMode::Forward);
-    forward = f.renderer().render(size).image;
-  }
+  const gpu::HostImage forward = forwardImage(scene, size);
   double psnr[2] = {};
   for (const bool screenRate : {false, true}) {
     Session d(scene, scene::ShadingMode::Decoupled,

@@ -30,11 +30,7 @@ TEST(DecoupledAuto, MinifiedTexturesWithoutMipsAreShadedForward) {
   SG_REQUIRE_ASSETS();
   const scene::Scene scene = scene::loadGltf(samplePath("TextureTransformTest"));
   const render::RenderSettings small{.width = 640, .height = 360};
-  gpu::HostImage forward;
-  {
-    Session f(scene, scene::ShadingMode::Forward);
-    forward = f.renderer().render(small).image;
-  }
+  const gpu::HostImage forward = forwardImage(scene, small);
   double psnr[2] = {};
   for (const bool verdict : {false, true}) {
     Session a(scene, scene::ShadingMode::Auto, {.storageChunks = 16384, .fixedBias = 0.0f,
