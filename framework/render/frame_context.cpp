@@ -19,6 +19,12 @@ std::span<const plugin::ResolvedPass> FrameContext::passesBetween(const std::str
   return {begin, end};
 }
 
+bool FrameContext::runsLater(const std::string& pass) const {
+  if (!frame_ || !pass_) return false;
+  const auto later = passesBetween(pass);
+  return later.data() + later.size() != frame_->passes.data() + frame_->passes.size();
+}
+
 SceneView FrameContext::view(std::span<const uint32_t> draws) const {
   return {all_.scene,     all_.frameUniforms, all_.lights, all_.noLightGrid, draws, all_.materials,
           all_.layerTextures, resources_,       &drawCommands_, VK_NULL_HANDLE, all_.backFacesHidden};

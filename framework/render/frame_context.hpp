@@ -113,6 +113,8 @@ class FrameContext {
   // `until` (every later one when the frame has none of that name): e.g.
   // what reads a resource before a later pass could write it.
   std::span<const plugin::ResolvedPass> passesBetween(const std::string& until) const;
+  // Whether a pass of that name comes after the running one in this frame.
+  bool runsLater(const std::string& pass) const;
 
  private:
   void* stateOrThrow(const std::string& key) const;

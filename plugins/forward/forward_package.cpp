@@ -282,8 +282,10 @@ void registerForwardPackage(plugin::Registry& registry) {
                       const auto view = ctx.view(ctx.draws().forward);
                       // A pass that only clears would keep the colour alive from here, during
                       // the decoupled objects' shading on async compute, so it could share
-                      // memory with none of their transients: composite clears it instead.
-                      if (!passes::hasAlphaMode(view, scene::AlphaMode::Opaque) && !ctx.draws().decoupled.empty()) {
+                      // memory with none of their transients: composite clears it instead
+                      // (a frame without composite: this pass clears).
+                      if (!passes::hasAlphaMode(view, scene::AlphaMode::Opaque) && !ctx.draws().decoupled.empty() &&
+                          ctx.runsLater("composite")) {
                         publish(ctx, t);  // unwritten: see passes::clearIfUnwritten
                         return;
                       }

@@ -119,6 +119,19 @@ TEST(FrameCli, ForwardOpaqueIsInTheFrameOnlyWithAnObjectShadedForward) {
   EXPECT_TRUE(keptPasses("--mode forward").count("forward-opaque"));
 }
 
+// Without composite in the frame nothing else would clear the colour of a
+// frame whose objects are all decoupled: forward-opaque clears it.
+TEST(FrameCli, AFrameWithoutCompositeStillClearsTheColour) {
+  const auto file = writeFrame("no-composite", R"({"name": "no-composite", "base": "decoupled", "remove": ["composite"]})");
+  const auto kept = keptPasses("--mode decoupled --frame-graph " + file.string());
+  EXPECT_TRUE(kept.count("forward-opaque"));
+  EXPECT_FALSE(kept.count("composite"));
+  const auto png = std::filesystem::temp_directory_path() / "sg-frame-no-composite.png";
+  const auto r = run("render --size 64x64 --mode decoupled --frame-graph " + file.string() + " -o " + png.string());
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(png));
+}
+
 TEST(FrameCli, TheForwardFrameHoldsNoDecoupledPass) {
   const auto kept = keptPasses("--mode decoupled --frame-graph forward");
   EXPECT_TRUE(kept.count("forward-opaque"));
