@@ -15,6 +15,7 @@ void ZPrepassChoice::collect() {
   pending_ = false;
   report_.measured = Overdraw{pendingView_.triangles, counts->prepass, counts->forwardOpaque};
   report_.measuredFrame = pendingFrame_;
+  ++report_.measurements;
   measuredView_ = pendingView_;
 }
 
@@ -32,7 +33,6 @@ ZPrepassChoice::Frame ZPrepassChoice::decide(gpu::Context& context, const Overdr
     pending_ = true;
     pendingView_ = view;
     pendingFrame_ = frameNumber;
-    ++report_.measurements;
     report_.reason = "measuring overdraw (drawn with the pre-pass)";
     return {.prepass = true, .probe = probe_.get()};
   }

@@ -28,7 +28,7 @@ struct ZPrepassReport {
   std::string reason;      // why drawn or not
   std::optional<Overdraw> measured;
   uint64_t measuredFrame = 0;  // the frame whose counts `measured` holds
-  uint32_t measurements = 0;   // measurement frames so far
+  uint32_t measurements = 0;   // measurement frames whose counts arrived
 };
 
 class ZPrepassChoice {
