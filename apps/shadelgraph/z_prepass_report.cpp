@@ -23,6 +23,7 @@ nlohmann::json zPrepassJson(passes::ZPrepassChoice& choice) {
                         {"fragments_without_prepass", o.depthPassed},
                         {"fragments_with_prepass", o.shaded},
                         {"depth_complexity", o.depthComplexity()},
+                        {"textures_per_triangle", o.texturesPerTriangle},
                         {"overdrawn_per_triangle", o.triangles ? double(o.overdrawn()) / double(o.triangles) : 0.0},
                         {"pays", passes::zPrepassPays(o)}};
   }

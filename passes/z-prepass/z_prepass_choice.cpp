@@ -13,7 +13,8 @@ void ZPrepassChoice::collect() {
   const auto counts = probe_->read();
   if (!counts) return;
   pending_ = false;
-  report_.measured = Overdraw{pendingView_.triangles, counts->prepass, counts->forwardOpaque};
+  report_.measured = Overdraw{pendingView_.triangles, counts->prepass, counts->forwardOpaque,
+                              pendingView_.texturesPerTriangle};
   report_.measuredFrame = pendingFrame_;
   ++report_.measurements;
   measuredView_ = pendingView_;
@@ -39,10 +40,12 @@ ZPrepassChoice::Frame ZPrepassChoice::decide(gpu::Context& context, const Overdr
   const Overdraw& o = *report_.measured;
   report_.measuring = false;
   report_.drawn = zPrepassPays(o);
-  char why[160];
-  std::snprintf(why, sizeof why, "%.2f overdrawn fragments a triangle %s %.2f (depth complexity %.2f)",
-                o.triangles ? double(o.overdrawn()) / double(o.triangles) : 0.0, report_.drawn ? ">" : "<=",
-                kZPrepassFragmentsPerTriangle, o.depthComplexity());
+  char why[200];
+  std::snprintf(why, sizeof why,
+                "%.2f overdrawn fragments a triangle at %.2f textures a triangle %s (pays above %.2f untextured; "
+                "depth complexity %.2f)",
+                o.triangles ? double(o.overdrawn()) / double(o.triangles) : 0.0, o.texturesPerTriangle,
+                report_.drawn ? "pays" : "does not pay", kZPrepassFragmentsPerTriangle, o.depthComplexity());
   report_.reason = why;
   return {.prepass = report_.drawn};
 }

@@ -5,7 +5,8 @@
 namespace sg::passes {
 
 bool zPrepassPays(const Overdraw& measured) {
-  return double(measured.overdrawn()) > kZPrepassFragmentsPerTriangle * double(measured.triangles);
+  const double shading = 1.0 + kZPrepassShadingPerTexture * measured.texturesPerTriangle;
+  return double(measured.overdrawn()) * shading > kZPrepassFragmentsPerTriangle * double(measured.triangles);
 }
 
 bool overdrawStale(const OverdrawView& measured, const OverdrawView& now) {

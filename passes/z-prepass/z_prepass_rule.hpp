@@ -21,18 +21,24 @@ struct Overdraw {
   uint64_t triangles = 0;    // opaque triangles of the visible forward draws
   uint64_t depthPassed = 0;  // fragments passing the pre-pass's depth test as drawn: shaded without it
   uint64_t shaded = 0;       // fragments forward-opaque shaded against its depth (about the covered pixels)
+  // Textures an opaque triangle's material samples, on average over the
+  // triangles: a textured fragment costs more to shade (DamagedHelmet's five).
+  double texturesPerTriangle = 0.0;
   // Fragments forward-opaque would shade without the pre-pass per covered pixel (1: no overdraw).
   double depthComplexity() const { return shaded ? double(depthPassed) / double(shaded) : 0.0; }
   uint64_t overdrawn() const { return depthPassed > shaded ? depthPassed - shaded : 0; }
 };
 
-// The cost model, in shaded fragments: a triangle the pre-pass draws again
-// (vertex shading, setup, binning, a depth-only raster) costs about
-// kZPrepassFragmentsPerTriangle overdrawn fragments' shading. Fitted by
-// callgrind (lavapipe, one thread) between ReciprocatingSaw at 1280x720
-// (0.59 overdrawn a triangle: 24% fewer instructions without the pre-pass) and
-// 2CylinderEngine at 1280x720 (3.5 a triangle: 7% more without).
+// The cost model, in an untextured fragment's shading: a triangle the
+// pre-pass draws again (vertex shading, setup, binning, a depth-only raster)
+// costs about kZPrepassFragmentsPerTriangle overdrawn fragments; each texture
+// the material samples adds kZPrepassShadingPerTexture to a fragment.
+// Fitted by callgrind (lavapipe, one thread) on 2CylinderEngine at 1280x720
+// (3.1 overdrawn a triangle, 9% more instructions without the pre-pass) and
+// 640x360 (0.78, 8% fewer without), untextured; the texture weight by
+// DamagedHelmet (docs/benchmarks.md, "Depth pre-pass from measured overdraw").
 inline constexpr double kZPrepassFragmentsPerTriangle = 1.5;
+inline constexpr double kZPrepassShadingPerTexture = 1.0;
 
 bool zPrepassPays(const Overdraw& measured);
 
@@ -40,6 +46,7 @@ bool zPrepassPays(const Overdraw& measured);
 struct OverdrawView {
   uint32_t width = 0, height = 0;
   uint64_t triangles = 0;  // as Overdraw::triangles
+  double texturesPerTriangle = 0.0;
   glm::mat4 viewProjection{1.0f};
 };
 

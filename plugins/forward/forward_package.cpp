@@ -100,13 +100,23 @@ passes::ZPrepassChoice& zPrepassChoice(FrameContext& ctx) {
   return ctx.ownState<passes::ZPrepassChoice>(passes::kZPrepassChoiceState);
 }
 
-uint64_t opaqueTriangles(FrameContext& ctx) {
-  uint64_t triangles = 0;
+// What the z-prepass choice weighs: the visible opaque forward draws'
+// triangles, and the textures their materials sample per triangle.
+passes::OverdrawView overdrawView(FrameContext& ctx) {
+  const auto& in = ctx.inputs();
+  passes::OverdrawView view{in.width, in.height, 0, 0.0, in.viewProjection};
+  double textures = 0.0;
   for (const uint32_t d : ctx.draws().forward) {
     const auto& draw = ctx.gpuScene().draws()[d];
-    if (draw.alphaMode == scene::AlphaMode::Opaque) triangles += draw.indexCount / 3;
+    if (draw.alphaMode != scene::AlphaMode::Opaque) continue;
+    view.triangles += draw.indexCount / 3;
+    if (draw.material >= in.scene.materials.size()) continue;
+    const auto slots = in.scene.materials[draw.material].textureSlots();
+    textures += double(draw.indexCount / 3) *
+                double(std::count_if(slots.begin(), slots.end(), [](const scene::TextureRef& t) { return t.present(); }));
   }
-  return triangles;
+  if (view.triangles) view.texturesPerTriangle = textures / double(view.triangles);
+  return view;
 }
 
 // Does this frame draw the depth pre-pass? Always with decoupled objects
@@ -135,9 +145,7 @@ bool drawsZPrepass(FrameContext& ctx) {
     case render::ZPrepass::Off: return forced(false, "forced off");
     case render::ZPrepass::Auto: break;
   }
-  const auto& in = ctx.inputs();
-  return choice.decide(in.device.context(), {in.width, in.height, opaqueTriangles(ctx), in.viewProjection}, in.frameNumber)
-      .prepass;
+  return choice.decide(ctx.inputs().device.context(), overdrawView(ctx), ctx.inputs().frameNumber).prepass;
 }
 
 // forward-opaque where no pre-pass drew the depth (it writes the depth

@@ -29,6 +29,15 @@ TEST(ZPrepassRule, MeasuredModelsGoTheWayCallgrindMeasured) {
   EXPECT_FALSE(zPrepassPays({.triangles = 198'470, .depthPassed = 69'663, .shaded = 37'074}));  // 640x360
 }
 
+// DamagedHelmet at 1280x720: 1.26 overdrawn a triangle, each fragment sampling
+// five textures: forward-opaque shades the overdraw at several times the pre-pass's cost.
+TEST(ZPrepassRule, TexturedOverdrawCostsMore) {
+  Overdraw helmet{.triangles = 15'452, .depthPassed = 115'578, .shaded = 96'132, .texturesPerTriangle = 5.0};
+  EXPECT_TRUE(zPrepassPays(helmet));
+  helmet.texturesPerTriangle = 0.0;
+  EXPECT_FALSE(zPrepassPays(helmet)) << "the same overdraw untextured";
+}
+
 TEST(ZPrepassRule, TheThresholdIsOverdrawnFragmentsPerTriangle) {
   const uint64_t triangles = 100'000, covered = 500'000;
   const auto at = uint64_t(kZPrepassFragmentsPerTriangle * double(triangles));
@@ -50,7 +59,7 @@ TEST(ZPrepassRule, NoOverdrawNoPrepass) {
 TEST(ZPrepassRule, AMeasurementGoesStaleWithSizeTrianglesOrCamera) {
   const glm::mat4 projection = glm::perspective(0.9f, 16.0f / 9.0f, 0.1f, 100.0f);
   const auto at = [&](glm::vec3 eye) { return projection * glm::lookAt(eye, glm::vec3(0.0f), {0.0f, 1.0f, 0.0f}); };
-  const OverdrawView measured{1280, 720, 100'000, at({0.0f, 1.0f, 5.0f})};
+  const OverdrawView measured{1280, 720, 100'000, 0.0, at({0.0f, 1.0f, 5.0f})};
   EXPECT_FALSE(overdrawStale(measured, measured));
   OverdrawView v = measured;
   v.width = 640;
