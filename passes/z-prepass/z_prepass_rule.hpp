@@ -35,10 +35,12 @@ struct Overdraw {
 // the material samples adds kZPrepassShadingPerTexture to a fragment.
 // Fitted by callgrind (lavapipe, one thread) on 2CylinderEngine at 1280x720
 // (3.1 overdrawn a triangle, 9% more instructions without the pre-pass) and
-// 640x360 (0.78, 8% fewer without), untextured; the texture weight by
-// DamagedHelmet (docs/benchmarks.md, "Depth pre-pass from measured overdraw").
+// 640x360 (0.78, 8% fewer without), untextured: 595 instructions a triangle,
+// 394 a fragment; the texture weight by DamagedHelmet at 1280x720 (five
+// textures, 1.26 overdrawn a triangle, 4.6% more without: 1316 a fragment)
+// (docs/benchmarks.md, "Depth pre-pass from measured overdraw").
 inline constexpr double kZPrepassFragmentsPerTriangle = 1.5;
-inline constexpr double kZPrepassShadingPerTexture = 1.0;
+inline constexpr double kZPrepassShadingPerTexture = 0.5;
 
 bool zPrepassPays(const Overdraw& measured);
 
