@@ -21,6 +21,7 @@
 #include "output_file.hpp"
 #include "scene_source.hpp"
 #include "soak_report.hpp"
+#include "z_prepass_report.hpp"
 
 namespace sg::app {
 namespace {
@@ -44,7 +45,8 @@ void printTable(const gpu::FrameTimings& t, uint64_t transientBytes, const gpu::
 }
 
 void writeStats(const std::string& path, const AppSession& session, const render::FrameResult& frame,
-                const std::vector<double>& framesMs, const gpu::MemoryTotals& memory) {
+                const std::vector<double>& framesMs, const gpu::MemoryTotals& memory,
+                passes::ZPrepassChoice& zPrepass) {
   const auto d = session.decoupled->stats();
   const uint64_t shaded = plugins::shadelsShaded(d.counters);  // the shadel masks' skipped ones not counted
   nlohmann::json passMs = nlohmann::json::object(), passCpuMs = nlohmann::json::object();
@@ -138,6 +140,8 @@ void writeStats(const std::string& path, const AppSession& session, const render
                        {"live_spans", d.liveSpans},
                        {"layers", d.layers},
                        {"layer_reuse", layerReuse},
+                       // The forward frame's depth pre-pass: drawn or not, why, and the overdraw measured.
+                       {"z_prepass", zPrepassJson(zPrepass)},
                        {"device", session.context->deviceName()}};
   writeTextFile(path, "stats", stats.dump(2) + "\n");
 }
@@ -197,6 +201,7 @@ void runRender(const RenderArgs& args) {
   // A scene without cameras is framed once, around all its playback: a framing that followed the pose would zoom.
   if (animations.playing() && !settings.cameraOverride && !args.camera && session.scene.cameras.empty())
     settings.cameraOverride = scene::frameBounds(animations.playbackBounds(), float(settings.width) / float(settings.height));
+  const auto zPrepass = provideZPrepassChoice(*session.renderer);
   std::optional<SoakReport> soak;
   if (!args.soakReport.empty()) soak.emplace(args.soakReport, uint32_t(args.soakEvery), uint32_t(args.frames));
   // The first frame pays for pipeline creation; report the last one.
@@ -235,6 +240,7 @@ void runRender(const RenderArgs& args) {
   image::writePng(args.output, frame.image.width, frame.image.height, frame.image.rgba8.data());
   const auto memory = session.device->memory().totals();
   printTable(frame.timings, frame.transientBytes, memory);
+  printZPrepass(*zPrepass);
   const auto d = session.decoupled->stats();
   std::printf("wrote %s (%ux%u, %zu triangles, %zu draws, %u objects decoupled, %zu forward)\n", args.output.c_str(),
               frame.image.width, frame.image.height, session.renderer->gpuScene().triangleCount(),
@@ -257,7 +263,7 @@ void runRender(const RenderArgs& args) {
                 d.shadeFrame ? "a shade frame" : "a fill frame", d.counters.chunksShaded, d.counters.chunksReused,
                 (unsigned long long)d.chunksFilled, (unsigned long long)d.chunksReused);
   if (soak) soak->finish();
-  if (!args.stats.empty()) writeStats(args.stats, session, frame, framesMs, memory);
+  if (!args.stats.empty()) writeStats(args.stats, session, frame, framesMs, memory, *zPrepass);
   if (!args.trace.empty()) {
     const auto tails = session.renderer->finishFrames();
     gpu::writeChromeTrace(args.trace, traceEvents(traced, tails));

@@ -234,6 +234,12 @@ void Context::createDevice(const ContextOptions& options) {
   enable.core.features.shaderInt64 = VK_TRUE;
   enable.core.features.fragmentStoresAndAtomics = VK_TRUE;
   enable.core.features.geometryShader = VK_TRUE;
+  {
+    VkPhysicalDeviceFeatures available{};
+    vkGetPhysicalDeviceFeatures(physicalDevice_, &available);
+    // Exact occlusion-query counts where the device has them (passes::OverdrawProbe asks the same).
+    enable.core.features.occlusionQueryPrecise = available.occlusionQueryPrecise;
+  }
   enable.v12.timelineSemaphore = VK_TRUE;
   enable.v12.bufferDeviceAddress = VK_TRUE;
   enable.v12.shaderBufferInt64Atomics = VK_TRUE;

@@ -16,7 +16,7 @@ std::optional<VkClearColorValue> clearIfUnwritten(graph::ResourceHandle color, g
 }
 
 ForwardTargets addForwardOpaque(graph::RenderGraph& graph, const render::SceneView& view, ForwardTargets targets,
-                                glm::vec3 background) {
+                                glm::vec3 background, OverdrawCounter counter) {
   const bool writesDepth = targets.depth.version == 0;  // no z-prepass drew it
   auto& pass = graph.addPass("forward-opaque", graph::QueueClass::Graphics);
   targets.color = pass.write(targets.color, graph::Access::ColorAttachment);
@@ -26,11 +26,14 @@ ForwardTargets addForwardOpaque(graph::RenderGraph& graph, const render::SceneVi
     pass.read(targets.depth, graph::Access::DepthRead);
   readFrameInputs(pass, view, view.draws);
   render::readSceneGeometry(pass, view);
-  pass.execute([view = render::readDrawCommands(pass, view), targets, background, writesDepth](PassContext& ctx) {
+  pass.execute([view = render::readDrawCommands(pass, view), targets, background, writesDepth,
+                counter](PassContext& ctx) {
     const DepthTarget depth = writesDepth ? DepthTarget{targets.depth, 1.0f} : DepthTarget{targets.depth, {}, true};
     ctx.beginRendering({ColorTarget{targets.color, VkClearColorValue{{background.r, background.g, background.b, 1.0f}}}},
                        depth, true);
+    counter.begin(ctx.cmd());
     drawForward(ctx, view, drawsWithAlphaMode(view, scene::AlphaMode::Opaque), false);
+    counter.end(ctx.cmd());
     ctx.endRendering();
   });
   return targets;

@@ -7,6 +7,8 @@
 #include <shadelgraph/graph/render_graph.hpp>
 #include <shadelgraph/render/scene_view.hpp>
 
+#include "z-prepass/overdraw_probe.hpp"
+
 namespace sg::passes {
 
 struct ForwardTargets {
@@ -27,8 +29,9 @@ std::optional<VkClearColorValue> clearIfUnwritten(graph::ResourceHandle color, g
 // Against the z-prepass depth; or, when no pass wrote targets.depth yet (no
 // z-prepass), writing the depth themselves (cleared first, tested
 // LESS_OR_EQUAL), so a pixel is shaded once per surface nearest when drawn.
+// `counter`: counts the fragments shaded (a z-prepass measurement frame).
 ForwardTargets addForwardOpaque(graph::RenderGraph& graph, const render::SceneView& view, ForwardTargets targets,
-                                glm::vec3 background);
+                                glm::vec3 background, OverdrawCounter counter = {});
 // Without a z-prepass, after occlusion-cull: adds to colour and depth the
 // opaque draws of `view` that `late` (indirect draw commands by draw index)
 // keeps, the draws found visible that the first half did not draw.

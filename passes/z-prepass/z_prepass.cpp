@@ -49,13 +49,16 @@ gpu::GraphicsPipelineDesc zPrepassAlphaTestPipeline(VkDescriptorSetLayout materi
 }
 
 graph::ResourceHandle addZPrepass(graph::RenderGraph& graph, const render::SceneView& view, graph::ResourceHandle depth,
-                                  std::vector<uint32_t> alphaTested) {
+                                  std::vector<uint32_t> alphaTested, OverdrawCounter counter) {
   auto& pass = graph.addPass("z-prepass", graph::QueueClass::Graphics);
   depth = pass.write(depth, graph::Access::DepthAttachment);
   render::readSceneGeometry(pass, view);
-  pass.execute([view = render::readDrawCommands(pass, view), depth, alphaTested = std::move(alphaTested)](PassContext& ctx) {
+  pass.execute([view = render::readDrawCommands(pass, view), depth, alphaTested = std::move(alphaTested),
+                counter](PassContext& ctx) {
     ctx.beginRendering({}, DepthTarget{depth, 1.0f}, true);
+    counter.begin(ctx.cmd());
     drawDepth(ctx, view, view.indirect, alphaTested);
+    counter.end(ctx.cmd());
     ctx.endRendering();
   });
   return depth;
@@ -63,14 +66,16 @@ graph::ResourceHandle addZPrepass(graph::RenderGraph& graph, const render::Scene
 
 graph::ResourceHandle addZPrepassLate(graph::RenderGraph& graph, const render::SceneView& view,
                                       graph::ResourceHandle depth, graph::ResourceHandle late,
-                                      std::vector<uint32_t> alphaTested) {
+                                      std::vector<uint32_t> alphaTested, OverdrawCounter counter) {
   auto& pass = graph.addPass("z-prepass (late)", graph::QueueClass::Graphics);
   pass.read(late, graph::Access::IndirectArgs);
   render::readSceneGeometry(pass, view);
   depth = pass.write(depth, graph::Access::DepthAttachment);
-  pass.execute([view, depth, late, alphaTested = std::move(alphaTested)](PassContext& ctx) {
+  pass.execute([view, depth, late, alphaTested = std::move(alphaTested), counter](PassContext& ctx) {
     ctx.beginRendering({}, DepthTarget{depth, {}}, true);
+    counter.begin(ctx.cmd());
     drawDepth(ctx, view, ctx.buffer(late).handle(), alphaTested);
+    counter.end(ctx.cmd());
     ctx.endRendering();
   });
   return depth;

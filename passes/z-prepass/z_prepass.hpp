@@ -5,20 +5,23 @@
 #include <shadelgraph/graph/render_graph.hpp>
 #include <shadelgraph/render/scene_view.hpp>
 
+#include "overdraw_probe.hpp"
+
 namespace sg::passes {
 
 // Depth of every opaque object (graphics), clearing it first, and of the
 // `alphaTested` draws (decoupled alpha-mask objects: shadel-mark and composite
 // test against their depth) where their alpha test keeps them; of those the
 // frame's draw commands keep when the view has them (see readDrawCommands).
-// Returns the depth version it writes.
+// Returns the depth version it writes. `counter`: counts the samples passing
+// the depth test (a measurement frame, z_prepass_choice.hpp).
 graph::ResourceHandle addZPrepass(graph::RenderGraph& graph, const render::SceneView& view, graph::ResourceHandle depth,
-                                  std::vector<uint32_t> alphaTested = {});
+                                  std::vector<uint32_t> alphaTested = {}, OverdrawCounter counter = {});
 // Adds to the depth the opaque (and `alphaTested`) draws of `view` that `late`
 // (indirect draw commands by draw index, from occlusion-cull) keeps.
 graph::ResourceHandle addZPrepassLate(graph::RenderGraph& graph, const render::SceneView& view,
                                       graph::ResourceHandle depth, graph::ResourceHandle late,
-                                      std::vector<uint32_t> alphaTested = {});
+                                      std::vector<uint32_t> alphaTested = {}, OverdrawCounter counter = {});
 gpu::GraphicsPipelineDesc zPrepassPipeline();
 // The alpha-tested variant: the scene material is set 1.
 gpu::GraphicsPipelineDesc zPrepassAlphaTestPipeline(VkDescriptorSetLayout materialSet);

@@ -25,7 +25,7 @@
 #include "occlusion-cull/occlusion_cull.hpp"
 #include "tonemap/tonemap.hpp"
 #include "z-prepass/z_prepass.hpp"
-#include "z-prepass/z_prepass_rule.hpp"
+#include "z-prepass/z_prepass_choice.hpp"
 
 namespace sg::plugins {
 namespace {
@@ -86,21 +86,37 @@ graph::ResourceHandle occlusionCull(FrameContext& ctx, graph::ResourceHandle dep
 // The depth pre-pass, occlusion-culled: the draws visible last frame first,
 // then every draw tested against that depth, then the draws found visible
 // that were not drawn yet.
-graph::ResourceHandle culledZPrepass(FrameContext& ctx) {
+graph::ResourceHandle culledZPrepass(FrameContext& ctx, passes::OverdrawProbe* probe) {
   importDrawCommands(ctx, *ctx.inputs().culling);
   const auto view = ctx.view(ctx.visibleDraws());
   const auto tested = alphaTestedDraws(ctx);
-  const auto depth = passes::addZPrepass(ctx.graph(), view, depthTarget(ctx), tested);
-  return passes::addZPrepassLate(ctx.graph(), view, depth, occlusionCull(ctx, depth), tested);
+  const auto depth =
+      passes::addZPrepass(ctx.graph(), view, depthTarget(ctx), tested, {probe, passes::OverdrawSlot::Prepass});
+  return passes::addZPrepassLate(ctx.graph(), view, depth, occlusionCull(ctx, depth), tested,
+                                 {probe, passes::OverdrawSlot::PrepassLate});
 }
 
-uint64_t opaqueTriangles(FrameContext& ctx) {
-  uint64_t triangles = 0;
+passes::ZPrepassChoice& zPrepassChoice(FrameContext& ctx) {
+  return ctx.ownState<passes::ZPrepassChoice>(passes::kZPrepassChoiceState);
+}
+
+// What the z-prepass choice weighs: the visible opaque forward draws'
+// triangles, and the textures their materials sample per triangle.
+passes::OverdrawView overdrawView(FrameContext& ctx) {
+  const auto& in = ctx.inputs();
+  passes::OverdrawView view{in.width, in.height, 0, 0.0, in.viewProjection};
+  double textures = 0.0;
   for (const uint32_t d : ctx.draws().forward) {
     const auto& draw = ctx.gpuScene().draws()[d];
-    if (draw.alphaMode == scene::AlphaMode::Opaque) triangles += draw.indexCount / 3;
+    if (draw.alphaMode != scene::AlphaMode::Opaque) continue;
+    view.triangles += draw.indexCount / 3;
+    if (draw.material >= in.scene.materials.size()) continue;
+    const auto slots = in.scene.materials[draw.material].textureSlots();
+    textures += double(draw.indexCount / 3) *
+                double(std::count_if(slots.begin(), slots.end(), [](const scene::TextureRef& t) { return t.present(); }));
   }
-  return triangles;
+  if (view.triangles) view.texturesPerTriangle = textures / double(view.triangles);
+  return view;
 }
 
 // Does this frame draw the depth pre-pass? Always with decoupled objects
@@ -108,20 +124,28 @@ uint64_t opaqueTriangles(FrameContext& ctx) {
 // drew depth, or when a pass before forward-opaque reads the depth (e.g. the
 // ssao plugin) other than one drawing only decoupled objects (it reads
 // view.decoupled; there are none). Otherwise as the setting says, Auto by
-// passes::zPrepassPays; without it forward-opaque writes the depth.
+// the overdraw measured (passes::ZPrepassChoice, which may make this frame a
+// measurement frame); without it forward-opaque writes the depth.
 bool drawsZPrepass(FrameContext& ctx) {
-  if (!ctx.draws().decoupled.empty() || ctx.has("scene.depth")) return true;
+  passes::ZPrepassChoice& choice = zPrepassChoice(ctx);
+  const auto forced = [&](bool drawn, const char* reason) {
+    choice.recordForced(drawn, reason);
+    return drawn;
+  };
+  if (!ctx.draws().decoupled.empty()) return forced(true, "decoupled objects visible (shadel-mark tests its depth)");
+  if (ctx.has("scene.depth")) return forced(true, "an earlier pass drew depth");
   const auto reads = [](const plugin::PassPlugin& p, const char* resource) {
     return std::find(p.reads.begin(), p.reads.end(), resource) != p.reads.end();
   };
   for (const auto& later : ctx.passesBetween("forward-opaque"))
-    if (reads(*later.pass, "scene.depth") && !reads(*later.pass, plugin::kDecoupledDrawsResource)) return true;
+    if (reads(*later.pass, "scene.depth") && !reads(*later.pass, plugin::kDecoupledDrawsResource))
+      return forced(true, "a pass before forward-opaque reads the depth");
   switch (ctx.inputs().zPrepass) {
-    case render::ZPrepass::On: return true;
-    case render::ZPrepass::Off: return false;
+    case render::ZPrepass::On: return forced(true, "forced on");
+    case render::ZPrepass::Off: return forced(false, "forced off");
     case render::ZPrepass::Auto: break;
   }
-  return passes::zPrepassPays(opaqueTriangles(ctx), uint64_t(ctx.inputs().width) * ctx.inputs().height);
+  return choice.decide(ctx.inputs().device.context(), overdrawView(ctx), ctx.inputs().frameNumber).prepass;
 }
 
 // forward-opaque where no pre-pass drew the depth (it writes the depth
@@ -221,13 +245,14 @@ void registerForwardPackage(plugin::Registry& registry) {
                         ctx.write("scene.depth", depthTarget(ctx));  // unwritten: forward-opaque draws it
                         return;
                       }
+                      passes::OverdrawProbe* probe = zPrepassChoice(ctx).probeFor(ctx.inputs().frameNumber);
                       if (occlusionCulled(ctx)) {
-                        ctx.write("scene.depth", culledZPrepass(ctx));
+                        ctx.write("scene.depth", culledZPrepass(ctx, probe));
                         return;
                       }
                       ctx.write("scene.depth",
                                 passes::addZPrepass(ctx.graph(), ctx.view(ctx.visibleDraws()), depthTarget(ctx),
-                                                    alphaTestedDraws(ctx)));
+                                                    alphaTestedDraws(ctx), {probe, passes::OverdrawSlot::Prepass}));
                     }});
   registry.addPass({.name = "object-pick",
                     .description = "the object under a pixel, read back (only in a frame with a pick pending: "
@@ -293,7 +318,10 @@ void registerForwardPackage(plugin::Registry& registry) {
                         publish(ctx, culledForwardOpaque(ctx, view, t));
                         return;
                       }
-                      publish(ctx, passes::addForwardOpaque(ctx.graph(), view, t, background(ctx)));
+                      // In a z-prepass measurement frame it counts the fragments it shades.
+                      publish(ctx, passes::addForwardOpaque(ctx.graph(), view, t, background(ctx),
+                                                            {zPrepassChoice(ctx).probeFor(ctx.inputs().frameNumber),
+                                                             passes::OverdrawSlot::ForwardOpaque}));
                     }});
   registry.addPass({.name = "alpha-mask",
                     .description = "alpha-tested objects (only when a visible object has such a material)",

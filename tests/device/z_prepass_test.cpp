@@ -1,17 +1,19 @@
-// The depth pre-pass only where it pays (passes/z-prepass/z_prepass_rule.hpp):
+// The depth pre-pass only where it pays (passes/z-prepass/z_prepass_choice.hpp):
 // a forward frame without it (forward-opaque writes the depth, occlusion-
 // culled in two halves of its own) draws the image the frame with it draws,
-// validation on; the rule keeps it on a scene of few large triangles and
-// drops it on one with more triangles than pixels; frames with decoupled
-// objects keep it whatever the setting.
+// validation on; Auto measures the overdraw on its first frame and keeps it
+// where the overdraw pays for it and drops it where it does not; frames with
+// decoupled objects keep it whatever the setting.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include <shadelgraph/image/metrics.hpp>
 #include <shadelgraph/scene/gltf_loader.hpp>
+#include <z-prepass/z_prepass_choice.hpp>
 
 #include "decoupled_session.hpp"
 #include "test_support.hpp"
@@ -44,24 +46,52 @@ scene::Scene courtyardWithDenseSphere(uint32_t segments) {
   return s;
 }
 
-// Planned (not rendered) at 640x360: 230k pixels.
+// At 640x360: 230k pixels.
 render::RenderSettings planned(render::ZPrepass zPrepass) { return {.width = 640, .height = 360, .zPrepass = zPrepass}; }
 
-TEST(ZPrepassRule, KeepsItOnLargeTrianglesAndDropsItWhereTrianglesOutnumberPixels) {
-  // The courtyard: 7k triangles, 0.03 a pixel.
+// The choice the z-prepass keeps, given to the session's renderer to read its report.
+std::shared_ptr<passes::ZPrepassChoice> watchChoice(Session& session) {
+  auto choice = std::make_shared<passes::ZPrepassChoice>();
+  session.renderer().provideState(passes::kZPrepassChoiceState, choice);
+  return choice;
+}
+
+// Auto: the first frame draws the pre-pass and counts the overdraw; the next
+// ones keep it where the overdraw outweighs the triangles drawn again (the
+// courtyard: 7k large triangles) and drop it where it does not (a sphere of
+// 269k triangles in front, closed: little overdraw for its triangles).
+TEST(ZPrepassRule, KeepsItWhereOverdrawPaysAndDropsItWhereItDoesNot) {
   Session sparse(scene::makeDefaultScene(64), scene::ShadingMode::Forward);
+  const auto sparseChoice = watchChoice(sparse);
+  EXPECT_TRUE(hasPass(sparse.renderer().plan(planned(render::ZPrepass::Auto)), "z-prepass")) << "nothing measured yet";
+  sparse.renderer().render(planned(render::ZPrepass::Auto));
   const auto kept = sparse.renderer().plan(planned(render::ZPrepass::Auto));
   EXPECT_TRUE(hasPass(kept, "z-prepass"));
   EXPECT_TRUE(hasPass(kept, "z-prepass (late)"));
   EXPECT_FALSE(hasPass(kept, "forward-opaque (late)"));
-  // With a sphere of 512 x 256 quads in front: 269k triangles, 1.2 a pixel.
+  const auto& sparseReport = sparseChoice->collectedReport();
+  ASSERT_TRUE(sparseReport.measured);
+  EXPECT_FALSE(sparseReport.measuring);
+  EXPECT_EQ(sparseReport.measurements, 1u) << "a frame only planned measures nothing";
+  EXPECT_GT(sparseReport.measured->shaded, 0u);
+  EXPECT_LE(sparseReport.measured->shaded, 640u * 360u) << "about one fragment a covered pixel";
+  EXPECT_GT(sparseReport.measured->depthPassed, sparseReport.measured->shaded) << "the courtyard's overdraw";
+  EXPECT_TRUE(passes::zPrepassPays(*sparseReport.measured));
+
   Session dense(courtyardWithDenseSphere(512), scene::ShadingMode::Forward);
+  const auto denseChoice = watchChoice(dense);
+  dense.renderer().render(planned(render::ZPrepass::Auto));
   const auto dropped = dense.renderer().plan(planned(render::ZPrepass::Auto));
   EXPECT_FALSE(hasPass(dropped, "z-prepass"));
   EXPECT_FALSE(hasPass(dropped, "z-prepass (late)"));
   EXPECT_TRUE(hasPass(dropped, "forward-opaque"));
   EXPECT_TRUE(hasPass(dropped, "forward-opaque (late)")) << "occlusion culling moves into forward-opaque";
   EXPECT_TRUE(hasPass(dropped, "occlusion-cull"));
+  ASSERT_TRUE(denseChoice->collectedReport().measured);
+  EXPECT_FALSE(denseChoice->collectedReport().drawn) << denseChoice->collectedReport().reason;
+  // Another size: measured again, with the pre-pass.
+  EXPECT_TRUE(hasPass(dense.renderer().plan({.width = 320, .height = 180}), "z-prepass"));
+  EXPECT_TRUE(denseChoice->collectedReport().measuring);
   // Forced either way.
   EXPECT_TRUE(hasPass(dense.renderer().plan(planned(render::ZPrepass::On)), "z-prepass"));
   EXPECT_FALSE(hasPass(sparse.renderer().plan(planned(render::ZPrepass::Off)), "z-prepass"));
