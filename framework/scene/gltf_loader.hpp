@@ -36,6 +36,7 @@
 // docs/hostile-input.md.
 #include <filesystem>
 
+#include <shadelgraph/scene/mesh_order.hpp>
 #include <shadelgraph/scene/scene.hpp>
 #include <shadelgraph/scene/scene_error.hpp>
 
@@ -46,6 +47,9 @@ struct LoadOptions {
   // (for tools that only need geometry); images are still checked to exist
   // and to be of a format stb_image reads.
   bool decodeImages = true;
+  // Triangle and vertex order of static primitives (mesh_order.hpp); all off:
+  // the file's order, e.g. for A/B measurements.
+  MeshOrderOptions meshOrder;
 };
 
 // Throws SceneError.
