@@ -13,7 +13,7 @@ namespace {
 
 // SG_MESH_ORDER: "off" loads glTF triangles in the file's order; a list of
 // "cache", "overdraw", "fetch" enables just those steps (mesh_order.hpp).
-// Unset: all. For A/B measurements of the same binary.
+// Unset: the defaults (cache, overdraw). For A/B measurements of one binary.
 scene::LoadOptions loadOptions() {
   scene::LoadOptions options;
   const char* value = std::getenv("SG_MESH_ORDER");

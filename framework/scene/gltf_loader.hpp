@@ -12,7 +12,8 @@
 // (scene.animations over scene.nodes; pose.hpp poses them), skins
 // (JOINTS_0/WEIGHTS_0, JOINTS_1/WEIGHTS_1, inverse bind matrices) and morph
 // targets (POSITION, NORMAL, TANGENT deltas; deformation.hpp). Points and
-// lines are skipped with a warning.
+// lines are skipped with a warning. Triangles of static primitives are
+// reordered for the rasterizer (mesh_order.hpp; LoadOptions::meshOrder).
 //
 // Repairs, each with a warning: flat normals when NORMAL is missing (the
 // primitive is de-indexed, as glTF requires), normals of non-unit length are

@@ -14,7 +14,10 @@ struct MeshOrderOptions {
   // meshopt_optimizeOverdraw: triangle clusters front-to-back-ish, allowed to
   // cost this factor of vertex-cache efficiency; 0: off.
   float overdrawThreshold = 1.05f;
-  bool vertexFetch = true;  // renumber vertices in order of first use (all attribute arrays)
+  // Renumber vertices in order of first use (all attribute arrays). Off: on
+  // lavapipe it cut instructions a little but made multi-threaded frames
+  // slower (docs/benchmarks.md).
+  bool vertexFetch = false;
 
   bool any() const { return vertexCache || overdrawThreshold > 0.0f || vertexFetch; }
 };

@@ -67,7 +67,7 @@ TEST(MeshOrder, AllStepsKeepTheSurfaceAndNumberVerticesByFirstUse) {
   before.colors.resize(before.vertexCount());
   for (size_t v = 0; v < before.vertexCount(); ++v) before.colors[v] = glm::vec4(before.positions[v], 1.0f);
   Primitive after = before;
-  orderForRendering(after);
+  orderForRendering(after, {.vertexFetch = true});
   EXPECT_EQ(surface(after), surface(before));
   EXPECT_LT(acmr(after), 0.9f);  // overdraw ordering may give up up to 5% of the reuse
   // Every attribute array moved with its positions.
@@ -90,7 +90,7 @@ TEST(MeshOrder, UnusedVerticesStayAtTheEnd) {
   p.positions.push_back(glm::vec3(7.0f));
   p.normals.push_back(glm::vec3(0.0f, 0.0f, 1.0f));
   p.uv0.push_back(glm::vec2(0.5f));
-  orderForRendering(p);
+  orderForRendering(p, {.vertexFetch = true});
   ASSERT_EQ(p.vertexCount(), used + 1);
   EXPECT_EQ(p.positions.back(), glm::vec3(7.0f));
   EXPECT_EQ(p.uv0.back(), glm::vec2(0.5f));
