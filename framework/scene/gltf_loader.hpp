@@ -12,7 +12,8 @@
 // (scene.animations over scene.nodes; pose.hpp poses them), skins
 // (JOINTS_0/WEIGHTS_0, JOINTS_1/WEIGHTS_1, inverse bind matrices) and morph
 // targets (POSITION, NORMAL, TANGENT deltas; deformation.hpp). Points and
-// lines are skipped with a warning.
+// lines are skipped with a warning. Triangles of static primitives are
+// reordered for the rasterizer (mesh_order.hpp; LoadOptions::meshOrder).
 //
 // Repairs, each with a warning: flat normals when NORMAL is missing (the
 // primitive is de-indexed, as glTF requires), normals of non-unit length are
@@ -36,6 +37,7 @@
 // docs/hostile-input.md.
 #include <filesystem>
 
+#include <shadelgraph/scene/mesh_order.hpp>
 #include <shadelgraph/scene/scene.hpp>
 #include <shadelgraph/scene/scene_error.hpp>
 
@@ -46,6 +48,9 @@ struct LoadOptions {
   // (for tools that only need geometry); images are still checked to exist
   // and to be of a format stb_image reads.
   bool decodeImages = true;
+  // Triangle and vertex order of static primitives (mesh_order.hpp); all off:
+  // the file's order, e.g. for A/B measurements.
+  MeshOrderOptions meshOrder;
 };
 
 // Throws SceneError.

@@ -9,6 +9,7 @@
 #include <shadelgraph/scene/gltf_accessor.hpp>
 #include <shadelgraph/scene/gltf_mesh.hpp>
 #include <shadelgraph/scene/input_limits.hpp>
+#include <shadelgraph/scene/mesh_order.hpp>
 #include <shadelgraph/scene/normals.hpp>
 #include <shadelgraph/scene/tangents.hpp>
 #include <shadelgraph/scene/triangulate.hpp>
@@ -428,6 +429,10 @@ void convertMeshes(const GltfContext& context, Scene& scene) {
     for (size_t p = 0; p < in.primitives.size(); ++p) {
       std::optional<Primitive> primitive = builder.build(in.primitives[p], name + " primitive " + std::to_string(p));
       if (!primitive) continue;
+      // Last: tangents and flat normals above were generated in the file's order.
+      const MeshOrderOptions& order = context.options.meshOrder;
+      if (order.any() && mayReorder(*primitive, scene.materials[static_cast<size_t>(primitive->material)]))
+        orderForRendering(*primitive, order);
       out.bounds.extend(primitive->bounds);
       out.primitives.push_back(std::move(*primitive));
     }
