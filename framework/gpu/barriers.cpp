@@ -14,6 +14,16 @@ void memoryBarrier(VkCommandBuffer cmd, Scope src, Scope dst) {
   vkCmdPipelineBarrier2(cmd, &dep);
 }
 
+void hostReadAfterCompute(VkCommandBuffer cmd) {
+  memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
+                {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT});
+}
+
+void hostReadAfterCopy(VkCommandBuffer cmd) {
+  memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+                {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT});
+}
+
 void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImageLayout to, Scope src, Scope dst,
                   uint32_t firstMip, uint32_t mipCount) {
   VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};

@@ -13,6 +13,11 @@ struct Scope {
 // A global memory (or, with no access bits, execution) dependency.
 void memoryBarrier(VkCommandBuffer cmd, Scope src, Scope dst);
 
+// Readbacks: make a compute shader's storage writes, or a copy's writes, visible to the host
+// once the submission has been waited for.
+void hostReadAfterCompute(VkCommandBuffer cmd);
+void hostReadAfterCopy(VkCommandBuffer cmd);
+
 // A layout transition of mips [firstMip, firstMip + mipCount) of a colour image.
 void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImageLayout to, Scope src, Scope dst,
                   uint32_t firstMip = 0, uint32_t mipCount = VK_REMAINING_MIP_LEVELS);

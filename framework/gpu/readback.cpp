@@ -30,8 +30,7 @@ HostImage readImage(Context& context, MemoryAllocator& memory, const Image& imag
       imageBarrier(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout, {VK_PIPELINE_STAGE_2_COPY_BIT},
                    {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT}, 0, 1);
     // Make the copy visible to the host read below.
-    memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
-                  {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT});
+    hostReadAfterCopy(cmd);
   });
   const auto* bytes = reinterpret_cast<const uint8_t*>(staging.mapped());
   HostImage out{d.width, d.height, std::vector<uint8_t>(bytes, bytes + staging.size())};

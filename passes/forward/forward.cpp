@@ -31,9 +31,7 @@ ForwardTargets addForwardOpaque(graph::RenderGraph& graph, const render::SceneVi
     const DepthTarget depth = writesDepth ? DepthTarget{targets.depth, 1.0f} : DepthTarget{targets.depth, {}, true};
     ctx.beginRendering({ColorTarget{targets.color, VkClearColorValue{{background.r, background.g, background.b, 1.0f}}}},
                        depth, true);
-    counter.begin(ctx.cmd());
-    drawForward(ctx, view, drawsWithAlphaMode(view, scene::AlphaMode::Opaque), false);
-    counter.end(ctx.cmd());
+    drawForward(ctx, view, drawsWithAlphaMode(view, scene::AlphaMode::Opaque), false, counter);
     ctx.endRendering();
   });
   return targets;

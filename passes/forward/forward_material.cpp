@@ -133,7 +133,8 @@ std::vector<uint32_t> drawsWithAlphaMode(const render::SceneView& view, scene::A
   return draws;
 }
 
-void drawForward(PassContext& ctx, const render::SceneView& view, std::span<const uint32_t> draws, bool blend) {
+void drawForward(PassContext& ctx, const render::SceneView& view, std::span<const uint32_t> draws, bool blend,
+                 OverdrawCounter counter) {
   view.scene.bindGeometry(ctx.cmd());
   // The pipeline (looked up by name) and its texture set change only with the
   // material, and the draws come grouped by material.
@@ -156,12 +157,14 @@ void drawForward(PassContext& ctx, const render::SceneView& view, std::span<cons
       boundMaterial = &material;
       boundPlain = plain;
       boundAlphaTest = alphaTest;
+      if (d == draws.front()) counter.begin(ctx.cmd());  // once a pipeline is bound (overdraw_probe.hpp)
     }
     const auto& item = view.scene.draws()[d];
     VkDescriptorSet set = view.scene.materialSet(item.material);
     vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->layout(), 1, 1, &set, 0, nullptr);
     render::drawItem(ctx.cmd(), *pipeline, view, d, d);
   }
+  if (!draws.empty()) counter.end(ctx.cmd());
 }
 
 bool hasAlphaMode(const render::SceneView& view, scene::AlphaMode mode) {

@@ -10,6 +10,8 @@
 #include <shadelgraph/graph/pass.hpp>
 #include <shadelgraph/render/scene_view.hpp>
 
+#include "z-prepass/overdraw_probe.hpp"
+
 namespace sg::passes {
 
 // The material a draw runs forward: its own, or that one's forward fallback.
@@ -19,7 +21,9 @@ std::vector<uint32_t> drawsWithAlphaMode(const render::SceneView& view, scene::A
 // Draws `draws` in order, each with its material's pipeline (bound when it
 // changes) and descriptor set. Opaque and masked draws write depth; blended
 // ones test it and blend "over".
-void drawForward(PassContext& ctx, const render::SceneView& view, std::span<const uint32_t> draws, bool blend);
+// Counts the samples of the draws with `counter` (a measurement frame's forward-opaque).
+void drawForward(PassContext& ctx, const render::SceneView& view, std::span<const uint32_t> draws, bool blend,
+                 OverdrawCounter counter = {});
 // Declares that `pass` samples the frame resources the forward variants of
 // these draws' materials read (MaterialLayer::frameInputs).
 void readFrameInputs(graph::Pass& pass, const render::SceneView& view, std::span<const uint32_t> draws);

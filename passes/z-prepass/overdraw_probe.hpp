@@ -31,7 +31,9 @@ class OverdrawProbe {
 
   // Resets the queries (host) for a new measurement frame.
   void arm();
-  // Inside the slot's rendering; each slot once a frame.
+  // Inside the slot's rendering, each slot once a frame, after a graphics pipeline
+  // and the geometry are bound: lavapipe (Mesa 22.3) crashed at a query begun
+  // before them in frames that skin or morph on the GPU.
   void begin(VkCommandBuffer cmd, OverdrawSlot slot);
   void end(VkCommandBuffer cmd, OverdrawSlot slot);
   // Whether any slot was recorded since arm() (a frame only planned records none).

@@ -8,16 +8,17 @@ namespace {
 // The opaque draws of `view`, then the `alphaTested` ones, each from command
 // `d` of `indirect` when it is set.
 void drawDepth(PassContext& ctx, const render::SceneView& view, VkBuffer indirect,
-               const std::vector<uint32_t>& alphaTested) {
+               const std::vector<uint32_t>& alphaTested, OverdrawCounter counter) {
   const auto& pipeline = ctx.device().pipeline("z-prepass", zPrepassPipeline);
   const gpu::DescriptorWrite frame{shader::kBindFrame, gpu::BufferBinding{view.frameUniforms.handle()}};
   ctx.bind(pipeline, {frame});
   view.scene.bindGeometry(ctx.cmd());
+  counter.begin(ctx.cmd());
   const auto& draws = view.scene.draws();
   for (uint32_t i : view.draws)
     if (draws[i].alphaMode == scene::AlphaMode::Opaque)
       render::drawItem(ctx.cmd(), pipeline, draws[i], i, indirect, i, render::backFacesHidden(view, i));
-  if (alphaTested.empty()) return;
+  if (alphaTested.empty()) return counter.end(ctx.cmd());
   const auto& tested = ctx.device().pipeline(
       "z-prepass/alpha-test", [&] { return zPrepassAlphaTestPipeline(view.scene.materialSetLayout()); });
   ctx.bind(tested, {frame});
@@ -26,6 +27,7 @@ void drawDepth(PassContext& ctx, const render::SceneView& view, VkBuffer indirec
     vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, tested.layout(), 1, 1, &set, 0, nullptr);
     render::drawItem(ctx.cmd(), tested, draws[i], i, indirect, i, render::backFacesHidden(view, i));
   }
+  counter.end(ctx.cmd());
 }
 
 }  // namespace
@@ -56,9 +58,7 @@ graph::ResourceHandle addZPrepass(graph::RenderGraph& graph, const render::Scene
   pass.execute([view = render::readDrawCommands(pass, view), depth, alphaTested = std::move(alphaTested),
                 counter](PassContext& ctx) {
     ctx.beginRendering({}, DepthTarget{depth, 1.0f}, true);
-    counter.begin(ctx.cmd());
-    drawDepth(ctx, view, view.indirect, alphaTested);
-    counter.end(ctx.cmd());
+    drawDepth(ctx, view, view.indirect, alphaTested, counter);
     ctx.endRendering();
   });
   return depth;
@@ -73,9 +73,7 @@ graph::ResourceHandle addZPrepassLate(graph::RenderGraph& graph, const render::S
   depth = pass.write(depth, graph::Access::DepthAttachment);
   pass.execute([view, depth, late, alphaTested = std::move(alphaTested), counter](PassContext& ctx) {
     ctx.beginRendering({}, DepthTarget{depth, {}}, true);
-    counter.begin(ctx.cmd());
-    drawDepth(ctx, view, ctx.buffer(late).handle(), alphaTested);
-    counter.end(ctx.cmd());
+    drawDepth(ctx, view, ctx.buffer(late).handle(), alphaTested, counter);
     ctx.endRendering();
   });
   return depth;

@@ -32,8 +32,7 @@ void main() {
     uint32_t push[2] = {kCount, kScale};
     vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof push, push);
     vkCmdDispatch(cmd, (kCount + 63) / 64, 1, 1);
-    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
-                       {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT});
+    gpu::hostReadAfterCompute(cmd);
   });
   auto values = out.view<uint32_t>();
   for (uint32_t i = 0; i < kCount; ++i) ASSERT_EQ(values[i], i * kScale + 1) << "at element " << i;

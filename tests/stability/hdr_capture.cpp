@@ -51,8 +51,7 @@ void HdrCapture::registerIn(plugin::Registry& registry, const nlohmann::json& ex
                         const VkBufferCopy region{0, 0, sizeof(shader::SgExposure)};
                         for (VkBuffer target : {exposure_.handle(), ctx.buffer(copy).handle()})
                           vkCmdCopyBuffer(ctx.cmd(), ctx.buffer(metered).handle(), target, 1, &region);
-                        gpu::memoryBarrier(ctx.cmd(), {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
-                                           {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT});
+                        gpu::hostReadAfterCopy(ctx.cmd());
                       });
                       frame.write("scene.exposure", copy);
                     }});
@@ -81,8 +80,7 @@ void HdrCapture::registerIn(plugin::Registry& registry, const nlohmann::json& ex
                         const VkBufferCopy region{0, 0, bytes};
                         for (VkBuffer to : {target->handle(), ctx.buffer(copy).handle()})
                           vkCmdCopyBuffer(ctx.cmd(), ctx.buffer(grid).handle(), to, 1, &region);
-                        gpu::memoryBarrier(ctx.cmd(), {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
-                                           {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT});
+                        gpu::hostReadAfterCopy(ctx.cmd());
                       });
                       frame.write(render::kLightGridResource, copy);
                     }});
@@ -131,8 +129,7 @@ void HdrCapture::record(PassContext& ctx, const gpu::Image& hdr, const gpu::Imag
   same.extent = {width_, height_, 1};
   vkCmdCopyImage(ctx.cmd(), hdr.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, copy.handle(),
                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &same);
-  gpu::memoryBarrier(ctx.cmd(), {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
-                     {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT});
+  gpu::hostReadAfterCopy(ctx.cmd());
 }
 
 std::vector<uint32_t> HdrCapture::lightGrid() const {

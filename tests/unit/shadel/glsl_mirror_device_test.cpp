@@ -3,6 +3,7 @@
 // compute is what the CPU side and its tests assume.
 #include "../../device/device_fixture.hpp"
 
+#include <shadelgraph/gpu/barriers.hpp>
 #include <shadelgraph/gpu/buffer.hpp>
 #include <shadelgraph/gpu/descriptors.hpp>
 #include <shadelgraph/gpu/pipeline.hpp>
@@ -40,15 +41,7 @@ TEST_F(DeviceTest, ShadelGlslMirrorsCpp) {
       const uint32_t count = kCount;
       vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof count, &count);
       vkCmdDispatch(cmd, (kCount + 63) / 64, 1, 1);
-      VkMemoryBarrier2 host{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-      host.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-      host.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-      host.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-      host.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-      VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-      dependency.memoryBarrierCount = 1;
-      dependency.pMemoryBarriers = &host;
-      vkCmdPipelineBarrier2(cmd, &dependency);
+      gpu::hostReadAfterCompute(cmd);
     });
     const std::string mismatch = shadel::test::compareMirrorResults(cases, out.view<uint32_t>().data(), kCount, rule);
     EXPECT_TRUE(mismatch.empty()) << mismatch;

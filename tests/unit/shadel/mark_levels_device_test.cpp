@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include <shadelgraph/gpu/barriers.hpp>
 #include <shadelgraph/gpu/buffer.hpp>
 #include <shadelgraph/gpu/descriptors.hpp>
 #include <shadelgraph/gpu/pipeline.hpp>
@@ -157,15 +158,7 @@ class MarkLevelsDeviceTest : public DeviceTest {
                         {3, gpu::BufferBinding{out.handle()}}});
       vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof count, &count);
       vkCmdDispatch(cmd, (count + 63) / 64, 1, 1);
-      VkMemoryBarrier2 host{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-      host.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-      host.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-      host.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-      host.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-      VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-      dependency.memoryBarrierCount = 1;
-      dependency.pMemoryBarriers = &host;
-      vkCmdPipelineBarrier2(cmd, &dependency);
+      gpu::hostReadAfterCompute(cmd);
     });
     const auto view = out.view<glm::uvec4>();
     return {view.begin(), view.end()};

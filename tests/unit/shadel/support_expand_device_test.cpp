@@ -141,10 +141,6 @@ class SupportExpandDeviceTest : public DeviceTest {
                          {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                           VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
     };
-    auto hostBarrier = [](VkCommandBuffer cmd) {
-      gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
-                         {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT});
-    };
     context->submitAndWait([&](VkCommandBuffer cmd) {
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, gather.handle());
       descriptors.bind(cmd, gather, writes);
@@ -153,7 +149,7 @@ class SupportExpandDeviceTest : public DeviceTest {
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, apply.handle());
       descriptors.bind(cmd, apply, writes);
       dispatchGroups(cmd, apply, (ownedCount + 63) / 64);
-      hostBarrier(cmd);
+      gpu::hostReadAfterCompute(cmd);
     });
     plugins::ShadeCounters after{};
     std::memcpy(&after, countersBuffer.mapped(), sizeof after);
