@@ -11,7 +11,7 @@ namespace sg::app {
 void keepFreedHeapMemory() {
 #if defined(__GLIBC__)
   // Setting either threshold also stops glibc adjusting them at run time.
-  mallopt(M_MMAP_THRESHOLD, 4 << 20);
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 64 << 20);
 #endif
 }
