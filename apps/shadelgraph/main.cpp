@@ -7,6 +7,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "heap_policy.hpp"
 
 namespace sg::app {
 namespace {
@@ -25,6 +26,7 @@ void setExitCode(int code) { gExitCode = code; }
 }  // namespace sg::app
 
 int main(int argc, char** argv) {
+  sg::app::keepFreedHeapMemory();
   CLI::App app{"shadelgraph: a render graph with generalized decoupled shading"};
   app.set_version_flag("--version", SG_VERSION);
   app.require_subcommand(1);
