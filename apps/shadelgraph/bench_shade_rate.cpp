@@ -69,8 +69,8 @@ enum class PassGroup { Raster, ShadeSpace, Shading };
 PassGroup groupOf(const std::string& pass) {
   if (pass.rfind("layer-shade", 0) == 0 || pass.rfind("shade-frame", 0) == 0 || pass == "shade-reuse")
     return PassGroup::Shading;
-  for (const char* bookkeeping : {"shadel-clear", "shadel-mask-clear", "shadel-allocate", "work-aggregate", "shadel-gutter",
-                                  "counters-readback", "support-expand"})
+  for (const char* bookkeeping : {"shadel-clear", "shadel-mask-clear", "shadel-mark-neighbours", "shadel-allocate",
+                                  "work-aggregate", "shadel-gutter", "counters-readback", "support-expand"})
     if (pass == bookkeeping) return PassGroup::ShadeSpace;
   return PassGroup::Raster;
 }

@@ -15,13 +15,23 @@ constexpr uint32_t kChunkSlotsPerEntry = 64;  // chunk slots per owned entry, on
 constexpr std::array kBindings{kBindFrame, kBindParams, kBindObjects, kBindShadelInstances, kBindLevelRects, kBindRemap};
 constexpr std::array kMaskBindings{kBindFrame,      kBindParams, kBindObjects,     kBindShadelInstances,
                                    kBindLevelRects, kBindRemap,  kBindShadelMasks};
+constexpr std::array kNeighbourBindings{kBindParams,       kBindShadelInstances, kBindLevelRects, kBindRemap,
+                                        kBindOwnedEntries, kBindShadelMasks,     kBindEntryBlocks};
 }  // namespace
+
+bool markOwnChunkOnly(int filter, bool shadelMasks) { return shadelMasks && filter != 0; }
+
+gpu::ComputePipelineDesc shadelMarkNeighboursPipeline() {
+  return {.shader = {.path = "passes/shadel-mark/shadel_mark_neighbours.comp"},
+          .layout = decoupledLayout(kNeighbourBindings, false, sizeof(SgEntrySpan))};
+}
 
 gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline, bool alphaTest, VkDescriptorSetLayout materialSet,
                                              bool shadelMasks, uint32_t levelRule) {
   std::vector<std::pair<std::string, std::string>> defines{filterDefine(filter)};
   if (baseline) defines.emplace_back("SG_MARK_BASELINE", "1");
   if (shadelMasks) defines.emplace_back("SG_SHADEL_MASKS", "1");
+  if (markOwnChunkOnly(filter, shadelMasks)) defines.emplace_back("SG_MARK_OWN_CHUNK_ONLY", "1");
   for (auto& define : levelRuleDefines(levelRule)) defines.push_back(std::move(define));
   const std::span<const uint32_t> bindings = shadelMasks ? std::span<const uint32_t>(kMaskBindings) : kBindings;
   std::vector<std::pair<std::string, std::string>> vertexDefines;
@@ -79,6 +89,18 @@ void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::Reso
       });
     });
     ctx.endRendering();
+  });
+  if (!markOwnChunkOnly(frame.filter, masks)) return;
+  // The gutters' shadels in the neighbours of the marked chunks.
+  auto& neighbours = graph.addPass("shadel-mark-neighbours", graph::QueueClass::Graphics, graph::PassKind::Compute);
+  neighbours.read(frame.remap, graph::Access::StorageRead);
+  frame.masks = neighbours.write(frame.masks, graph::Access::StorageReadWrite);
+  readEntryBlocks(neighbours, frame);
+  neighbours.execute([frame](PassContext& ctx) {
+    const auto& pipeline =
+        ctx.device().pipeline("shadel-mark-neighbours", [] { return shadelMarkNeighboursPipeline(); });
+    bindDecoupled(ctx, pipeline, frame, kNeighbourBindings);
+    dispatchEntrySpans(ctx, pipeline, frame);
   });
 }
 

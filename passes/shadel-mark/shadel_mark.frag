@@ -8,6 +8,11 @@
 // With SG_SHADEL_MASKS it also marks which shadels of the chunk the footprint
 // reads (layer-shade shades only those), and of each neighbour chunk whose
 // first row or column fills the tile's gutter.
+// With SG_MARK_OWN_CHUNK_ONLY (masks, bilinear or trilinear) it sets only
+// the mask of the footprint's own chunk: what the neighbours' first column /
+// row give the gutter follows from the masks in a compute step after the
+// draws (shadel_mark_neighbours.comp), which spares every pixel the loop over
+// neighbour chunks.
 // Early depth test: hidden surfaces mark nothing. No colour output.
 //
 // Cost on lavapipe: every buffer read or atomic in a fragment shader is a
@@ -68,6 +73,20 @@ uint64_t sgBoxBits(uvec2 lo, uvec2 hi) {
   return uint64_t(row) * rows;
 }
 
+#ifdef SG_MARK_OWN_CHUNK_ONLY
+// What composite reads of the tile, bilinear or trilinear: the 2x2 taps at
+// (tile & 7) + {0,1}², of which this marks the part inside the tile's own
+// chunk (lo..min(lo + 1, 7)), whatever their weight (a weight-0 tap is still
+// fetched). The part in the gutter (the next chunks' first column / row)
+// shadel_mark_neighbours.comp derives from these masks after the draws.
+void markFootprint(SgMarkLevel level, SgBilinearTaps taps, uvec2 tile) {
+  uvec2 inChunk = tile & (SG_CHUNK_SIZE - 1u);
+  uvec2 chunkOrigin = tile - inChunk;
+  uint64_t bits = sgBoxBits(inChunk, min(inChunk + 1u, uvec2(SG_CHUNK_SIZE - 1u)));
+  uint slot = sgMarkStorageBase(level, chunkOrigin) + sgShadelAddress(chunkOrigin, params.entriesPerSideLog2).chunkIndex;
+  if ((shadelMasks[slot] & bits) != bits) atomicOr(shadelMasks[slot], bits);
+}
+#else
 // What composite reads of the tile: the footprint's taps at (tile & 7) +
 // [lo, hi] in the 9x9 tile, whatever their weight (a weight-0 tap is still
 // fetched). Point: the nearest tap only; bilinear, trilinear: the 2x2. The
@@ -108,7 +127,8 @@ void markFootprint(SgMarkLevel level, SgBilinearTaps taps, uvec2 tile) {
     if ((shadelMasks[slot] & bits) != bits) atomicOr(shadelMasks[slot], bits);
   }
 }
-#endif
+#endif  // SG_MARK_OWN_CHUNK_ONLY
+#endif  // SG_SHADEL_MASKS
 
 void markLevel(uint index) {
   SgMarkLevel level = sgUnpackMarkLevel(inLevelOrigins, inLevels, index);

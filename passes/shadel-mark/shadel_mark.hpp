@@ -8,8 +8,17 @@ namespace sg::passes {
 // no colour) and marks the chunks of the shadels composite will read with
 // frame.filter (recorded in frame.markedFilter). With frame.shadelMasks it
 // creates frame.masks, zeroed by a transfer pass (shadel-mask-clear) first,
-// and marks in them which shadels of each chunk composite reads.
+// and marks in them which shadels of each chunk composite reads
+// (with markOwnChunkOnly, the neighbours' part in a compute pass after it).
 void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle depth);
+// With shadel masks and the bilinear or trilinear filter, the fragment shader
+// marks only the mask of each footprint's own chunk, and a compute pass after
+// it (shadel-mark-neighbours) adds what the marked chunks' gutters read to
+// their neighbours' masks (shadel_mark_neighbours.comp); the point filter's
+// single tap may lie in the gutter, so there the fragment shader marks the
+// neighbour itself, as before.
+bool markOwnChunkOnly(int filter, bool shadelMasks);
+gpu::ComputePipelineDesc shadelMarkNeighboursPipeline();
 // filter: 0 point, 1 bilinear, 2 trilinear (what composite filters with);
 // baseline: the mark before issue 14 (bench --baseline); alphaTest: the
 // variant for alpha-mask objects, `materialSet` (the scene material) its set 1;

@@ -151,8 +151,10 @@ TEST_P(DecoupledFilters, NoCompositeMissesFromRandomCameras) {
 }
 
 // Shadel masks (issue 14): layer-shade shades only the shadels composite's
-// footprints read, the tiles' gutters included (shadel-mark marks the
-// neighbour chunk's first row or column). A read of a shadel left unshaded
+// footprints read, the tiles' gutters included (the neighbour chunk's first
+// row or column: marked by shadel-mark's fragment shader for point, derived
+// from the marked chunks' masks by shadel-mark-neighbours for bilinear and
+// trilinear). A read of a shadel left unshaded
 // would see stale storage or nothing, so the image must be bit for bit the
 // one shading whole chunks gives, from random cameras, with fewer shadels
 // shaded. (Composite's miss counter sees chunks, not shadels.)

@@ -266,6 +266,7 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
             errors += mismatches("shadel-mark filter=" + std::to_string(filter) + (alphaTest ? " alpha-test" : "") +
                                      (masks ? " masks" : "") + passes::levelRuleVariant(rule),
                                  passes::shadelMarkPipeline(filter, baseline, alphaTest, VK_NULL_HANDLE, masks, rule));
+  errors += mismatches("shadel-mark-neighbours", passes::shadelMarkNeighboursPipeline());
   for (bool header : {false, true}) errors += mismatches("live-entry-blocks", passes::liveEntryBlocksPipeline(header));
   for (bool apply : {false, true}) errors += mismatches("support-expand", passes::supportExpandPipeline(apply));
   for (int phase : {1, 2}) errors += mismatches("shadel-allocate", passes::shadelAllocatePipeline(phase));
