@@ -171,35 +171,6 @@ uint64_t sgChunkShadelMask(SgChunkSetup c) { return packUint2x32(c.shadelMask); 
 uint sgFirstShadelRow() { return gl_LocalInvocationID.y * SG_CHUNK_ROWS_PER_INVOCATION; }
 uint sgChunkTexel(uint row) { return row * SG_CHUNK_SIZE + gl_LocalInvocationID.x; }
 
-// The UV derivatives per screen pixel at the shadel (what dFdx/dFdy give the
-// forward variant there), from its derivatives per shadel step: textures are
-// filtered at the pixel's footprint, as forward filters them, whatever the
-// shadel spacing (nearest level: 0.71-1.41 pixels; finer with a negative bias
-// or trilinear's fine level). Read at the shadel's own footprint, a texture
-// held detail forward does not show where shadels are finer than pixels, and
-// decoupled converged to another image as shadels got denser (docs/decoupled-
-// shading.md, "Textures filtered at the pixel's footprint"). Position
-// derivatives stay per shadel step: bump mapping pairs them with the height
-// differences of neighbour shadels. Where the step does not project (edge-on,
-// behind the eye) the per-step derivatives are kept.
-void sgUvDerivativesPerPixel(inout Surface s) {
-  vec4 clip = frame.viewProjection * vec4(s.position, 1.0);
-  vec4 cx = frame.viewProjection * vec4(s.positionDx, 0.0), cy = frame.viewProjection * vec4(s.positionDy, 0.0);
-  if (clip.w <= 0.0) return;
-  // Pixels per shadel step (columns: the step in x and in y), from d(clip.xy / clip.w).
-  vec2 halfSize = 0.5 * vec2(frame.counts.yz);
-  mat2 pixelsPerStep = mat2(halfSize * (cx.xy * clip.w - clip.xy * cx.w), halfSize * (cy.xy * clip.w - clip.xy * cy.w)) /
-                       (clip.w * clip.w);
-  float det = determinant(pixelsPerStep);
-  if (abs(det) < 1e-12) return;
-  mat2 stepsPerPixel = inverse(pixelsPerStep);
-  mat2 uv0 = mat2(s.uv0Dx, s.uv0Dy) * stepsPerPixel, uv1 = mat2(s.uv1Dx, s.uv1Dy) * stepsPerPixel;
-  s.uv0Dx = uv0[0];
-  s.uv0Dy = uv0[1];
-  s.uv1Dx = uv1[0];
-  s.uv1Dy = uv1[1];
-}
-
 // Finds shadel texelIndex of the chunk (sgShadel) and, if it lies on the
 // object, its surface point. False: write nothing meaningful (the layer gets vec4(0)).
 bool sgBeginShadel(SgChunkSetup c, uint texelIndex, out Surface s) {
@@ -246,7 +217,6 @@ bool sgBeginShadel(SgChunkSetup c, uint texelIndex, out Surface s) {
   s.uv1Dy = v0.uv01.zw * bDy.x + v1.uv01.zw * bDy.y + v2.uv01.zw * bDy.z;
   s.positionDx = mat3(c.world) * (v0.position * bDx.x + v1.position * bDx.y + v2.position * bDx.z);
   s.positionDy = mat3(c.world) * (v0.position * bDy.x + v1.position * bDy.y + v2.position * bDy.z);
-  sgUvDerivativesPerPixel(s);
   // Double-sided surfaces seen from behind: shade the side facing the camera.
   if (material.flags.y != 0u && dot(s.normal, frame.cameraPosition.xyz - s.position) < 0.0) s.normal = -s.normal;
   return true;
