@@ -157,11 +157,11 @@ void drawForward(PassContext& ctx, const render::SceneView& view, std::span<cons
       boundMaterial = &material;
       boundPlain = plain;
       boundAlphaTest = alphaTest;
-      if (d == draws.front()) counter.begin(ctx.cmd());  // once a pipeline is bound (overdraw_probe.hpp)
     }
     const auto& item = view.scene.draws()[d];
     VkDescriptorSet set = view.scene.materialSet(item.material);
     vkCmdBindDescriptorSets(ctx.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->layout(), 1, 1, &set, 0, nullptr);
+    if (d == draws.front()) counter.begin(ctx.cmd());  // once every set is bound (overdraw_probe.hpp)
     render::drawItem(ctx.cmd(), *pipeline, view, d, d);
   }
   if (!draws.empty()) counter.end(ctx.cmd());

@@ -31,9 +31,10 @@ class OverdrawProbe {
 
   // Resets the queries (host) for a new measurement frame.
   void arm();
-  // Inside the slot's rendering, each slot once a frame, after a graphics pipeline
-  // and the geometry are bound: lavapipe (Mesa 22.3) crashed at a query begun
-  // before them in frames that skin or morph on the GPU.
+  // Inside the slot's rendering, each slot once a frame, after a graphics pipeline,
+  // all its descriptor sets and the geometry are bound: lavapipe (Mesa 22.3)
+  // crashed at a query begun before them (frames that skin or morph on the GPU,
+  // forward draws before their material set was bound).
   void begin(VkCommandBuffer cmd, OverdrawSlot slot);
   void end(VkCommandBuffer cmd, OverdrawSlot slot);
   // Whether any slot was recorded since arm() (a frame only planned records none).
