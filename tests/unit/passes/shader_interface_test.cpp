@@ -82,7 +82,7 @@ class Reflection {
     for (const auto& [kind, type] : kinds)
       for (const spvc_reflected_resource& r : list(resources, kind)) {
         if (spvc_compiler_get_decoration(compiler_, r.id, SpvDecorationDescriptorSet) != 0) continue;
-        out.bindings[spvc_compiler_get_decoration(compiler_, r.id, SpvDecorationBinding)] = type;
+        out.bindings[spvc_compiler_get_decoration(compiler_, r.id, SpvDecorationBinding)] = texelBuffer(r) ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER : type;
         if (type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER || type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
           addRecords(r.base_type_id, out.records);
       }
@@ -99,6 +99,11 @@ class Reflection {
  private:
   static void check(spvc_result result) {
     if (result != SPVC_SUCCESS) throw std::runtime_error("SPIRV-Cross failed: " + std::to_string(int(result)));
+  }
+  // A samplerBuffer is a sampled image of dimension Buffer: a uniform texel buffer.
+  bool texelBuffer(const spvc_reflected_resource& r) {
+    const spvc_type type = spvc_compiler_get_type_handle(compiler_, r.type_id);
+    return spvc_type_get_basetype(type) == SPVC_BASETYPE_SAMPLED_IMAGE && spvc_type_get_image_dimension(type) == SpvDimBuffer;
   }
   std::vector<spvc_reflected_resource> list(spvc_resources resources, spvc_resource_type kind) {
     const spvc_reflected_resource* items = nullptr;
@@ -151,6 +156,7 @@ const char* typeName(VkDescriptorType type) {
     case VK_DESCRIPTOR_TYPE_STORAGE_BUFFER: return "storage buffer";
     case VK_DESCRIPTOR_TYPE_STORAGE_IMAGE: return "storage image";
     case VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER: return "sampled image";
+    case VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER: return "uniform texel buffer";
     default: return "other";
   }
 }
