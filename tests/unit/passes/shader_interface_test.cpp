@@ -78,7 +78,8 @@ class Reflection {
         {SPVC_RESOURCE_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
         {SPVC_RESOURCE_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
         {SPVC_RESOURCE_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-        {SPVC_RESOURCE_TYPE_SAMPLED_IMAGE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}};
+        {SPVC_RESOURCE_TYPE_SAMPLED_IMAGE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+        {SPVC_RESOURCE_TYPE_SEPARATE_IMAGE, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE}};
     for (const auto& [kind, type] : kinds)
       for (const spvc_reflected_resource& r : list(resources, kind)) {
         if (spvc_compiler_get_decoration(compiler_, r.id, SpvDecorationDescriptorSet) != 0) continue;
@@ -102,8 +103,10 @@ class Reflection {
   }
   // A samplerBuffer is a sampled image of dimension Buffer: a uniform texel buffer.
   bool texelBuffer(const spvc_reflected_resource& r) {
-    const spvc_type type = spvc_compiler_get_type_handle(compiler_, r.type_id);
-    return spvc_type_get_basetype(type) == SPVC_BASETYPE_SAMPLED_IMAGE && spvc_type_get_image_dimension(type) == SpvDimBuffer;
+    const spvc_type type = spvc_compiler_get_type_handle(compiler_, r.base_type_id);
+    const spvc_basetype base = spvc_type_get_basetype(type);
+    return (base == SPVC_BASETYPE_SAMPLED_IMAGE || base == SPVC_BASETYPE_IMAGE) &&
+           spvc_type_get_image_dimension(type) == SpvDimBuffer;
   }
   std::vector<spvc_reflected_resource> list(spvc_resources resources, spvc_resource_type kind) {
     const spvc_reflected_resource* items = nullptr;
