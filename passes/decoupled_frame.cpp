@@ -36,6 +36,7 @@ gpu::PipelineLayoutDesc decoupledLayout(std::span<const uint32_t> bindings, bool
   for (uint32_t b : bindings) {
     VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     if (b == kBindFrame || b == kBindParams) type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    if (b == kBindIdMaps || b == kBindVertices || b == kBindIndices) type = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
     if (b == kBindLayerImage)
       type = layerImageStorage ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     layout.bindings.push_back({b, type});
@@ -66,9 +67,9 @@ void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const Decoup
       case kBindCounters: buffer(ctx.buffer(f.counters).handle()); break;
       case kBindWork: buffer(ctx.buffer(f.work).handle()); break;
       case kBindArgs: buffer(ctx.buffer(f.args).handle()); break;
-      case kBindIdMaps: buffer(f.idMaps.handle()); break;
-      case kBindVertices: buffer(f.view.scene.vertexBuffer()); break;
-      case kBindIndices: buffer(f.view.scene.indexBuffer()); break;
+      case kBindIdMaps: writes.push_back({b, gpu::TexelBufferBinding{f.idMaps}}); break;
+      case kBindVertices: writes.push_back({b, gpu::TexelBufferBinding{f.view.scene.vertexTexels()}}); break;
+      case kBindIndices: writes.push_back({b, gpu::TexelBufferBinding{f.view.scene.indexTexels()}}); break;
       case kBindLayerImage: {
         const auto& pipelineBindings = pipeline.bindings();
         bool storage = false;

@@ -40,7 +40,7 @@ struct DecoupledFrame {
   const gpu::Buffer& shadelInstances;
   const gpu::Buffer& levelRects;
   const gpu::Buffer& ownedEntries;
-  const gpu::Buffer& idMaps;
+  VkBufferView idMaps;  // the triangle-ID maps as R32UI texels (a uniform texel buffer: one gather per read on CPU devices)
   uint32_t ownedEntryCount = 0;
   uint32_t objectCount = 0;
   // The owned entries the per-entry passes visit this frame, as runs

@@ -12,7 +12,7 @@ DescriptorArena::DescriptorArena(const Context& context, uint32_t maxSets) : dev
   const VkDescriptorPoolSize sizes[] = {
       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, maxSets * 8},   {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, maxSets * 4},
       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, maxSets * 8}, {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, maxSets * 4},
-      {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, maxSets * 4},
+      {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, maxSets * 4},           {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, maxSets * 4},
   };
   VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   info.maxSets = maxSets;
@@ -36,8 +36,10 @@ void DescriptorArena::bind(VkCommandBuffer cmd, const Pipeline& pipeline, std::s
 
   std::vector<VkDescriptorBufferInfo> buffers;
   std::vector<VkDescriptorImageInfo> images;
+  std::vector<VkBufferView> texelBuffers;
   buffers.reserve(writes.size());
   images.reserve(writes.size());
+  texelBuffers.reserve(writes.size());
   std::vector<VkWriteDescriptorSet> vkWrites;
   for (const auto& w : writes) {
     VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -49,6 +51,9 @@ void DescriptorArena::bind(VkCommandBuffer cmd, const Pipeline& pipeline, std::s
     if (auto* buffer = std::get_if<BufferBinding>(&w.resource)) {
       buffers.push_back({buffer->buffer, buffer->offset, buffer->range});
       write.pBufferInfo = &buffers.back();
+    } else if (auto* texels = std::get_if<TexelBufferBinding>(&w.resource)) {
+      texelBuffers.push_back(texels->view);
+      write.pTexelBufferView = &texelBuffers.back();
     } else {
       const auto& image = std::get<ImageBinding>(w.resource);
       images.push_back({image.sampler, image.view, image.layout});

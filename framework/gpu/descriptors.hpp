@@ -23,9 +23,13 @@ struct ImageBinding {
   VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   VkSampler sampler = VK_NULL_HANDLE;
 };
+// A uniform texel buffer (gpu::BufferView).
+struct TexelBufferBinding {
+  VkBufferView view;
+};
 struct DescriptorWrite {
   uint32_t binding;
-  std::variant<BufferBinding, ImageBinding> resource;
+  std::variant<BufferBinding, ImageBinding, TexelBufferBinding> resource;
 };
 
 class DescriptorArena {

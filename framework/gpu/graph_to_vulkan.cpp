@@ -111,7 +111,7 @@ VkBufferUsageFlags toVk(graph::BufferUsage usage) {
       {U::Storage, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},   {U::Uniform, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT},
       {U::Vertex, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT},     {U::Index, VK_BUFFER_USAGE_INDEX_BUFFER_BIT},
       {U::Indirect, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT}, {U::TransferSrc, VK_BUFFER_USAGE_TRANSFER_SRC_BIT},
-      {U::TransferDst, VK_BUFFER_USAGE_TRANSFER_DST_BIT},
+      {U::TransferDst, VK_BUFFER_USAGE_TRANSFER_DST_BIT}, {U::UniformTexel, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT},
   };
   return mapBits(usage, table);
 }

@@ -89,8 +89,9 @@ inline constexpr std::array<AccessTraits, 15> kAccessTraits{{
      A::DepthStencilRead | A::DepthStencilWrite, L::DepthAttachment, IU::DepthAttachment, BU::None},
     {"DepthRead", false, false, true, false, false, false, kDepthTests, A::DepthStencilRead, L::DepthReadOnly,
      IU::DepthAttachment, BU::None},
-    {"Sampled", false, true, true, false, true, false, S::None, A::ShaderSampledRead, L::ShaderReadOnly, IU::Sampled,
-     BU::None},
+    // Of a buffer: a uniform texel buffer (samplerBuffer).
+    {"Sampled", false, true, false, false, true, false, S::None, A::ShaderSampledRead, L::ShaderReadOnly, IU::Sampled,
+     BU::UniformTexel},
     {"StorageRead", false, true, false, false, true, false, S::None, A::ShaderStorageRead, L::General, IU::Storage,
      BU::Storage},
     {"StorageWrite", true, true, false, false, true, false, S::None, A::ShaderStorageWrite, L::General, IU::Storage,

@@ -21,7 +21,7 @@ std::string toString(ImageUsage usage) {
 
 std::string toString(BufferUsage usage) {
   using U = BufferUsage;
-  static constexpr std::array<std::pair<U, std::string_view>, 7> kNames{{
+  static constexpr std::array<std::pair<U, std::string_view>, 8> kNames{{
       {U::Storage, "Storage"},
       {U::Uniform, "Uniform"},
       {U::Vertex, "Vertex"},
@@ -29,6 +29,7 @@ std::string toString(BufferUsage usage) {
       {U::Indirect, "Indirect"},
       {U::TransferSrc, "TransferSrc"},
       {U::TransferDst, "TransferDst"},
+      {U::UniformTexel, "UniformTexel"},
   }};
   return detail::joinFlagNames(usage, kNames);
 }

@@ -31,6 +31,7 @@ enum class BufferUsage : uint32_t {
   Indirect = 1u << 4,
   TransferSrc = 1u << 5,
   TransferDst = 1u << 6,
+  UniformTexel = 1u << 7,  // read through a buffer view (Access::Sampled)
 };
 template <>
 struct EnableBitmask<BufferUsage> : std::true_type {};

@@ -127,11 +127,19 @@ void GpuScene::uploadGeometry(gpu::Context& context, gpu::MemoryAllocator& memor
   // Concurrent: the skinning pass writes it on the graphics queue, layer shading reads it on async compute.
   vertices_ = uploadBuffer(context, memory, vertices.data(), vertices.size() * sizeof(GpuVertex),
                            VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                               VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
                                VK_BUFFER_USAGE_TRANSFER_SRC_BIT,  // read back by tests
                            "vertices",
                            /*concurrent*/ !deformed.empty());
   indices_ = uploadBuffer(context, memory, indices.data(), indices.size() * 4,
-                          VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "indices");
+                          VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                              VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+                          "indices");
+  static_assert(sizeof(GpuVertex) % 8 == 0 && alignof(GpuVertex) == 4, "a GpuVertex is a whole number of RG32F texels");
+  vertexTexels_ = gpu::BufferView(context, vertices_.handle(), vertices_.size(), VK_FORMAT_R32G32_SFLOAT, 8,
+                                  "vertices (RG32F texels)");
+  indexTexels_ = gpu::BufferView(context, indices_.handle(), indices_.size(), VK_FORMAT_R32_UINT, 4,
+                                 "indices (R32UI texels)");
   if (!deformed.empty()) deformation_ = GpuDeformation(context, memory, scene, deformed);
 }
 

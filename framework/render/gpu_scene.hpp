@@ -8,6 +8,7 @@
 #include <shadelgraph/render/shaders/frame_interface.h>
 
 #include <shadelgraph/gpu/buffer.hpp>
+#include <shadelgraph/gpu/buffer_view.hpp>
 #include <shadelgraph/gpu/image.hpp>
 #include <shadelgraph/gpu/pipeline.hpp>
 #include <shadelgraph/render/gpu_deformation.hpp>
@@ -73,6 +74,11 @@ class GpuScene {
   // Skinned and morphed objects: each has vertex ranges of its own, rewritten per frame.
   const GpuDeformation& deformation() const { return deformation_; }
   VkBuffer indexBuffer() const { return indices_.handle(); }
+  // The same two buffers as uniform texel buffers, for layer shading (passes/layer-shade/shadel_context.glsl):
+  // vertices as RG32F texels (kVertexTexels a vertex), indices as R32UI.
+  VkBufferView vertexTexels() const { return vertexTexels_.handle(); }
+  VkBufferView indexTexels() const { return indexTexels_.handle(); }
+  static constexpr uint32_t kVertexTexels = sizeof(GpuVertex) / 8;
   // Every draw's index, 0..n-1 (a SceneView's draw list for all objects).
   const std::vector<uint32_t>& allDraws() const { return allDraws_; }
   // A 1x1 white texture (shader-read layout): the stand-in for a frame image a frame did not make.
@@ -88,6 +94,7 @@ class GpuScene {
 
   VkDevice device_;
   gpu::Buffer vertices_, indices_;
+  gpu::BufferView vertexTexels_, indexTexels_;  // after the buffers: destroyed before them
   GpuDeformation deformation_;
   std::vector<DrawItem> draws_;
   std::vector<uint32_t> allDraws_;

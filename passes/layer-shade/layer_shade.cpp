@@ -66,7 +66,7 @@ void addLayerShade(graph::RenderGraph& graph, DecoupledFrame& frame, std::string
   const bool masks = frame.shadelMasks && frame.masks.valid();
   if (masks) pass.read(frame.masks, graph::Access::StorageRead);
   render::readShadowMaps(pass, frame.view, graph::ShaderStage::Compute);
-  render::readSceneGeometry(pass, frame.view, graph::Access::StorageRead, graph::ShaderStage::Compute);
+  render::readSceneGeometry(pass, frame.view, graph::Access::Sampled, graph::ShaderStage::Compute);  // a texel buffer
   render::readEnvironment(pass, frame.view, graph::ShaderStage::Compute);
   render::readLightGrid(pass, frame.view, graph::ShaderStage::Compute);
   bool persistent = false;

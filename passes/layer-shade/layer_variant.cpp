@@ -77,18 +77,23 @@ gpu::ShaderRequest decoupledLayerVariant(const plugin::MaterialLayer& layer, uin
   if (!layer.keepsValues()) {
     // Only the shadels composite reads (shadel masks; never with kept values,
     // whose stored shadels may be served later). The last layer counts those it leaves out.
-    out << "  uint64_t sgMask = sgChunkShadelMask(sgChunk);\n"
-        << "  if (sgPush.countSkipped != 0u && gl_LocalInvocationIndex == 0u && sgMask != ~uint64_t(0)) {\n"
-        << "    uvec2 sgHalves = unpackUint2x32(sgMask);\n"
-        << "    atomicAdd(counters.shadelsSkipped, 64u - uint(bitCount(sgHalves.x) + bitCount(sgHalves.y)));\n"
-        << "  }\n";
+    out << "  uvec2 sgMarked = sgChunk.shadelMask;\n"
+        << "  uint sgMarkedCount = uint(bitCount(sgMarked.x) + bitCount(sgMarked.y));\n"
+        << "  if (sgPush.countSkipped != 0u && gl_LocalInvocationIndex == 0u && sgMarkedCount < 64u)\n"
+        << "    atomicAdd(counters.shadelsSkipped, 64u - sgMarkedCount);\n";
   }
   // Kept while its object's bit for this layer is set (layer_rate.hpp): one read per chunk.
   if (layer.viewIndependent())
     out << "  bool keep = (objects[sgPush.objectIndex].keepLayers >> sgPush.persistentSlot & 1u) != 0u;\n";
-  out << "  for (uint sgRow = sgFirstShadelRow(); sgRow < sgFirstShadelRow() + SG_CHUNK_ROWS_PER_INVOCATION; ++sgRow) {\n"
-      << "    uint sgTexel = sgChunkTexel(sgRow);\n";
-  if (!layer.keepsValues()) out << "    if (!sgIsChunkMarked(sgMask, sgTexel)) continue;\n";
+  if (layer.keepsValues()) {
+    out << "  for (uint sgRow = sgFirstShadelRow(); sgRow < sgFirstShadelRow() + SG_CHUNK_ROWS_PER_INVOCATION; ++sgRow) {\n"
+        << "    uint sgTexel = sgChunkTexel(sgRow);\n";
+  } else {
+    // Only the marked shadels, in full lanes (marked_shadels.glsl).
+    out << "  uint64_t sgLeft = sgSkipMarked(packUint2x32(sgMarked), gl_LocalInvocationIndex);\n"
+        << "  for (; sgLeft != 0ul; sgLeft = sgSkipMarked(sgLeft, SG_LAYER_SHADE_INVOCATIONS)) {\n"
+        << "    uint sgTexel = sgFirstMarkedTexel(sgLeft);\n";
+  }
   out << "    Surface s;\n"
       << "    bool onSurface = sgBeginShadel(sgChunk, sgTexel, s);\n"
       << "    vec4 value = vec4(0.0);\n";

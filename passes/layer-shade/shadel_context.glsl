@@ -18,10 +18,13 @@
 #include <framework/shadel/shaders/decoupled.glsl>
 #include <framework/shadel/shaders/work.glsl>
 #include <framework/plugin/shaders/material.glsl>
+#include <passes/layer-shade/marked_shadels.glsl>
 
 // A workgroup shades one 8x8 chunk with 64 / SG_CHUNK_ROWS_PER_INVOCATION
-// invocations, each shading that many rows of its column (the loop in the
-// generated main). The generator sizes the workgroup to one subgroup
+// invocations, each shading that many of its shadels (the loop in the
+// generated main): a layer that keeps values shades the rows of its column,
+// any other the chunk's marked shadels packed into full lanes
+// (marked_shadels.glsl). The generator sizes the workgroup to one subgroup
 // (passes::chunkRowsPerInvocation): the chunk setup (sgChunkSetup, its
 // single-lane reads) then runs once per chunk. On lavapipe (8 lanes) that is
 // 8 rows per invocation; 8 subgroups each repeating the setup cost
@@ -36,14 +39,28 @@ struct SgVertex {  // render::GpuVertex
   vec3 position;
   vec3 normal;
   vec4 tangent;
-  vec4 uv01;  // uv0 and uv1: one read of four components (lavapipe loops over the lanes once per read, not per component)
+  vec4 uv01;
   vec4 color;
 };
-layout(set = 0, binding = kBindIdMaps, std430) readonly buffer IdMaps { uint idMaps[]; };
-layout(set = 0, binding = kBindVertices, scalar) readonly buffer Vertices { SgVertex vertices[]; };
-// The scene's indices as triangles: every primitive starts at a multiple of 3
-// (render::GpuScene), so a triangle is one read of three components.
-layout(set = 0, binding = kBindIndices, scalar) readonly buffer Indices { uvec3 triangles[]; };
+// The ID maps, vertices and indices are uniform texel buffers: on CPU devices
+// (lavapipe) a texelFetch is one gather across the lanes, where a storage-buffer
+// read at per-lane addresses is a loop over the lanes with a branch and a
+// bounds check each (and these reads were half of a simple layer's time).
+layout(set = 0, binding = kBindIdMaps) uniform usamplerBuffer sgIdMaps;       // R32UI
+layout(set = 0, binding = kBindVertices) uniform samplerBuffer sgVertexTexels;  // RG32F, 9 per render::GpuVertex
+layout(set = 0, binding = kBindIndices) uniform usamplerBuffer sgIndices;     // R32UI
+
+// Vertex i as render::GpuVertex lays it out in nine RG32F texels; the
+// compiler drops the fetches of what the layer does not use.
+SgVertex sgVertex(uint i) {
+  int t = int(i) * 9;
+  vec2 t0 = texelFetch(sgVertexTexels, t).xy, t1 = texelFetch(sgVertexTexels, t + 1).xy,
+       t2 = texelFetch(sgVertexTexels, t + 2).xy, t3 = texelFetch(sgVertexTexels, t + 3).xy,
+       t4 = texelFetch(sgVertexTexels, t + 4).xy, t5 = texelFetch(sgVertexTexels, t + 5).xy,
+       t6 = texelFetch(sgVertexTexels, t + 6).xy, t7 = texelFetch(sgVertexTexels, t + 7).xy,
+       t8 = texelFetch(sgVertexTexels, t + 8).xy;
+  return SgVertex(vec3(t0, t1.x), vec3(t1.y, t2), vec4(t3, t4), vec4(t5, t6), vec4(t7, t8));
+}
 layout(push_constant, scalar) uniform Push { SgLayerShadePush sgPush; };
 
 const uint SG_NO_TRIANGLE = 0xFFFFFFFFu;
@@ -66,7 +83,9 @@ SgShadelContext sgShadel;
 float sgDetailLevel() { return float(sgShadel.level); }
 uint sgTriangleId() { return sgShadel.triangle; }
 
-uint sgTriangleAt(uvec2 local) { return idMaps[sgShadel.idMapLevel + local.y * sgShadel.rect.size + local.x]; }
+uint sgTriangleAt(uvec2 local) {
+  return texelFetch(sgIdMaps, int(sgShadel.idMapLevel + local.y * sgShadel.rect.size + local.x)).x;
+}
 
 vec3 sgBarycentrics(vec2 p, vec2 a, vec2 b, vec2 c) {
   vec2 v0 = b - a, v1 = c - a, v2 = p - a;
@@ -100,7 +119,7 @@ layout(set = 0, binding = kBindShadelMasks, std430) readonly buffer ShadelMasks 
 struct SgChunkSetup {
   uint entryIndex, chunkIndex, level, physical;
   uvec2 storageOrigin;  // of the chunk's tile in the layer images
-  uvec2 shadelMask;     // the shadels composite reads (sgChunkShadelMask), as two halves
+  uvec2 shadelMask;     // the shadels composite reads (bit = texel index), as two halves
   SgLevelRect rect;
   uint idMapLevel;    // the first texel of the level in the ID-map buffer
   uint levelOffset;   // of the level in the object's ID map
@@ -164,12 +183,13 @@ SgChunkSetup sgChunkSetup() {
 
 vec2 sgShadingUv(SgVertex v, SgChunkSetup c) { return (c.shadingUvSet == 1u ? v.uv01.zw : v.uv01.xy) - c.tileOffset; }
 
-uint64_t sgChunkShadelMask(SgChunkSetup c) { return packUint2x32(c.shadelMask); }
-
 // The texel indices (8x8 row-major) of the chunk this invocation shades: row
 // `row` of its column.
 uint sgFirstShadelRow() { return gl_LocalInvocationID.y * SG_CHUNK_ROWS_PER_INVOCATION; }
 uint sgChunkTexel(uint row) { return row * SG_CHUNK_SIZE + gl_LocalInvocationID.x; }
+
+// Marked shadel slot -> texel: the shadels composite reads, in full lanes.
+const uint SG_LAYER_SHADE_INVOCATIONS = 64u / SG_CHUNK_ROWS_PER_INVOCATION;
 
 // Finds shadel texelIndex of the chunk (sgShadel) and, if it lies on the
 // object, its surface point. False: write nothing meaningful (the layer gets vec4(0)).
@@ -189,8 +209,10 @@ bool sgBeginShadel(SgChunkSetup c, uint texelIndex, out Surface s) {
   sgShadel.triangle = sgTriangleAt(sgShadel.local);
   if (sgShadel.triangle == SG_NO_TRIANGLE) return false;
 
-  uvec3 i = triangles[c.firstIndex / 3u + sgShadel.triangle] + uint(c.vertexOffset);
-  SgVertex v0 = vertices[i.x], v1 = vertices[i.y], v2 = vertices[i.z];
+  int first = int(c.firstIndex + 3u * sgShadel.triangle);
+  uvec3 i = uvec3(texelFetch(sgIndices, first).x, texelFetch(sgIndices, first + 1).x, texelFetch(sgIndices, first + 2).x) +
+            uint(c.vertexOffset);
+  SgVertex v0 = sgVertex(i.x), v1 = sgVertex(i.y), v2 = sgVertex(i.z);
   vec2 s0 = sgShadingUv(v0, c), s1 = sgShadingUv(v1, c), s2 = sgShadingUv(v2, c);
 
   float step = 1.0 / float(sgShadel.rect.size);

@@ -31,10 +31,11 @@ const graph::ResourceState kResting{graph::Layout::General, graph::PipelineStage
                                     graph::AccessFlag::ShaderStorageRead | graph::AccessFlag::ShaderStorageWrite};
 
 template <class T>
-gpu::Buffer upload(gpu::Device& device, const std::vector<T>& data, const char* name) {
+gpu::Buffer upload(gpu::Device& device, const std::vector<T>& data, const char* name, VkBufferUsageFlags usage = 0) {
   const size_t bytes = std::max<size_t>(data.size() * sizeof(T), 16);
   gpu::Buffer buffer(device.context(), device.memory(),
-                     {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryLocation::Upload, name, "decoupled tables"});
+                     {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | usage, gpu::MemoryLocation::Upload, name,
+                      "decoupled tables"});
   if (!data.empty()) buffer.write(data.data(), data.size() * sizeof(T));
   return buffer;
 }
@@ -143,7 +144,9 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
   // Each primitive is an object of its own: its own triangle-ID map (triangle
   // IDs count from its first index) and shadel space. The maps not baked yet
   // are sized together, so that all fit the one buffer (id_map_budget.hpp).
-  const uint64_t limit = in.device.context().properties().limits.maxStorageBufferRange;
+  // Layer shading reads the maps as R32UI texels (a uniform texel buffer).
+  const auto& limits = in.device.context().properties().limits;
+  const uint64_t limit = std::min<uint64_t>(limits.maxStorageBufferRange, uint64_t(limits.maxTexelBufferElements) * 4);
   struct NewMap {
     scene::Mesh mesh;
     scene::ChartVerdict chart;
@@ -260,7 +263,10 @@ void DecoupledShading::uploadTables(gpu::Device& device) {
   levelRects_ = upload(device, tables.levelRects, "level rects");
   ownedEntries_ = upload(device, tables.ownedEntries, "owned remap entries");
   chunkSlots_.setOwnedEntries(tables.ownedEntries);  // the chunk slots follow the owned entries
-  idMapBuffer_ = upload(device, idTexels_, "triangle-ID maps");
+  idMapTexels_ = {};  // before the buffer it views
+  idMapBuffer_ = upload(device, idTexels_, "triangle-ID maps", VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+  idMapTexels_ = gpu::BufferView(device.context(), idMapBuffer_.handle(), idMapBuffer_.size(), VK_FORMAT_R32_UINT, 4,
+                                 "triangle-ID maps (R32UI texels)");
 }
 
 // Objects in mode auto go forward in frames where decoupled shading cannot
@@ -453,7 +459,7 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
                                         .objectDraws = identity_,
                                         .levelRules = levelRules_,
                                         .params = params_[ring()], .objects = objects_[ring()], .shadelInstances = shadelInstances_,
-                                        .levelRects = levelRects_, .ownedEntries = ownedEntries_, .idMaps = idMapBuffer_,
+                                        .levelRects = levelRects_, .ownedEntries = ownedEntries_, .idMaps = idMapTexels_.handle(),
                                         .ownedEntryCount = ownedEntryCount_, .objectCount = objectCount,
                                         .liveSpans = liveSpans_[ring()],
                                         .filter = settings_.filter,

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <shadelgraph/gpu/buffer.hpp>
+#include <shadelgraph/gpu/buffer_view.hpp>
 #include <decoupled_frame.hpp>
 #include <shadelgraph/render/frame_context.hpp>
 #include <shadelgraph/shadel/live_entry_spans.hpp>
@@ -283,6 +284,7 @@ class DecoupledShading {
   gpu::Buffer params_[2], objects_[2];
   uint32_t ring() const { return uint32_t(frames_ % 2); }
   gpu::Buffer shadelInstances_, levelRects_, ownedEntries_, idMapBuffer_, readback_;
+  gpu::BufferView idMapTexels_;  // idMapBuffer_ as R32UI texels, for layer shading
 };
 
 }  // namespace sg::plugins

@@ -22,9 +22,9 @@ SG_CONST uint kBindOwnedEntries = 6u;     // SgOwnedEntry[]
 SG_CONST uint kBindCounters = 7u;         // SgShadeCounters
 SG_CONST uint kBindWork = 8u;             // the work buffer (work.glsl)
 SG_CONST uint kBindArgs = 9u;             // VkDispatchIndirectCommand per object
-SG_CONST uint kBindIdMaps = 10u;          // triangle-ID maps
-SG_CONST uint kBindVertices = 11u;        // the scene's vertices (render::GpuVertex)
-SG_CONST uint kBindIndices = 12u;         // the scene's indices
+SG_CONST uint kBindIdMaps = 10u;          // triangle-ID maps (uniform texel buffer, R32UI)
+SG_CONST uint kBindVertices = 11u;        // the scene's vertices (render::GpuVertex; uniform texel buffer, RG32F)
+SG_CONST uint kBindIndices = 12u;         // the scene's indices (uniform texel buffer, R32UI)
 SG_CONST uint kBindLayerImage = 13u;      // the shaded layer image: storage (layer-shade) or sampled (composite)
 // Of a layer's decoupled variant, after the shared ones.
 SG_CONST uint kBindLayerOutput = kBindLayerImage;  // the image the layer writes

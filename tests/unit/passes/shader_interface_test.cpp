@@ -78,11 +78,12 @@ class Reflection {
         {SPVC_RESOURCE_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
         {SPVC_RESOURCE_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
         {SPVC_RESOURCE_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-        {SPVC_RESOURCE_TYPE_SAMPLED_IMAGE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}};
+        {SPVC_RESOURCE_TYPE_SAMPLED_IMAGE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+        {SPVC_RESOURCE_TYPE_SEPARATE_IMAGE, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE}};
     for (const auto& [kind, type] : kinds)
       for (const spvc_reflected_resource& r : list(resources, kind)) {
         if (spvc_compiler_get_decoration(compiler_, r.id, SpvDecorationDescriptorSet) != 0) continue;
-        out.bindings[spvc_compiler_get_decoration(compiler_, r.id, SpvDecorationBinding)] = type;
+        out.bindings[spvc_compiler_get_decoration(compiler_, r.id, SpvDecorationBinding)] = texelBuffer(r) ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER : type;
         if (type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER || type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
           addRecords(r.base_type_id, out.records);
       }
@@ -99,6 +100,13 @@ class Reflection {
  private:
   static void check(spvc_result result) {
     if (result != SPVC_SUCCESS) throw std::runtime_error("SPIRV-Cross failed: " + std::to_string(int(result)));
+  }
+  // A samplerBuffer is a sampled image of dimension Buffer: a uniform texel buffer.
+  bool texelBuffer(const spvc_reflected_resource& r) {
+    const spvc_type type = spvc_compiler_get_type_handle(compiler_, r.base_type_id);
+    const spvc_basetype base = spvc_type_get_basetype(type);
+    return (base == SPVC_BASETYPE_SAMPLED_IMAGE || base == SPVC_BASETYPE_IMAGE) &&
+           spvc_type_get_image_dimension(type) == SpvDimBuffer;
   }
   std::vector<spvc_reflected_resource> list(spvc_resources resources, spvc_resource_type kind) {
     const spvc_reflected_resource* items = nullptr;
@@ -151,6 +159,7 @@ const char* typeName(VkDescriptorType type) {
     case VK_DESCRIPTOR_TYPE_STORAGE_BUFFER: return "storage buffer";
     case VK_DESCRIPTOR_TYPE_STORAGE_IMAGE: return "storage image";
     case VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER: return "sampled image";
+    case VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER: return "uniform texel buffer";
     default: return "other";
   }
 }
