@@ -24,7 +24,8 @@
 namespace sg::render {
 
 // Whether the forward frame draws a depth pre-pass before forward-opaque:
-// Auto decides per frame (passes/z-prepass/z_prepass_rule.hpp); frames with
+// Auto decides from overdraw measured with occlusion queries
+// (passes/z-prepass/z_prepass_choice.hpp, the rule in z_prepass_rule.hpp); frames with
 // decoupled objects always have it (shadel-mark and composite test its depth).
 enum class ZPrepass { Auto, On, Off };
 
