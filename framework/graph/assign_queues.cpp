@@ -45,6 +45,8 @@ void assignQueues(const RenderGraph& graph, std::span<const PassId> order, const
                   std::span<const Dependency> handoffs, QueueSchedule& schedule) {
   schedule.batches.clear();
   schedule.waits.clear();
+  schedule.batches.reserve(order.size());  // a batch per position at most
+  schedule.waits.reserve(order.size());
   schedule.passBatch.assign(graph.passCount(), kInvalidIndex);
   // Sized once (a batch per position at most) instead of regrown batch by batch.
   std::vector<uint64_t> batchValue;

@@ -23,6 +23,7 @@ void planAllResources(const RenderGraph& graph, const std::vector<PassId>& order
   resources.resize(graph.resourceCount());
   requirements.assign(graph.resourceCount(), MemoryRequirements{});
   transients.clear();
+  transients.reserve(graph.resourceCount());
   estimated = false;
   for (uint32_t r = 0; r < graph.resourceCount(); ++r) {
     PlannedResource& resource = resources[r];

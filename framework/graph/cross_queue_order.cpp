@@ -8,6 +8,7 @@ namespace sg::graph {
 void orderAcrossQueues(const RenderGraph& graph, std::span<const PassId> order, const DependencyGraph& deps,
                        CrossQueueOrder& out) {
   out.batches.clear();
+  out.batches.reserve(order.size());  // a batch per position at most
   out.batchAt.resize(order.size());
   out.batchOfPass.assign(graph.passCount(), kInvalidIndex);
   std::array<uint32_t, kQueueClassCount> submitted{};

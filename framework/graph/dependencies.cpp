@@ -44,6 +44,7 @@ void buildDependencies(const RenderGraph& graph, const VersionTable& versions, c
   const uint32_t passCount = graph.passCount();
   std::vector<Dependency>& found = deps.scratch;
   found.clear();
+  found.reserve(graph.declaration().accesses.size());  // about one edge per read: a fresh compiler grows it once
   deps.firstEdge.assign(passCount + 1, 0);
   forEachDependency(graph, versions, culled, [&](PassId from, PassId to, const ResourceAccess& a) {
     found.push_back({from, to, a.resource, a.stages});

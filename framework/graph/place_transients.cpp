@@ -59,6 +59,9 @@ void sweep(std::span<const TransientLifetime> transients, std::span<const Memory
   unaliasedSize.clear();
   aliasPairs.clear();
   allowances.clear();
+  // Usually one previous occupant and one deferred allowance per transient at most: grown once, not by doubling.
+  aliasPairs.reserve(2 * transients.size());
+  allowances.reserve(transients.size());
   std::size_t ended = 0;
   for (const uint32_t index : byStart) {
     const TransientLifetime& t = transients[index];

@@ -29,6 +29,7 @@ void indexVersions(const RenderGraph& graph, VersionTable& table) {
   table.branches.clear();
   std::vector<VersionTable::Read>& reads = table.scratch;
   reads.clear();
+  reads.reserve(graph.declaration().accesses.size());  // at most one per access: grown once, not by doubling
   table.passKinds.assign(passCount, {});
   for (uint32_t p = 0; p < passCount; ++p) {
     VersionTable::PassKinds& kinds = table.passKinds[p];
