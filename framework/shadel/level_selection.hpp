@@ -28,7 +28,8 @@ struct LevelSelection {
 // minor axis (|det J| / the longer derivative) down to k levels below the
 // longer derivative's (EXT_texture_filter_anisotropic's lambda with max
 // anisotropy 2^k); 0 is the isotropic GL rule. bias: added to the global bias.
-// The default (0, 0) is every object's rule but kUnmipmappedLevelRule's.
+// The default (0, 0) is every object's rule but kUnmipmappedLevelRule's and
+// kResampledTextureLevelRule's.
 struct LevelRule {
   float maxAnisotropyLog2 = 0.0f;
   float bias = 0.0f;
