@@ -19,6 +19,13 @@ bool samplesUnmipmappedTexture(const Scene& scene, int material) {
   return false;
 }
 
+bool samplesTexture(const Scene& scene, int material) {
+  if (material < 0 || static_cast<size_t>(material) >= scene.materials.size()) return false;
+  for (const TextureRef& ref : scene.materials[static_cast<size_t>(material)].textureSlots())
+    if (ref.present() && static_cast<size_t>(ref.texture) < scene.textures.size()) return true;
+  return false;
+}
+
 size_t instancedTriangleCount(const Scene& scene) {
   size_t count = 0;
   for (const Instance& instance : scene.instances)

@@ -47,6 +47,10 @@ size_t instancedTriangleCount(const Scene& scene);
 // LINEAR): minified, it is sampled unfiltered.
 bool samplesUnmipmappedTexture(const Scene& scene, int material);
 
+// Whether `material` (an index into scene.materials; out of range: false)
+// samples any texture.
+bool samplesTexture(const Scene& scene, int material);
+
 // Appends `other` to `into`, re-basing its indices, placing its instances,
 // lights, cameras and root nodes under `transform`, and prefixing its warnings.
 void appendScene(Scene& into, Scene other, const glm::mat4& transform, const std::string& warningPrefix = {});

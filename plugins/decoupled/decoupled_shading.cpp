@@ -41,9 +41,11 @@ gpu::Buffer upload(gpu::Device& device, const std::vector<T>& data, const char* 
 }
 
 // How an object's level follows its footprint (DecoupledFrame::levelRules).
-uint32_t levelRule(const scene::Scene& scene, uint32_t material) {
-  return shadel::packLevelRule(scene::samplesUnmipmappedTexture(scene, int(material)) ? shadel::kUnmipmappedLevelRule
-                                                                                       : shadel::LevelRule{});
+uint32_t levelRule(const scene::Scene& scene, uint32_t material, const PrimitiveChoice& primitive) {
+  if (scene::samplesUnmipmappedTexture(scene, int(material))) return shadel::packLevelRule(shadel::kUnmipmappedLevelRule);
+  if (primitive.automaticChart && scene::samplesTexture(scene, int(material)))
+    return shadel::packLevelRule(shadel::kResampledTextureLevelRule);
+  return shadel::packLevelRule({});
 }
 
 // A material that reads neighbours (support) or its own last value
@@ -124,7 +126,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
       slot.record.world = draw.world;
       slot.record.material = draw.material;
       slot.record.supportChunks = supportRadius(materials, material) > 0 ? 1u : 0u;
-      slot.levelRule = levelRule(in.scene, draw.material);
+      slot.levelRule = levelRule(in.scene, draw.material, primitive);
       slot.unmipmapped = shadel::unmipmappedTexels(in.scene, primitiveMesh(in.scene.meshes[size_t(in.scene.instances[draw.instance].mesh)], draw.primitive));
       slot.materialStack = draw.materialStack;
       slot.changedFrame = frames_;
@@ -222,7 +224,7 @@ void DecoupledShading::syncObjects(const render::FrameContext& ctx) {
     ++allocatedObjects_;
     slot.record = {draw.world, draw.firstIndex, draw.vertexOffset, draw.indexCount / 3, draw.material, offset,
                    uint32_t(primitive.uvSet), primitive.tileOffset, supportRadius(materials, material) > 0 ? 1u : 0u, 0u, 0u, 0u};
-    slot.levelRule = levelRule(in.scene, draw.material);
+    slot.levelRule = levelRule(in.scene, draw.material, primitive);
     slot.unmipmapped = shadel::unmipmappedTexels(in.scene, primitiveMesh(in.scene.meshes[size_t(key.first)], key.second));
   }
 }

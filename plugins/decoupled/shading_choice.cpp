@@ -16,7 +16,13 @@ namespace {
 // The chart verdict of one primitive (alone), after an automatic chart when
 // the object is in mode decoupled and its UVs are no unique chart; may replace
 // the primitive in `scene` by its charted copy.
-scene::ChartVerdict primitiveVerdict(scene::Scene& scene, scene::Mesh& mesh, size_t p, scene::ShadingMode mode) {
+struct PrimitiveVerdict {
+  scene::ChartVerdict chart;
+  bool automaticChart = false;  // chart is the automatic one (PrimitiveChoice::automaticChart)
+};
+
+scene::ChartVerdict chartVerdict(scene::Scene& scene, scene::Mesh& mesh, size_t p, scene::ShadingMode mode,
+                                 bool& automaticChart) {
   const scene::Mesh alone = mesh.primitives.size() == 1 ? scene::Mesh{} : primitiveMesh(mesh, p);
   const scene::Mesh& subject = mesh.primitives.size() == 1 ? mesh : alone;
   scene::ChartVerdict verdict = scene::chooseShadingChart(subject);
@@ -41,12 +47,19 @@ scene::ChartVerdict primitiveVerdict(scene::Scene& scene, scene::Mesh& mesh, siz
     return verdict;
   }
   mesh.primitives[p] = std::move(charted.mesh.primitives[0]);
+  automaticChart = true;
   const std::string refused = verdict.reason;
   verdict = scene::chooseShadingChart(mesh.primitives[p]);
   const std::string still = verdict.unique ? "" : ", not unique either: " + verdict.reason;  // what the chart check found
   verdict.reason = "automatic chart (" + std::to_string(charted.stats.charts) + " charts" +
                    (uneven ? "; " + refused : "") + still + ")";
   return verdict;
+}
+
+PrimitiveVerdict primitiveVerdict(scene::Scene& scene, scene::Mesh& mesh, size_t p, scene::ShadingMode mode) {
+  PrimitiveVerdict result;
+  result.chart = chartVerdict(scene, mesh, p, mode, result.automaticChart);
+  return result;
 }
 
 }  // namespace
@@ -76,7 +89,7 @@ std::string objectReason(const std::vector<PrimitiveChoice>& primitives) {
 
 std::vector<ShadingChoice> chooseShading(scene::Scene& scene, std::optional<scene::ShadingMode> override) {
   std::vector<ShadingChoice> choices;
-  std::map<std::pair<int, size_t>, scene::ChartVerdict> verdicts;  // by mesh and primitive, after any automatic chart
+  std::map<std::pair<int, size_t>, PrimitiveVerdict> verdicts;  // by mesh and primitive, after any automatic chart
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
     auto& instance = scene.instances[i];
     if (override) instance.shading = *override;  // the renderer starts from the instances' modes
@@ -90,7 +103,8 @@ std::vector<ShadingChoice> chooseShading(scene::Scene& scene, std::optional<scen
       if (primitive.reason.empty()) {
         auto it = verdicts.find({instance.mesh, p});
         if (it == verdicts.end()) it = verdicts.emplace(std::pair{instance.mesh, p}, primitiveVerdict(scene, mesh, p, mode)).first;
-        const scene::ChartVerdict& verdict = it->second;
+        const scene::ChartVerdict& verdict = it->second.chart;
+        primitive.automaticChart = it->second.automaticChart && verdict.unique;
         primitive.eligible = verdict.unique;
         primitive.uvSet = verdict.uvSet;
         primitive.tileOffset = verdict.tileOffset;

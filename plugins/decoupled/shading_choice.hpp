@@ -26,6 +26,7 @@ struct PrimitiveChoice {
   std::string reason;     // why forward, or how decoupled ("unique TEXCOORD_0")
   int uvSet = -1;         // shading chart
   glm::vec2 tileOffset{0.0f};
+  bool automaticChart = false;  // uvSet is a chart made for shading (mode decoupled), not the mesh's own UVs
 };
 
 struct ShadingChoice {

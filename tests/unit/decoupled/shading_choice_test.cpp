@@ -107,6 +107,9 @@ TEST(ShadingChoice, DecoupledModeChartsEachPrimitiveWithoutAChart) {
   EXPECT_FALSE(b.scene.meshes[0].primitives[1].uv1.empty()) << "the automatic chart is written to uv1";
   EXPECT_EQ(choices[0].primitives[1].uvSet, 1);
   EXPECT_NE(choices[0].primitives[1].reason.find("automatic chart"), std::string::npos);
+  // Only the charted primitive is shaded in a chart of its own (its level rule, kResampledTextureLevelRule).
+  EXPECT_FALSE(choices[0].primitives[0].automaticChart);
+  EXPECT_TRUE(choices[0].primitives[1].automaticChart);
 }
 
 TEST(ShadingChoice, ForwardByRequestSaysSo) {

@@ -34,6 +34,20 @@ TEST(SceneQueries, SamplesUnmipmappedTextureLooksAtEveryTextureSlotsSampler) {
   EXPECT_FALSE(samplesUnmipmappedTexture(scene, 4));
 }
 
+TEST(SceneQueries, SamplesTextureLooksAtEveryTextureSlot) {
+  Scene scene;
+  scene.textures.resize(1);
+  scene.materials.resize(3);
+  scene.materials[1].baseColorTexture.texture = 0;
+  scene.materials[2].clearcoat = Clearcoat{};
+  scene.materials[2].clearcoat->normalTexture.texture = 0;
+  EXPECT_FALSE(samplesTexture(scene, 0));  // untextured
+  EXPECT_TRUE(samplesTexture(scene, 1));
+  EXPECT_TRUE(samplesTexture(scene, 2));  // an extension's slot counts too
+  EXPECT_FALSE(samplesTexture(scene, -1));
+  EXPECT_FALSE(samplesTexture(scene, 3));
+}
+
 TEST(Triangulate, StripAlternatesWinding) {
   const std::vector<uint32_t> strip{0, 1, 2, 3, 4};
   EXPECT_EQ(toTriangleList(strip, Topology::TriangleStrip), (std::vector<uint32_t>{0, 1, 2, 1, 3, 2, 2, 3, 4}));
