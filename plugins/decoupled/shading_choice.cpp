@@ -21,8 +21,7 @@ struct PrimitiveVerdict {
   bool automaticChart = false;  // chart is the automatic one (PrimitiveChoice::automaticChart)
 };
 
-scene::ChartVerdict chartVerdict(scene::Scene& scene, scene::Mesh& mesh, size_t p, scene::ShadingMode mode,
-                                 bool& automaticChart) {
+PrimitiveVerdict primitiveVerdict(scene::Scene& scene, scene::Mesh& mesh, size_t p, scene::ShadingMode mode) {
   const scene::Mesh alone = mesh.primitives.size() == 1 ? scene::Mesh{} : primitiveMesh(mesh, p);
   const scene::Mesh& subject = mesh.primitives.size() == 1 ? mesh : alone;
   scene::ChartVerdict verdict = scene::chooseShadingChart(subject);
@@ -37,29 +36,22 @@ scene::ChartVerdict chartVerdict(scene::Scene& scene, scene::Mesh& mesh, size_t 
       verdict.reason = "TEXCOORD_" + std::to_string(verdict.uvSet) + " is unique but uneven: " + density.describe();
     }
   }
-  if (verdict.unique || mode != scene::ShadingMode::Decoupled) return verdict;
+  if (verdict.unique || mode != scene::ShadingMode::Decoupled) return {verdict};
   // Gutters measured at the resolution the textures suggest (what level 0 will be near).
   const auto texture = shadel::meshTextureDensity(scene, subject);
   const uint32_t resolution = std::max(texture.resolution > 0 ? std::bit_ceil(texture.resolution) : 0u, 256u);
   auto charted = shadel::autoChartMesh(subject, {.resolution = resolution, .replaceUv1 = true});
   if (!charted.ok()) {
     verdict.reason += "; automatic chart failed: " + charted.error;
-    return verdict;
+    return {verdict};
   }
   mesh.primitives[p] = std::move(charted.mesh.primitives[0]);
-  automaticChart = true;
   const std::string refused = verdict.reason;
   verdict = scene::chooseShadingChart(mesh.primitives[p]);
   const std::string still = verdict.unique ? "" : ", not unique either: " + verdict.reason;  // what the chart check found
   verdict.reason = "automatic chart (" + std::to_string(charted.stats.charts) + " charts" +
                    (uneven ? "; " + refused : "") + still + ")";
-  return verdict;
-}
-
-PrimitiveVerdict primitiveVerdict(scene::Scene& scene, scene::Mesh& mesh, size_t p, scene::ShadingMode mode) {
-  PrimitiveVerdict result;
-  result.chart = chartVerdict(scene, mesh, p, mode, result.automaticChart);
-  return result;
+  return {verdict, true};
 }
 
 }  // namespace
