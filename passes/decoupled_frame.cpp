@@ -9,6 +9,7 @@
 
 #include <shadelgraph/gpu/pass_context.hpp>
 #include <shadelgraph/shadel/level_selection.hpp>
+#include <shadelgraph/shadel/remap_entry.hpp>
 
 namespace sg::passes {
 
@@ -36,7 +37,9 @@ gpu::PipelineLayoutDesc decoupledLayout(std::span<const uint32_t> bindings, bool
   for (uint32_t b : bindings) {
     VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     if (b == kBindFrame || b == kBindParams) type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    if (b == kBindIdMaps || b == kBindVertices || b == kBindIndices) type = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    if (b == kBindIdMaps || b == kBindVertices || b == kBindIndices || b == kBindRemapTexels ||
+        b == kBindShadelMaskTexels)
+      type = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
     if (b == kBindLayerImage)
       type = layerImageStorage ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     layout.bindings.push_back({b, type});
@@ -70,6 +73,15 @@ void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const Decoup
       case kBindIdMaps: writes.push_back({b, gpu::TexelBufferBinding{f.idMaps}}); break;
       case kBindVertices: writes.push_back({b, gpu::TexelBufferBinding{f.view.scene.vertexTexels()}}); break;
       case kBindIndices: writes.push_back({b, gpu::TexelBufferBinding{f.view.scene.indexTexels()}}); break;
+      case kBindRemapTexels:
+        writes.push_back(
+            {b, gpu::TexelBufferBinding{ctx.buffer(f.remap).texelView(ctx.device().context(), VK_FORMAT_R32G32B32A32_UINT,
+                                                                      sizeof(shadel::RemapEntry))}});
+        break;
+      case kBindShadelMaskTexels:
+        writes.push_back({b, gpu::TexelBufferBinding{ctx.buffer(f.masks).texelView(
+                                 ctx.device().context(), VK_FORMAT_R32G32_UINT, sizeof(uint64_t))}});
+        break;
       case kBindLayerImage: {
         const auto& pipelineBindings = pipeline.bindings();
         bool storage = false;

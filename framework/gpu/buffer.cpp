@@ -44,6 +44,13 @@ void Buffer::bindMemory(VkDeviceMemory memory, VkDeviceSize offset) {
   address_ = vkGetBufferDeviceAddress(device_, &addr);
 }
 
+VkBufferView Buffer::texelView(const Context& context, VkFormat format, uint32_t texelBytes) const {
+  for (const auto& [f, view] : views_)
+    if (f == format) return view.handle();
+  views_.emplace_back(format, BufferView(context, buffer_, size_, format, texelBytes, "texel view"));
+  return views_.back().second.handle();
+}
+
 Buffer::~Buffer() { release(); }
 
 Buffer::Buffer(Buffer&& o) noexcept { *this = std::move(o); }
@@ -57,11 +64,13 @@ Buffer& Buffer::operator=(Buffer&& o) noexcept {
     size_ = std::exchange(o.size_, 0);
     address_ = std::exchange(o.address_, 0);
     allocation_ = std::exchange(o.allocation_, Allocation{});
+    views_ = std::exchange(o.views_, {});
   }
   return *this;
 }
 
 void Buffer::release() {
+  views_.clear();
   if (buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
   if (memory_) memory_->free(allocation_);
   buffer_ = VK_NULL_HANDLE;

@@ -2,7 +2,10 @@
 #include <cstring>
 #include <span>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include <shadelgraph/gpu/buffer_view.hpp>
 #include <shadelgraph/gpu/memory.hpp>
 
 namespace sg::gpu {
@@ -40,6 +43,11 @@ class Buffer {
   }
   void write(const void* data, size_t bytes, size_t offset = 0) { std::memcpy(mapped() + offset, data, bytes); }
   explicit operator bool() const { return buffer_ != VK_NULL_HANDLE; }
+  // The whole buffer as texels of `format` (a uniform texel buffer; the
+  // buffer needs VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT and bound memory),
+  // made on first use and kept as long as the buffer: the render graph's
+  // buffers live across frames.
+  VkBufferView texelView(const Context& context, VkFormat format, uint32_t texelBytes) const;
 
  private:
   void create(const Context& context, const BufferDesc& desc);
@@ -50,6 +58,7 @@ class Buffer {
   VkDeviceSize size_ = 0;
   VkDeviceAddress address_ = 0;
   Allocation allocation_;
+  mutable std::vector<std::pair<VkFormat, BufferView>> views_;  // texelView's, destroyed before the buffer
 };
 
 }  // namespace sg::gpu

@@ -12,9 +12,11 @@
 namespace sg::passes {
 namespace {
 constexpr uint32_t kChunkSlotsPerEntry = 64;  // chunk slots per owned entry, one mask each
-constexpr std::array kBindings{kBindFrame, kBindParams, kBindObjects, kBindShadelInstances, kBindLevelRects, kBindRemap};
-constexpr std::array kMaskBindings{kBindFrame,      kBindParams, kBindObjects,     kBindShadelInstances,
-                                   kBindLevelRects, kBindRemap,  kBindShadelMasks};
+constexpr std::array kBindings{kBindFrame,      kBindParams, kBindObjects,     kBindShadelInstances,
+                               kBindLevelRects, kBindRemap,  kBindRemapTexels};
+constexpr std::array kMaskBindings{kBindFrame,      kBindParams,      kBindObjects,     kBindShadelInstances,
+                                   kBindLevelRects, kBindRemap,       kBindRemapTexels, kBindShadelMasks,
+                                   kBindShadelMaskTexels};
 constexpr std::array kNeighbourBindings{kBindParams,       kBindShadelInstances, kBindLevelRects, kBindRemap,
                                         kBindOwnedEntries, kBindShadelMasks,     kBindEntryBlocks};
 }  // namespace
@@ -72,8 +74,13 @@ void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::Reso
   auto& pass = graph.addPass("shadel-mark", graph::QueueClass::Graphics);
   pass.read(depth, graph::Access::DepthRead);
   render::readSceneGeometry(pass, frame.view);
+  // Read through texel views too (shadel_mark.frag), written by atomics.
+  pass.read(frame.remap, graph::Access::Sampled, graph::ShaderStage::Fragment);
   frame.remap = pass.write(frame.remap, graph::Access::StorageReadWrite, graph::ShaderStage::Fragment);
-  if (masks) frame.masks = pass.write(frame.masks, graph::Access::StorageReadWrite, graph::ShaderStage::Fragment);
+  if (masks) {
+    pass.read(frame.masks, graph::Access::Sampled, graph::ShaderStage::Fragment);
+    frame.masks = pass.write(frame.masks, graph::Access::StorageReadWrite, graph::ShaderStage::Fragment);
+  }
   frame.markedFilter = frame.filter;
   // Culled draws (instance count 0 in the frame's draw commands) are skipped.
   pass.execute([indirect = render::readDrawCommands(pass, frame.view).indirect, frame, depth, masks](PassContext& ctx) {

@@ -62,8 +62,28 @@ const bool kMarkCoarse = true;
 layout(location = kMarkLevelsLocation) flat in uvec3 inLevels;  // level0Size, levelCount, firstOwnedEntry
 layout(location = kMarkLevelOriginsLocation) flat in uvec4 inLevelOrigins[kMarkLevelVectors];
 
+// The tables' bits are read through texel views of the buffers the atomics
+// write (a gather on lavapipe, where a storage-buffer read is a loop over the
+// lanes). A read may miss a bit another invocation of this pass has just set
+// (bits are only ever set here): that costs one redundant atomic, never a
+// missing mark.
+layout(set = 0, binding = kBindRemapTexels) uniform usamplerBuffer remapTexels;  // RGBA32UI: .zw the occupancy
+
+// Sets the chunk's bit in its remap entry's occupancy unless it shows set.
+void sgMarkChunk(SgShadelAddress a) {
+  uint64_t bit = sgChunkBit(a.chunkIndex);
+  if ((packUint2x32(texelFetch(remapTexels, int(a.entryIndex)).zw) & bit) == uint64_t(0))
+    atomicOr(remap[a.entryIndex].occupancy, bit);
+}
+
 #ifdef SG_SHADEL_MASKS
 layout(set = 0, binding = kBindShadelMasks, std430) buffer ShadelMasks { uint64_t shadelMasks[]; };
+layout(set = 0, binding = kBindShadelMaskTexels) uniform usamplerBuffer shadelMaskTexels;  // RG32UI
+
+// Sets `bits` of chunk slot `slot`'s shadel mask unless they all show set.
+void sgMarkShadels(uint slot, uint64_t bits) {
+  if ((packUint2x32(texelFetch(shadelMaskTexels, int(slot)).xy) & bits) != bits) atomicOr(shadelMasks[slot], bits);
+}
 
 // The shadels of a chunk in the box [lo, hi] (inclusive, inside [0,8)²):
 // the row's bits times one bit per row of the box (no carries: row < 256).
@@ -83,8 +103,8 @@ void markFootprint(SgMarkLevel level, SgBilinearTaps taps, uvec2 tile) {
   uvec2 inChunk = tile & (SG_CHUNK_SIZE - 1u);
   uvec2 chunkOrigin = tile - inChunk;
   uint64_t bits = sgBoxBits(inChunk, min(inChunk + 1u, uvec2(SG_CHUNK_SIZE - 1u)));
-  uint slot = sgMarkStorageBase(level, chunkOrigin) + sgShadelAddress(chunkOrigin, params.entriesPerSideLog2).chunkIndex;
-  if ((shadelMasks[slot] & bits) != bits) atomicOr(shadelMasks[slot], bits);
+  sgMarkShadels(sgMarkStorageBase(level, chunkOrigin) + sgShadelAddress(chunkOrigin, params.entriesPerSideLog2).chunkIndex,
+                bits);
 }
 #else
 // What composite reads of the tile: the footprint's taps at (tile & 7) +
@@ -123,8 +143,7 @@ void markFootprint(SgMarkLevel level, SgBilinearTaps taps, uvec2 tile) {
     uvec2 step = uvec2(which & 1u, which >> 1u);
     uint64_t bits = which == 0u ? ownBits : which == 1u ? rightBits : which == 2u ? belowBits : uint64_t(1);
     uvec2 origin = chunkOrigin + step * SG_CHUNK_SIZE;
-    uint slot = sgMarkStorageBase(level, origin) + sgShadelAddress(origin, params.entriesPerSideLog2).chunkIndex;
-    if ((shadelMasks[slot] & bits) != bits) atomicOr(shadelMasks[slot], bits);
+    sgMarkShadels(sgMarkStorageBase(level, origin) + sgShadelAddress(origin, params.entriesPerSideLog2).chunkIndex, bits);
   }
 }
 #endif  // SG_MARK_OWN_CHUNK_ONLY
@@ -135,11 +154,9 @@ void markLevel(uint index) {
   SgLevelRect rect = level.rect;
   SgBilinearTaps taps = sgBilinearTaps(inShadingUv, rect.size);
   uvec2 tile = sgFootprintTileShadel(rect, taps);
-  SgShadelAddress a = sgShadelAddress(tile, params.entriesPerSideLog2);
-  uint64_t bit = sgChunkBit(a.chunkIndex);
-  // Read first: most pixels find their chunk already marked, and a plain
-  // read is much cheaper than an atomic.
-  if ((remap[a.entryIndex].occupancy & bit) == uint64_t(0)) atomicOr(remap[a.entryIndex].occupancy, bit);
+  // Read first: most pixels find their chunk already marked, and a read is
+  // much cheaper than an atomic.
+  sgMarkChunk(sgShadelAddress(tile, params.entriesPerSideLog2));
 #ifdef SG_SHADEL_MASKS
   markFootprint(level, taps, tile);
 #endif

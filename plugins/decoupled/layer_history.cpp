@@ -18,7 +18,8 @@ const graph::ResourceState kResting{graph::Layout::General, graph::PipelineStage
 gpu::Buffer& LayerHistory::remap(gpu::Device& device, uint64_t bytes) {
   if (!remap_)
     remap_ = gpu::Buffer(device.context(), device.memory(),
-                         {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryLocation::Device, "remap", "remap",
+                         {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+                          gpu::MemoryLocation::Device, "remap", "remap",
                           /*concurrent: graphics and async compute both use it*/ true});
   return remap_;
 }

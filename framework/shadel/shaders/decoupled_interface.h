@@ -51,6 +51,13 @@ SG_CONST uint kBindObjectVisibility = 36u;
 // (VkDrawIndexedIndirectCommand per draw, a decoupled object's index is its
 // draw's; instance count 0: culled).
 SG_CONST uint kBindCulledDraws = 37u;
+// The remap table (RGBA32UI: storageBase, objectInstanceId, occupancy's low
+// and high word) and the shadel masks (RG32UI) as uniform texel buffers:
+// shadel-mark reads them there before it sets a bit with an atomic on
+// kBindRemap / kBindShadelMasks (on CPU devices a texel fetch is one gather,
+// a storage-buffer read a loop over the lanes).
+SG_CONST uint kBindRemapTexels = 38u;
+SG_CONST uint kBindShadelMaskTexels = 39u;
 // A chunk slot: the physical chunk; kNoSlot: no storage.
 SG_CONST uint kNoSlot = 0xFFFFFFFFu;
 SG_CONST uint kStaleAgeBins = 16u;  // SgShadeCounters.staleAgeChunks: ages 0..14, then 15 or more
