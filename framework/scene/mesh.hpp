@@ -41,6 +41,9 @@ struct Primitive {
   // The closed, outward-wound surface of a solid (closed_surface.hpp): its back
   // faces are hidden from outside. Set by the glTF loader; false: not known.
   bool closedSurface = false;
+  // TEXCOORD_1 is a chart made for decoupled shading (shadel::autoChartMesh),
+  // not the file's: its shadels sample the textures off their texel grid.
+  bool automaticChart = false;
 
   size_t vertexCount() const { return positions.size(); }
   size_t triangleCount() const { return indices.size() / 3; }

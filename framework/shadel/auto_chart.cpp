@@ -82,6 +82,7 @@ AutoChartResult autoChartMesh(const scene::Mesh& mesh, const AutoChartOptions& o
       copySplit(from, attribute, sourceVertex);
     });
     out.uv1 = std::move(uvs);
+    out.automaticChart = true;
     result.stats.verticesIn += source.vertexCount();
     result.stats.verticesOut += out.vertexCount();
     meshTriangle += static_cast<uint32_t>(source.triangleCount());

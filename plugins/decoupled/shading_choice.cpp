@@ -16,12 +16,7 @@ namespace {
 // The chart verdict of one primitive (alone), after an automatic chart when
 // the object is in mode decoupled and its UVs are no unique chart; may replace
 // the primitive in `scene` by its charted copy.
-struct PrimitiveVerdict {
-  scene::ChartVerdict chart;
-  bool automaticChart = false;  // chart is the automatic one (PrimitiveChoice::automaticChart)
-};
-
-PrimitiveVerdict primitiveVerdict(scene::Scene& scene, scene::Mesh& mesh, size_t p, scene::ShadingMode mode) {
+scene::ChartVerdict primitiveVerdict(scene::Scene& scene, scene::Mesh& mesh, size_t p, scene::ShadingMode mode) {
   const scene::Mesh alone = mesh.primitives.size() == 1 ? scene::Mesh{} : primitiveMesh(mesh, p);
   const scene::Mesh& subject = mesh.primitives.size() == 1 ? mesh : alone;
   scene::ChartVerdict verdict = scene::chooseShadingChart(subject);
@@ -36,14 +31,14 @@ PrimitiveVerdict primitiveVerdict(scene::Scene& scene, scene::Mesh& mesh, size_t
       verdict.reason = "TEXCOORD_" + std::to_string(verdict.uvSet) + " is unique but uneven: " + density.describe();
     }
   }
-  if (verdict.unique || mode != scene::ShadingMode::Decoupled) return {verdict};
+  if (verdict.unique || mode != scene::ShadingMode::Decoupled) return verdict;
   // Gutters measured at the resolution the textures suggest (what level 0 will be near).
   const auto texture = shadel::meshTextureDensity(scene, subject);
   const uint32_t resolution = std::max(texture.resolution > 0 ? std::bit_ceil(texture.resolution) : 0u, 256u);
   auto charted = shadel::autoChartMesh(subject, {.resolution = resolution, .replaceUv1 = true});
   if (!charted.ok()) {
     verdict.reason += "; automatic chart failed: " + charted.error;
-    return {verdict};
+    return verdict;
   }
   mesh.primitives[p] = std::move(charted.mesh.primitives[0]);
   const std::string refused = verdict.reason;
@@ -51,7 +46,7 @@ PrimitiveVerdict primitiveVerdict(scene::Scene& scene, scene::Mesh& mesh, size_t
   const std::string still = verdict.unique ? "" : ", not unique either: " + verdict.reason;  // what the chart check found
   verdict.reason = "automatic chart (" + std::to_string(charted.stats.charts) + " charts" +
                    (uneven ? "; " + refused : "") + still + ")";
-  return {verdict, true};
+  return verdict;
 }
 
 }  // namespace
@@ -81,7 +76,7 @@ std::string objectReason(const std::vector<PrimitiveChoice>& primitives) {
 
 std::vector<ShadingChoice> chooseShading(scene::Scene& scene, std::optional<scene::ShadingMode> override) {
   std::vector<ShadingChoice> choices;
-  std::map<std::pair<int, size_t>, PrimitiveVerdict> verdicts;  // by mesh and primitive, after any automatic chart
+  std::map<std::pair<int, size_t>, scene::ChartVerdict> verdicts;  // by mesh and primitive, after any automatic chart
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
     auto& instance = scene.instances[i];
     if (override) instance.shading = *override;  // the renderer starts from the instances' modes
@@ -95,8 +90,10 @@ std::vector<ShadingChoice> chooseShading(scene::Scene& scene, std::optional<scen
       if (primitive.reason.empty()) {
         auto it = verdicts.find({instance.mesh, p});
         if (it == verdicts.end()) it = verdicts.emplace(std::pair{instance.mesh, p}, primitiveVerdict(scene, mesh, p, mode)).first;
-        const scene::ChartVerdict& verdict = it->second.chart;
-        primitive.automaticChart = it->second.automaticChart && verdict.unique;
+        const scene::ChartVerdict& verdict = it->second;
+        // From the primitive, not from this call: a scene chosen for again
+        // (the viewer) already holds the charted copy.
+        primitive.automaticChart = mesh.primitives[p].automaticChart && verdict.unique && verdict.uvSet == 1;
         primitive.eligible = verdict.unique;
         primitive.uvSet = verdict.uvSet;
         primitive.tileOffset = verdict.tileOffset;

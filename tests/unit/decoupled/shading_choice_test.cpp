@@ -110,6 +110,10 @@ TEST(ShadingChoice, DecoupledModeChartsEachPrimitiveWithoutAChart) {
   // Only the charted primitive is shaded in a chart of its own (its level rule, kResampledTextureLevelRule).
   EXPECT_FALSE(choices[0].primitives[0].automaticChart);
   EXPECT_TRUE(choices[0].primitives[1].automaticChart);
+  // Choosing again on the same scene (the viewer does) finds the chart in uv1 and still knows it is automatic.
+  const auto again = chooseShading(b.scene, scene::ShadingMode::Decoupled);
+  EXPECT_FALSE(again[0].primitives[0].automaticChart);
+  EXPECT_TRUE(again[0].primitives[1].automaticChart);
 }
 
 TEST(ShadingChoice, ForwardByRequestSaysSo) {
