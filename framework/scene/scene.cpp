@@ -9,21 +9,29 @@ Bounds worldBounds(const Scene& scene) {
   return bounds;
 }
 
-bool samplesUnmipmappedTexture(const Scene& scene, int material) {
+namespace {
+// Whether a texture `material` samples (a present slot naming one of the
+// scene's textures; material out of range: none) satisfies `test`.
+template <class Test>
+bool anySampledTexture(const Scene& scene, int material, Test test) {
   if (material < 0 || static_cast<size_t>(material) >= scene.materials.size()) return false;
-  for (const TextureRef& ref : scene.materials[static_cast<size_t>(material)].textureSlots()) {
-    if (!ref.present() || static_cast<size_t>(ref.texture) >= scene.textures.size()) continue;
-    const auto sampler = static_cast<size_t>(scene.textures[static_cast<size_t>(ref.texture)].sampler);
-    if (sampler < scene.samplers.size() && scene.samplers[sampler].mipmapMode == MipmapMode::None) return true;
-  }
+  for (const TextureRef& ref : scene.materials[static_cast<size_t>(material)].textureSlots())
+    if (ref.present() && static_cast<size_t>(ref.texture) < scene.textures.size() &&
+        test(scene.textures[static_cast<size_t>(ref.texture)]))
+      return true;
   return false;
+}
+}  // namespace
+
+bool samplesUnmipmappedTexture(const Scene& scene, int material) {
+  return anySampledTexture(scene, material, [&](const Texture& texture) {
+    const auto sampler = static_cast<size_t>(texture.sampler);
+    return sampler < scene.samplers.size() && scene.samplers[sampler].mipmapMode == MipmapMode::None;
+  });
 }
 
 bool samplesTexture(const Scene& scene, int material) {
-  if (material < 0 || static_cast<size_t>(material) >= scene.materials.size()) return false;
-  for (const TextureRef& ref : scene.materials[static_cast<size_t>(material)].textureSlots())
-    if (ref.present() && static_cast<size_t>(ref.texture) < scene.textures.size()) return true;
-  return false;
+  return anySampledTexture(scene, material, [](const Texture&) { return true; });
 }
 
 size_t instancedTriangleCount(const Scene& scene) {
