@@ -143,8 +143,9 @@ uint32_t FreeRanges::take(uint32_t first, uint64_t offset, uint64_t end, std::ve
   const uint32_t f = first;
   const bool lower = blocks_[f].begin < offset;
   QueueMask touched = QueueMask::None, kept = QueueMask::None;
-  std::array<uint32_t, kQueueClassCount> firstHead{};
-  std::array<uint64_t, kQueueClassCount> lastEnd{};
+  // Written for every queue before it is read (kept, touched): not cleared.
+  std::array<uint32_t, kQueueClassCount> firstHead;
+  std::array<uint64_t, kQueueClassCount> lastEnd;
   uint32_t g = f;
   QueueMask before = QueueMask::None;  // the previous taken fragment's queues
   for (uint32_t b = f; b != kNone && blocks_[b].begin < end; b = blocks_[b].next) {
@@ -277,6 +278,7 @@ bool FreeRanges::consistent(uint64_t heapSize) const {
   for (uint32_t i = bottom_; i != kNone; prev = i, i = blocks_[i].next) {
     const Block& b = blocks_[i];
     if (b.prev != prev || b.begin != at || b.end <= b.begin) return false;
+    if (b.used && any(b.queues)) return false;  // freeFor() relies on it
     at = b.end;
     for (uint32_t q = 0; q < kQueueClassCount; ++q) {
       const auto mask = static_cast<QueueMask>(1u << q);

@@ -91,7 +91,9 @@ class FreeRanges {
     std::array<uint32_t, kBins> first{};  // valid where nonEmpty
   };
 
-  bool freeFor(uint32_t b, QueueMask q) const { return b != kNone && !blocks_[b].used && any(blocks_[b].queues & q); }
+  // (A used block has no queues: newBlock() clears them and only free blocks
+  // are given any, so the queues alone tell.)
+  bool freeFor(uint32_t b, QueueMask q) const { return b != kNone && any(blocks_[b].queues & q); }
   uint32_t runHead(uint32_t b, uint32_t queue) const;
   void bin(uint32_t head, uint32_t queue, uint64_t end);
   void unbin(uint32_t head, uint32_t queue);
