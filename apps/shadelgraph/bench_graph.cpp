@@ -5,16 +5,22 @@
 //               a frame loop does, each call a different graph (a full compile);
 //   unchanged - one RenderGraph and PlanCompiler per graph: a frame loop whose
 //               frame did not change (declared again, compared, plan reused).
-// Every round times each (size, mode, graph) once, in an order rotated from
-// round to round, after one untimed warm-up round. Distinct graphs matter: a
-// CPU that compiles one graph back to back learns it (branches, caches), and
-// a small graph then compiles about 1.7x as fast as any frame would see it.
+// Every round times each (size, mode, graph) once, in a shuffled order, after
+// one untimed warm-up round. Distinct graphs matter: a CPU that compiles one
+// graph back to back learns it (branches, caches), and a small graph then
+// compiles about 1.7x as fast as any frame would see it. So the configurations
+// timed one after the other compile different graphs, and each follows every
+// other equally often: in a fixed cyclic order, 100 passes `reused` always
+// followed `fresh` of the same graph and took 0.65x the time of `fresh`, and
+// the other way round when the two swapped places (docs/benchmarks.md).
 #include "bench_graph.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iterator>
+#include <numeric>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -97,16 +103,23 @@ nlohmann::json measureGraphCompile(const GraphBenchArgs& args) {
     runs[s].ownCompilers.resize(args.graphs);
   }
 
-  // (size, mode) configurations, alternated; round 0 is the warm-up.
+  // (size, mode) configurations, alternated; round 0 is the warm-up. Config c
+  // of step g compiles graph (g + c) mod graphs: over the steps each config
+  // compiles every graph once, and the configs of one step compile different
+  // graphs (as long as there are at least as many graphs as configs).
   const std::size_t configs = runs.size() * kModeCount;
+  std::vector<std::size_t> order(configs);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::mt19937 shuffler(2026);  // fixed: every run times the same sequence
   for (uint32_t round = 0; round <= args.repetitions; ++round) {
     for (uint32_t g = 0; g < args.graphs; ++g) {
-      for (std::size_t i = 0; i < configs; ++i) {
-        const std::size_t c = (i + round + g) % configs;
+      std::shuffle(order.begin(), order.end(), shuffler);
+      for (const std::size_t c : order) {
         SizeRun& run = runs[c / kModeCount];
         const Mode mode = kModes[c % kModeCount];
+        const auto graph = static_cast<uint32_t>((g + c) % args.graphs);
         std::size_t kept = 0;
-        const double us = declareAndCompile(run, mode, g, options, kept);
+        const double us = declareAndCompile(run, mode, graph, options, kept);
         if (round == 0 && mode == Mode::Fresh) run.keptPasses += kept;
         if (round > 0) run.microseconds[c % kModeCount].push_back(us);
       }

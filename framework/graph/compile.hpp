@@ -18,7 +18,9 @@ namespace sg::graph {
 
 // Runs the compile steps in turn: validate (throws GraphError with every
 // error), cullPasses, orderPasses, planResources, placeTransients (memory
-// requirements from `options`), planBarriers, assignQueues.
+// requirements from `options`), planBarriers, assignQueues. The steps' scratch
+// memory stays with the calling thread for its next compile() (the size of the
+// largest graph compiled there); only the returned plan is allocated anew.
 CompiledPlan compile(const RenderGraph& graph, const CompileOptions& options = {});
 
 // The same, frame after frame: keeps the plan and every step's output between
