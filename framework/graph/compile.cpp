@@ -57,24 +57,9 @@ void lendTo(std::vector<T>& storage, std::vector<T>& output, Step&& step) {
 }  // namespace
 
 CompiledPlan compile(const RenderGraph& graph, const CompileOptions& options) {
-  // The steps' scratch (version table, dependency graph, placement state, ...)
-  // stays with the thread between one-off compiles, as PlanCompiler keeps it
-  // between frames: only the plan handed back is new memory. A compile nested
-  // in this one (from a memory query callback) gets a compiler of its own.
-  thread_local PlanCompiler scratch(/*keepInputs=*/false);
-  thread_local bool busy = false;
-  if (busy) {
-    PlanCompiler compiler(/*keepInputs=*/false);
-    compiler.compile(graph, options);
-    return compiler.takePlan();
-  }
-  busy = true;
-  struct Release {
-    bool& busy;
-    ~Release() { busy = false; }
-  } release{busy};
-  scratch.compile(graph, options);
-  return scratch.takePlan();
+  PlanCompiler compiler(/*keepInputs=*/false);
+  compiler.compile(graph, options);
+  return compiler.takePlan();
 }
 
 const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const CompileOptions& options) {

@@ -18,9 +18,7 @@ namespace sg::graph {
 
 // Runs the compile steps in turn: validate (throws GraphError with every
 // error), cullPasses, orderPasses, planResources, placeTransients (memory
-// requirements from `options`), planBarriers, assignQueues. The steps' scratch
-// memory stays with the calling thread for its next compile() (the size of the
-// largest graph compiled there); only the returned plan is allocated anew.
+// requirements from `options`), planBarriers, assignQueues.
 CompiledPlan compile(const RenderGraph& graph, const CompileOptions& options = {});
 
 // The same, frame after frame: keeps the plan and every step's output between

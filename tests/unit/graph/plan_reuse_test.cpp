@@ -151,39 +151,5 @@ TEST(PlanReuse, SyntheticGraphsInTurnGiveTheirOwnPlans) {
   }
 }
 
-// compile() keeps its steps' scratch per thread: one-off compiles of graphs
-// of different sizes in turn, after a failed one and from inside a memory
-// query (a nested compile), give what a compiler of their own gives.
-std::string compiledAlone(const RenderGraph& g, const CompileOptions& options) {
-  PlanCompiler own(/*keepInputs=*/false);
-  return toJson(own.compile(g, options));
-}
-
-TEST(PlanReuse, OneOffCompilesShareNothingButMemory) {
-  const CompileOptions options = syntheticCompileOptions();
-  for (const uint32_t passes : {120u, 12u, 60u, 12u}) {
-    RenderGraph g;
-    declare(g, makeSyntheticGraph(passes, passes));
-    EXPECT_EQ(toJson(compile(g, options)), compiledAlone(g, options));
-  }
-  RenderGraph invalid;
-  ResourceHandle img = invalid.createImage("img", colorImage());
-  invalid.addPass("read", QueueClass::Graphics).sideEffect().read(ResourceHandle{img.id, 1}, Access::Sampled);
-  EXPECT_THROW(compile(invalid, extent()), GraphError);
-
-  RenderGraph inner;
-  declare(inner, makeSyntheticGraph(30, 3));
-  std::string nested;
-  CompileOptions querying = extent();
-  querying.queryMemoryRequirements = [&](const ResourceDesc&) {
-    if (nested.empty()) nested = toJson(compile(inner, options));
-    return MemoryRequirements{.size = 1024, .alignment = 64, .memoryTypeBits = 1};
-  };
-  RenderGraph outer;
-  declareFrame(outer, {});
-  EXPECT_EQ(toJson(compile(outer, querying)), compiledAlone(outer, querying));
-  EXPECT_EQ(nested, compiledAlone(inner, options));
-}
-
 }  // namespace
 }  // namespace sg::graph
