@@ -31,12 +31,12 @@ uint bitsSet(uint64_t bits) {
 void main() {
   uint i = sgSpanEntry(64u);
   if (!sgInSpan(i)) return;
-  SgOwnedEntry owned = ownedEntries[i];
-  uint64_t occupancy = remap[owned.entryIndex].occupancy;
   uint base = i * SG_CHUNKS_PER_ENTRY;
-  uint64_t stored = sgStoredMask(i);
 #if SG_PHASE == 1
+  // The slot masks first: most live entries have none, and leave before the remap look-up.
+  uint64_t stored = sgStoredMask(i);
   if (stored == uint64_t(0) && sgFreshMask(i) == uint64_t(0)) return;
+  uint64_t occupancy = remap[ownedEntries[i].entryIndex].occupancy;
   uint64_t freed = stored & ~occupancy;
   sgSetSlotMasks(i, stored & occupancy, uint64_t(0));  // what stays is kept, no longer fresh
   uint count = bitsSet(freed);
@@ -49,8 +49,11 @@ void main() {
     chunkSlots[base + c] = kNoSlot;
   }
 #else
+  SgOwnedEntry owned = ownedEntries[i];
+  uint64_t occupancy = remap[owned.entryIndex].occupancy;
   uint marked = bitsSet(occupancy);
   if (marked == 0u) return;
+  uint64_t stored = sgStoredMask(i);
   atomicAdd(counters.chunksMarked, marked);
   atomicAdd(counters.levelChunks[min(owned.level, kMaxLevels - 1u)], marked);
   uint64_t missing = occupancy & ~stored;

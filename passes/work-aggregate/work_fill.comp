@@ -16,12 +16,12 @@ void main() {
   uint i = sgSpanEntry(64u);
   if (!sgInSpan(i)) return;
   SgOwnedEntry owned = ownedEntries[i];
-  SgRemapEntry entry = remap[owned.entryIndex];
-  uint base = i * SG_CHUNKS_PER_ENTRY;
-  uint64_t candidates = sgReuseCandidates(i, owned, entry.occupancy);
-  uint64_t reused = sgReusedChunks(i, owned, entry.occupancy);
-  uint64_t stored = entry.occupancy & sgStoredMask(i);
+  uint64_t occupancy = remap[owned.entryIndex].occupancy;
+  uint64_t stored = occupancy & sgStoredMask(i);
+  // Most live entries list nothing (an object's levels are mostly unseen): they leave before the reuse look-ups.
   if (stored == uint64_t(0)) return;
+  uint64_t candidates = sgReuseCandidates(i, owned, occupancy);
+  uint64_t reused = sgReusedOf(i, owned, candidates);
   uvec2 halves = unpackUint2x32(stored & ~reused);
   uint count = uint(bitCount(halves.x) + bitCount(halves.y));
   uvec2 reusedHalves = unpackUint2x32(reused);
@@ -31,9 +31,13 @@ void main() {
   uint firstReused = reuseCount > 0u ? work[sgReuseOffsetSlot()] + atomicAdd(work[sgReuseFillSlot()], reuseCount) : 0u;
   bool stamped = params.stampsBound != 0u;
   bool budget = stamped && params.staleAgeLimit != 0u;
+  uint base = i * SG_CHUNKS_PER_ENTRY;
   uint shaded = 0u, copied = 0u, oldest = 0u, refreshed = 0u;
-  for (uint chunk = 0u; chunk < SG_CHUNKS_PER_ENTRY; ++chunk) {
-    if (!sgIsChunkMarked(stored, chunk)) continue;
+  // Over the stored chunks' bits, lowest first (the order a loop over all 64
+  // chunks lists them in): lavapipe runs a loop as many turns as its busiest
+  // lane, so 64 for every entry with anything stored.
+  for (uint64_t left = stored; left != uint64_t(0); left &= left - uint64_t(1)) {
+    uint chunk = sgLowestChunk(left);
     uint physical = chunkSlots[base + chunk];
     if (budget && sgIsChunkMarked(candidates, chunk)) {
       uint age = params.frameNumber - stamps[physical];
