@@ -38,7 +38,7 @@ gpu::PipelineLayoutDesc decoupledLayout(std::span<const uint32_t> bindings, bool
     VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     if (b == kBindFrame || b == kBindParams) type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     if (b == kBindIdMaps || b == kBindVertices || b == kBindIndices || b == kBindRemapTexels ||
-        b == kBindShadelMaskTexels)
+        b == kBindShadelMaskTexels || b == kBindLevelRectTexels || b == kBindChunkSlotTexels)
       type = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
     if (b == kBindLayerImage)
       type = layerImageStorage ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
@@ -77,6 +77,14 @@ void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const Decoup
         writes.push_back(
             {b, gpu::TexelBufferBinding{ctx.buffer(f.remap).texelView(ctx.device().context(), VK_FORMAT_R32G32B32A32_UINT,
                                                                       sizeof(shadel::RemapEntry))}});
+        break;
+      case kBindLevelRectTexels:
+        writes.push_back({b, gpu::TexelBufferBinding{f.levelRects.texelView(
+                                 ctx.device().context(), VK_FORMAT_R32G32B32A32_UINT, sizeof(shadel::LevelRect))}});
+        break;
+      case kBindChunkSlotTexels:
+        writes.push_back({b, gpu::TexelBufferBinding{
+                                 ctx.buffer(f.slots).texelView(ctx.device().context(), VK_FORMAT_R32_UINT, 4)}});
         break;
       case kBindShadelMaskTexels:
         writes.push_back({b, gpu::TexelBufferBinding{ctx.buffer(f.masks).texelView(

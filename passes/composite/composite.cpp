@@ -11,8 +11,9 @@
 
 namespace sg::passes {
 namespace {
-constexpr std::array kBindings{kBindFrame, kBindParams, kBindObjects,  kBindShadelInstances,
-                               kBindLevelRects, kBindRemap, kBindChunkSlots, kBindCounters, kBindLayerImage};
+constexpr std::array kBindings{kBindFrame,           kBindParams,      kBindObjects,         kBindShadelInstances,
+                               kBindLevelRectTexels, kBindRemapTexels, kBindChunkSlotTexels, kBindCounters,
+                               kBindLayerImage};
 }  // namespace
 
 gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView, bool alphaTest, VkDescriptorSetLayout materialSet,
@@ -48,8 +49,9 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
   auto& pass = graph.addPass("composite", graph::QueueClass::Graphics);
   if (!clear) pass.read(color, graph::Access::ColorAttachmentRead);
   pass.read(depth, graph::Access::DepthRead);
-  pass.read(frame.remap, graph::Access::StorageRead);
-  pass.read(frame.slots, graph::Access::StorageRead);
+  // Both through texel views (composite.frag).
+  pass.read(frame.remap, graph::Access::Sampled, graph::ShaderStage::Fragment);
+  pass.read(frame.slots, graph::Access::Sampled, graph::ShaderStage::Fragment);
   pass.read(frame.shadedColor, graph::Access::Sampled);
   render::readSceneGeometry(pass, frame.view);
   frame.counters = pass.write(frame.counters, graph::Access::StorageReadWrite);  // misses

@@ -29,15 +29,32 @@ layout(location = 3) in float inColorAlpha;
 #endif
 const uint kFilter = SG_FILTER;
 
+layout(location = 4) flat in uvec3 inLevels;  // level0Size, levelCount, firstLevelRect
+
+// The tables read through texel views (a gather on lavapipe, where a
+// storage-buffer read is a loop over the lanes).
+layout(set = 0, binding = kBindLevelRectTexels) uniform usamplerBuffer levelRectTexels;  // RGBA32UI: SgLevelRect
+layout(set = 0, binding = kBindRemapTexels) uniform usamplerBuffer remapTexels;          // RGBA32UI: SgRemapEntry
+layout(set = 0, binding = kBindChunkSlotTexels) uniform usamplerBuffer chunkSlotTexels;  // R32UI
+
+// sgStoredChunk, its reads through the texel views.
+uint storedChunk(SgShadelAddress a) {
+  uvec4 t = texelFetch(remapTexels, int(a.entryIndex));
+  SgRemapEntry entry = SgRemapEntry(t.x, t.y, packUint2x32(t.zw));
+  if (!sgChunkHasSlot(entry, a.chunkIndex)) return SG_INVALID_CHUNK;
+  return sgSlotChunk(texelFetch(chunkSlotTexels, int(entry.storageBase + a.chunkIndex)).x);
+}
+
 // The level's footprint is in one chunk tile of shade storage (the chunk and
 // its one-shadel gutter): the tile of the top-left tap, the chunk shadel-mark
 // marked. One remap lookup per level.
 vec4 filterLevel(uint level) {
-  SgLevelRect rect = sgLevelRect(object.objectId, level);
+  uvec4 r = texelFetch(levelRectTexels, int(inLevels.z + level));
+  SgLevelRect rect = SgLevelRect(r.xy, r.z, r.w);
   SgBilinearTaps taps = sgBilinearTaps(inShadingUv, rect.size);
   uvec2 shadel = sgFootprintTileShadel(rect, taps);
   SgShadelAddress a = sgShadelAddress(shadel, params.entriesPerSideLog2);
-  uint physical = sgStoredChunk(remap[a.entryIndex], a.chunkIndex);
+  uint physical = storedChunk(a);
   if (physical == SG_INVALID_CHUNK) {
     atomicAdd(counters.compositeMisses, 1u);
     return vec4(1.0, 0.0, 1.0, 1.0);  // magenta: visible if it ever happens
@@ -50,11 +67,9 @@ vec4 filterLevel(uint level) {
 }
 
 void main() {
-  SgShadelInstance instance = shadelInstances[object.objectId];
-  float size0 = float(instance.level0Size);
+  float size0 = float(inLevels.x);
   SgLevelSelection sel =
-      sgSelectFilterLevel(SG_FILTER, dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0, params.bias,
-                          instance.levelCount);
+      sgSelectFilterLevel(SG_FILTER, dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0, params.bias, inLevels.y);
 #ifdef SG_ALPHA_TEST
   if (sgMaskedOut(inUv0, inUv1, inColorAlpha)) discard;  // after the derivatives: uniform control flow for them
 #endif

@@ -63,8 +63,8 @@ void ChunkSlots::prepare(gpu::Device& device, gpu::GraphExecutor& executor, uint
   if (!buffer_ || buffer_.size() != bytes)
     buffer_ = gpu::Buffer(device.context(), device.memory(),
                           {bytes,
-                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
-                               VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
+                               VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,  // texels: composite
                            gpu::MemoryLocation::Device, "chunk slots", "remap", /*concurrent*/ true});
   if (carried.empty()) {
     // Start over on the host (a frame may be planned and never run, so the reset cannot wait for one):

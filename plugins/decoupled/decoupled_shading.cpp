@@ -262,7 +262,7 @@ void DecoupledShading::uploadTables(gpu::Device& device) {
   // Earlier frames have completed (the executor waits for each), so the old tables are free.
   for (auto& buffer : objects_) buffer = upload(device, objects, "decoupled objects");
   shadelInstances_ = upload(device, tables.instances, "shadel instances");
-  levelRects_ = upload(device, tables.levelRects, "level rects");
+  levelRects_ = upload(device, tables.levelRects, "level rects", VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
   ownedEntries_ = upload(device, tables.ownedEntries, "owned remap entries");
   chunkSlots_.setOwnedEntries(tables.ownedEntries);  // the chunk slots follow the owned entries
   idMapTexels_ = {};  // before the buffer it views

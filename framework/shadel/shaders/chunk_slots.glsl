@@ -41,11 +41,17 @@ uint sgLowestChunk(uint64_t bits) {
   return halves.x != 0u ? uint(findLSB(halves.x)) : 32u + uint(findLSB(halves.y));
 }
 
+// Whether the chunk can have a slot: it is marked and its entry has storage
+// (its slot is then chunkSlots[entry.storageBase + chunkIndex]).
+bool sgChunkHasSlot(SgRemapEntry entry, uint chunkIndex) {
+  return sgIsChunkMarked(entry.occupancy, chunkIndex) && entry.storageBase != SG_NO_STORAGE;
+}
+uint sgSlotChunk(uint slot) { return slot == kNoSlot ? SG_INVALID_CHUNK : slot; }
+
 // The physical chunk of a marked chunk, SG_INVALID_CHUNK when it is not marked or has no storage.
 uint sgStoredChunk(SgRemapEntry entry, uint chunkIndex) {
-  if (!sgIsChunkMarked(entry.occupancy, chunkIndex) || entry.storageBase == SG_NO_STORAGE) return SG_INVALID_CHUNK;
-  uint slot = chunkSlots[entry.storageBase + chunkIndex];
-  return slot == kNoSlot ? SG_INVALID_CHUNK : slot;
+  if (!sgChunkHasSlot(entry, chunkIndex)) return SG_INVALID_CHUNK;
+  return sgSlotChunk(chunkSlots[entry.storageBase + chunkIndex]);
 }
 
 // The marked chunks of owned entry `ownedIndex` stored last frame too, at the same place.

@@ -58,6 +58,10 @@ SG_CONST uint kBindCulledDraws = 37u;
 // a storage-buffer read a loop over the lanes).
 SG_CONST uint kBindRemapTexels = 38u;
 SG_CONST uint kBindShadelMaskTexels = 39u;
+// Composite's reads as uniform texel buffers, for the same reason: the level
+// rectangles (RGBA32UI, SgLevelRect) and the chunk slots (R32UI).
+SG_CONST uint kBindLevelRectTexels = 44u;  // 40..43, 48, 49: frame_interface.h
+SG_CONST uint kBindChunkSlotTexels = 45u;
 // A chunk slot: the physical chunk; kNoSlot: no storage.
 SG_CONST uint kNoSlot = 0xFFFFFFFFu;
 SG_CONST uint kStaleAgeBins = 16u;  // SgShadeCounters.staleAgeChunks: ages 0..14, then 15 or more
