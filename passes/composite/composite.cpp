@@ -16,10 +16,20 @@ constexpr std::array kBindings{kBindFrame,           kBindParams,      kBindObje
                                kBindLayerImage};
 }  // namespace
 
+bool countsPerSubgroup(VkPhysicalDevice physicalDevice) {
+  VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+  VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES, &subgroup};
+  VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &driver};
+  vkGetPhysicalDeviceProperties2(physicalDevice, &properties);
+  return driver.driverID == VK_DRIVER_ID_MESA_LLVMPIPE && (subgroup.supportedStages & VK_SHADER_STAGE_FRAGMENT_BIT) &&
+         (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_BALLOT_BIT);
+}
+
 gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView, bool alphaTest, VkDescriptorSetLayout materialSet,
-                                            uint32_t levelRule) {
+                                            uint32_t levelRule, bool countPerSubgroup) {
   std::vector<std::pair<std::string, std::string>> defines{filterDefine(filter)};
   if (levelView) defines.emplace_back("SG_VIEW_LEVEL", "1");
+  if (countPerSubgroup) defines.emplace_back("SG_COUNT_PER_SUBGROUP", "1");
   for (auto& define : levelRuleDefines(levelRule)) defines.push_back(std::move(define));
   std::vector<std::pair<std::string, std::string>> vertexDefines;
   if (alphaTest) {
@@ -65,7 +75,7 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
                                   (alphaTest ? "/alpha-test" : "") + levelRuleVariant(levelRule);
       return ctx.device().pipeline("composite/" + variant, [&] {
         return compositePipeline(frame.filter, frame.levelView, alphaTest, frame.view.scene.materialSetLayout(),
-                                 levelRule);
+                                 levelRule, countsPerSubgroup(ctx.device().context().physicalDevice()));
       });
     });
     ctx.endRendering();

@@ -1,4 +1,7 @@
 #version 460
+#ifdef SG_COUNT_PER_SUBGROUP
+#extension GL_KHR_shader_subgroup_ballot : require
+#endif
 // Filters the shaded samples: the same level selection as shadel-mark
 // (sgSelectFilterLevel: the nearest level for point and bilinear, fine and
 // coarse for trilinear), then the filter's taps from one chunk tile per
@@ -66,6 +69,21 @@ vec4 filterLevel(uint level) {
   return mix(mix(c00, c10, taps.weight.x), mix(c01, c11, taps.weight.x), taps.weight.y);
 }
 
+// Covered pixels (a statistic). SG_COUNT_PER_SUBGROUP (compositePipeline:
+// lavapipe) adds them per subgroup: there every atomic is a loop over the
+// lanes with a locked add per lane, on a cache line both rasterizer threads
+// write (a third of composite's time on DamagedHelmet), and uncovered
+// (helper) lanes stay out of subgroup operations. Elsewhere helper lanes may
+// take part: each pixel adds itself (a helper's atomic is dropped).
+void countCoveredPixel() {
+#ifdef SG_COUNT_PER_SUBGROUP
+  uint covered = subgroupBallotBitCount(subgroupBallot(true));
+  if (subgroupElect()) atomicAdd(counters.coveredPixels, covered);
+#else
+  atomicAdd(counters.coveredPixels, 1u);
+#endif
+}
+
 void main() {
   float size0 = float(inLevels.x);
   SgLevelSelection sel =
@@ -73,7 +91,7 @@ void main() {
 #ifdef SG_ALPHA_TEST
   if (sgMaskedOut(inUv0, inUv1, inColorAlpha)) discard;  // after the derivatives: uniform control flow for them
 #endif
-  atomicAdd(counters.coveredPixels, 1u);
+  countCoveredPixel();
 #ifdef SG_VIEW_LEVEL
   // --view level: the detail level the pixel reads (fractional: fine + blend), shaded lightly.
   vec4 shaded = filterLevel(sel.fine);

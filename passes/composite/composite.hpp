@@ -14,8 +14,14 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
 // filter: 0 point, 1 bilinear, 2 trilinear; levelView shows the detail level
 // instead; alphaTest: the variant for alpha-mask objects, `materialSet` (the
 // scene material) its set 1; levelRule: the variant for objects with that
-// level rule (shadel::packLevelRule; 0 none), as shadel-mark's.
+// level rule (shadel::packLevelRule; 0 none), as shadel-mark's;
+// countPerSubgroup: count the statistics per subgroup (countsPerSubgroup).
 gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView, bool alphaTest = false,
-                                            VkDescriptorSetLayout materialSet = VK_NULL_HANDLE, uint32_t levelRule = 0);
+                                            VkDescriptorSetLayout materialSet = VK_NULL_HANDLE, uint32_t levelRule = 0,
+                                            bool countPerSubgroup = false);
+// Whether composite counts its statistics per subgroup on this device:
+// lavapipe, whose fragment shaders leave uncovered (helper) lanes out of
+// subgroup operations (it has no gl_HelperInvocation to tell them apart).
+bool countsPerSubgroup(VkPhysicalDevice physicalDevice);
 
 }  // namespace sg::passes
