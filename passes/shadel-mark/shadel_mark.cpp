@@ -12,11 +12,11 @@
 namespace sg::passes {
 namespace {
 constexpr uint32_t kChunkSlotsPerEntry = 64;  // chunk slots per owned entry, one mask each
-constexpr std::array kBindings{kBindFrame,      kBindParams, kBindObjects,     kBindShadelInstances,
-                               kBindLevelRects, kBindRemap,  kBindRemapTexels};
-constexpr std::array kMaskBindings{kBindFrame,      kBindParams,      kBindObjects,     kBindShadelInstances,
-                                   kBindLevelRects, kBindRemap,       kBindRemapTexels, kBindShadelMasks,
-                                   kBindShadelMaskTexels};
+constexpr std::array kBindings{kBindFrame,       kBindParams,      kBindObjects,        kBindShadelInstances,
+                               kBindLevelRects,  kBindRemap,       kBindRemapTexels,    kBindLevelRectTexels};
+constexpr std::array kMaskBindings{kBindFrame,       kBindParams,      kBindObjects,        kBindShadelInstances,
+                                   kBindLevelRects,  kBindRemap,       kBindRemapTexels,    kBindLevelRectTexels,
+                                   kBindShadelMasks, kBindShadelMaskTexels};
 constexpr std::array kNeighbourBindings{kBindParams,       kBindShadelInstances, kBindLevelRects, kBindRemap,
                                         kBindOwnedEntries, kBindShadelMasks,     kBindEntryBlocks};
 }  // namespace

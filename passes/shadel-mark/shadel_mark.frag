@@ -18,7 +18,8 @@
 // Cost on lavapipe: every buffer read or atomic in a fragment shader is a
 // loop over the 8 lanes, whether or not a lane takes its branch (an `if` is
 // only a mask). So the shader keeps few of them in its code: the levels come
-// flat from the vertex shader, and the chunks a footprint touches are marked
+// flat from the vertex shader, a level's rectangle through a texel view (a
+// gather), and the chunks a footprint touches are marked
 // in one loop that runs as often as the lane with the most chunks needs.
 #include <framework/render/shaders/object.glsl>
 #include <framework/shadel/shaders/decoupled.glsl>
@@ -59,8 +60,8 @@ void markLevel(uint level) {
 
 const bool kMarkCoarse = true;
 #else
-layout(location = kMarkLevelsLocation) flat in uvec3 inLevels;  // level0Size, levelCount, firstOwnedEntry
-layout(location = kMarkLevelOriginsLocation) flat in uvec4 inLevelOrigins[kMarkLevelVectors];
+layout(location = kMarkLevelsLocation) flat in uvec4 inLevels;  // level0Size, levelCount, firstOwnedEntry, firstLevelRect
+layout(set = 0, binding = kBindLevelRectTexels) uniform usamplerBuffer levelRectTexels;  // RGBA32UI: SgLevelRect
 
 // The tables' bits are read through texel views of the buffers the atomics
 // write (a gather on lavapipe, where a storage-buffer read is a loop over the
@@ -150,7 +151,8 @@ void markFootprint(SgMarkLevel level, SgBilinearTaps taps, uvec2 tile) {
 #endif  // SG_SHADEL_MASKS
 
 void markLevel(uint index) {
-  SgMarkLevel level = sgUnpackMarkLevel(inLevelOrigins, inLevels, index);
+  uvec4 r = texelFetch(levelRectTexels, int(inLevels.w + index));
+  SgMarkLevel level = sgMarkLevel(inLevels, index, SgLevelRect(r.xy, r.z, r.w));
   SgLevelRect rect = level.rect;
   SgBilinearTaps taps = sgBilinearTaps(inShadingUv, rect.size);
   uvec2 tile = sgFootprintTileShadel(rect, taps);

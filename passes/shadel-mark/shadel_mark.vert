@@ -2,8 +2,8 @@
 // Decoupled objects again, for their shading UVs; same `precise` position
 // math as the z-prepass so the depth test finds exactly its depths.
 // Also the object's detail levels, flat: the fragment shader would otherwise
-// read them per pixel, and on lavapipe every buffer read in a fragment shader
-// is a loop over the 8 lanes (shadel_mark_levels.glsl).
+// read them per pixel, and on lavapipe every storage-buffer read in a
+// fragment shader is a loop over the 8 lanes (shadel_mark_levels.glsl).
 #define SG_VERTEX_SHADER
 #include <framework/render/shaders/frame.glsl>
 #include <framework/render/shaders/object.glsl>
@@ -17,8 +17,7 @@ layout(location = 2) out vec2 outUv1;
 layout(location = 3) out float outColorAlpha;
 #endif
 #ifndef SG_MARK_BASELINE
-layout(location = kMarkLevelsLocation) flat out uvec3 outLevels;
-layout(location = kMarkLevelOriginsLocation) flat out uvec4 outLevelOrigins[kMarkLevelVectors];
+layout(location = kMarkLevelsLocation) flat out uvec4 outLevels;
 #endif
 
 void main() {
@@ -34,14 +33,6 @@ void main() {
 #endif
 #ifndef SG_MARK_BASELINE
   SgShadelInstance instance = shadelInstances[object.objectId];
-  outLevels = uvec3(instance.level0Size, instance.levelCount, instance.firstOwnedEntry);
-  for (uint v = 0u; v < kMarkLevelVectors; ++v) {
-    uvec4 packed = uvec4(0u);
-    for (uint c = 0u; c < 4u; ++c) {
-      uint level = 4u * v + c;
-      if (level < instance.levelCount) packed[c] = sgPackMarkOrigin(levelRects[instance.firstLevelRect + level].origin);
-    }
-    outLevelOrigins[v] = packed;
-  }
+  outLevels = uvec4(instance.level0Size, instance.levelCount, instance.firstOwnedEntry, instance.firstLevelRect);
 #endif
 }

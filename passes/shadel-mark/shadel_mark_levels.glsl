@@ -1,37 +1,28 @@
 // An object's detail levels as shadel-mark's vertex shader hands them to its
-// fragment shader (flat), so the fragment shader reads no table for them:
-// level 0's size, the level count and the instance's first owned entry; per
-// level its origin in remap entries, packed x | y << 13 (a level's origin is
-// a multiple of SG_ENTRY_SIZE in a sheet of at most 2^19 shadels a side). The
-// rest follows from level 0's size (sg::shadel::DetailLevels, ShadelSpace):
-// a level is level0Size >> level shadels a side and owns a square of
-// max(size / SG_ENTRY_SIZE, 1) entries a side, listed level by level,
-// row-major (sg::shadel::buildGpuTables).
+// fragment shader (flat, four words, so the fragment shader reads no table
+// for them and the rasterizer sets up few inputs per triangle): level 0's
+// size, the level count, the instance's first owned entry and its first level
+// rectangle. A level's rectangle the fragment shader reads through a texel
+// view (one gather for the level it marks). The rest follows from level 0's
+// size (sg::shadel::DetailLevels, ShadelSpace): a level is level0Size >> level
+// shadels a side and owns a square of max(size / SG_ENTRY_SIZE, 1) entries a
+// side, listed level by level, row-major (sg::shadel::buildGpuTables).
 #ifndef SG_SHADEL_MARK_LEVELS_GLSL
 #define SG_SHADEL_MARK_LEVELS_GLSL
 
-const uint kMarkLevelsLocation = 4u;                 // after the alpha test's inputs
-const uint kMarkLevelVectors = kMaxLevels / 4u;      // four levels per uvec4
-const uint kMarkLevelOriginsLocation = kMarkLevelsLocation + 1u;
-
-uint sgPackMarkOrigin(uvec2 origin) {
-  uvec2 entry = origin >> SG_ENTRY_SIZE_LOG2;
-  return entry.x | (entry.y << 13u);
-}
+const uint kMarkLevelsLocation = 4u;  // after the alpha test's inputs
 
 struct SgMarkLevel {
-  SgLevelRect rect;  // allocatedSize left 0: not needed here
+  SgLevelRect rect;
   uint sideLog2;     // of the level's owned square, in entries
   uint firstOwned;   // owned-entry index of the level's first entry
 };
 
-// levels: level0Size, levelCount, the instance's firstOwnedEntry.
-SgMarkLevel sgUnpackMarkLevel(uvec4 origins[kMarkLevelVectors], uvec3 levels, uint level) {
-  uint word = origins[level >> 2u][level & 3u];
+// levels: level0Size, levelCount, the instance's firstOwnedEntry (and its
+// firstLevelRect, not read here); rect: the level's rectangle.
+SgMarkLevel sgMarkLevel(uvec4 levels, uint level, SgLevelRect rect) {
   SgMarkLevel l;
-  l.rect.origin = uvec2(word & 0x1FFFu, word >> 13u) << SG_ENTRY_SIZE_LOG2;
-  l.rect.size = levels.x >> level;
-  l.rect.allocatedSize = 0u;
+  l.rect = rect;
   // Levels above 1 entry: level l' has 4^(k - l') entries while l' < k
   // (k = log2(level0Size / SG_ENTRY_SIZE)), then 1 each.
   int k = max(findMSB(levels.x) - int(SG_ENTRY_SIZE_LOG2), 0);

@@ -26,9 +26,9 @@ namespace {
 constexpr const char* kShaderPath = "tests/shadel/mark_levels.comp";
 
 // Per case (instance, level, shadel offset in the level): the instance's
-// levels packed as shadel-mark's vertex shader packs them, unpacked as its
-// fragment shader does; out: the rectangle's origin and size and the mask
-// slot base of the shadel's entry.
+// levels as shadel-mark's vertex shader hands them on, the level as its
+// fragment shader derives it; out: the rectangle's origin and size and the
+// mask slot base of the shadel's entry.
 constexpr const char* kShader = R"(#version 460
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #include "framework/shadel/shaders/decoupled_interface.h"
@@ -45,13 +45,8 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= count) return;
   SgShadelInstance instance = instances[cases[i].x];
-  uvec4 origins[kMarkLevelVectors];
-  for (uint v = 0u; v < kMarkLevelVectors; ++v)
-    for (uint c = 0u; c < 4u; ++c) {
-      uint level = 4u * v + c;
-      origins[v][c] = level < instance.levelCount ? sgPackMarkOrigin(levelRects[instance.firstLevelRect + level].origin) : 0u;
-    }
-  SgMarkLevel level = sgUnpackMarkLevel(origins, uvec3(instance.level0Size, instance.levelCount, instance.firstOwnedEntry), cases[i].y);
+  uvec4 levels = uvec4(instance.level0Size, instance.levelCount, instance.firstOwnedEntry, instance.firstLevelRect);
+  SgMarkLevel level = sgMarkLevel(levels, cases[i].y, levelRects[levels.w + cases[i].y]);
   uvec2 shadel = level.rect.origin + cases[i].zw;
   results[i] = uvec4(level.rect.origin, level.rect.size, sgMarkStorageBase(level, shadel));
 }
