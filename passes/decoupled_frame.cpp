@@ -38,7 +38,8 @@ gpu::PipelineLayoutDesc decoupledLayout(std::span<const uint32_t> bindings, bool
     VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     if (b == kBindFrame || b == kBindParams) type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     if (b == kBindIdMaps || b == kBindVertices || b == kBindIndices || b == kBindRemapTexels ||
-        b == kBindShadelMaskTexels || b == kBindLevelRectTexels || b == kBindChunkSlotTexels)
+        b == kBindShadelMaskTexels || b == kBindShadelMaskPairTexels || b == kBindLevelRectTexels ||
+        b == kBindChunkSlotTexels)
       type = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
     if (b == kBindLayerImage)
       type = layerImageStorage ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
@@ -89,6 +90,10 @@ void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const Decoup
       case kBindShadelMaskTexels:
         writes.push_back({b, gpu::TexelBufferBinding{ctx.buffer(f.masks).texelView(
                                  ctx.device().context(), VK_FORMAT_R32G32_UINT, sizeof(uint64_t))}});
+        break;
+      case kBindShadelMaskPairTexels:
+        writes.push_back({b, gpu::TexelBufferBinding{ctx.buffer(f.masks).texelView(
+                                 ctx.device().context(), VK_FORMAT_R32G32B32A32_UINT, 2 * sizeof(uint64_t))}});
         break;
       case kBindLayerImage: {
         const auto& pipelineBindings = pipeline.bindings();

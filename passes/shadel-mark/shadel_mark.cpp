@@ -17,8 +17,18 @@ constexpr std::array kBindings{kBindFrame,       kBindParams,      kBindObjects,
 constexpr std::array kMaskBindings{kBindFrame,       kBindParams,      kBindObjects,        kBindShadelInstances,
                                    kBindLevelRects,  kBindRemap,       kBindRemapTexels,    kBindLevelRectTexels,
                                    kBindShadelMasks, kBindShadelMaskTexels};
-constexpr std::array kNeighbourBindings{kBindParams,       kBindShadelInstances, kBindLevelRects, kBindRemap,
-                                        kBindOwnedEntries, kBindShadelMasks,     kBindEntryBlocks};
+// Marking the own chunk's mask only, the fragment shader leaves the remap
+// entry (its occupancy) to shadel-mark-neighbours.
+constexpr std::array kOwnChunkBindings{kBindFrame,           kBindParams,      kBindObjects, kBindShadelInstances,
+                                       kBindLevelRectTexels, kBindShadelMasks, kBindShadelMaskTexels};
+constexpr std::array kNeighbourBindings{kBindParams,       kBindShadelInstances, kBindLevelRects,
+                                        kBindRemap,        kBindOwnedEntries,    kBindShadelMasks,
+                                        kBindShadelMaskPairTexels, kBindEntryBlocks};
+
+std::span<const uint32_t> markBindings(bool shadelMasks, bool ownChunkOnly) {
+  if (ownChunkOnly) return kOwnChunkBindings;
+  return shadelMasks ? std::span<const uint32_t>(kMaskBindings) : kBindings;
+}
 }  // namespace
 
 bool markOwnChunkOnly(int filter, bool shadelMasks) { return shadelMasks && filter != 0; }
@@ -35,7 +45,7 @@ gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline, bool alp
   if (shadelMasks) defines.emplace_back("SG_SHADEL_MASKS", "1");
   if (markOwnChunkOnly(filter, shadelMasks)) defines.emplace_back("SG_MARK_OWN_CHUNK_ONLY", "1");
   for (auto& define : levelRuleDefines(levelRule)) defines.push_back(std::move(define));
-  const std::span<const uint32_t> bindings = shadelMasks ? std::span<const uint32_t>(kMaskBindings) : kBindings;
+  const std::span<const uint32_t> bindings = markBindings(shadelMasks, markOwnChunkOnly(filter, shadelMasks));
   std::vector<std::pair<std::string, std::string>> vertexDefines;
   if (baseline) vertexDefines.emplace_back("SG_MARK_BASELINE", "1");  // the baseline reads its levels itself
   if (alphaTest) {
@@ -74,18 +84,23 @@ void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::Reso
   auto& pass = graph.addPass("shadel-mark", graph::QueueClass::Graphics);
   pass.read(depth, graph::Access::DepthRead);
   render::readSceneGeometry(pass, frame.view);
-  // Read through texel views too (shadel_mark.frag), written by atomics.
-  pass.read(frame.remap, graph::Access::Sampled, graph::ShaderStage::Fragment);
-  frame.remap = pass.write(frame.remap, graph::Access::StorageReadWrite, graph::ShaderStage::Fragment);
+  // Read through texel views too (shadel_mark.frag), written by atomics;
+  // marking the own chunk only, it leaves the occupancy to the neighbours step.
+  const bool ownChunkOnly = markOwnChunkOnly(frame.filter, masks);
+  if (!ownChunkOnly) {
+    pass.read(frame.remap, graph::Access::Sampled, graph::ShaderStage::Fragment);
+    frame.remap = pass.write(frame.remap, graph::Access::StorageReadWrite, graph::ShaderStage::Fragment);
+  }
   if (masks) {
     pass.read(frame.masks, graph::Access::Sampled, graph::ShaderStage::Fragment);
     frame.masks = pass.write(frame.masks, graph::Access::StorageReadWrite, graph::ShaderStage::Fragment);
   }
   frame.markedFilter = frame.filter;
   // Culled draws (instance count 0 in the frame's draw commands) are skipped.
-  pass.execute([indirect = render::readDrawCommands(pass, frame.view).indirect, frame, depth, masks](PassContext& ctx) {
+  pass.execute([indirect = render::readDrawCommands(pass, frame.view).indirect, frame, depth, masks,
+                ownChunkOnly](PassContext& ctx) {
     ctx.beginRendering({}, DepthTarget{depth, {}, true}, true);
-    const std::span<const uint32_t> bindings = masks ? std::span<const uint32_t>(kMaskBindings) : kBindings;
+    const std::span<const uint32_t> bindings = markBindings(masks, ownChunkOnly);
     drawDecoupled(ctx, frame, bindings, indirect, [&](bool alphaTest, uint32_t levelRule) -> const gpu::Pipeline& {
       const std::string variant = std::to_string(frame.filter) + (frame.baseline ? "/baseline" : "") +
                                   (alphaTest ? "/alpha-test" : "") + (masks ? "/masks" : "") +
@@ -97,10 +112,11 @@ void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::Reso
     });
     ctx.endRendering();
   });
-  if (!markOwnChunkOnly(frame.filter, masks)) return;
-  // The gutters' shadels in the neighbours of the marked chunks.
+  if (!ownChunkOnly) return;
+  // The marked chunks' occupancy bits, and the gutters' shadels in the neighbours of the marked chunks.
   auto& neighbours = graph.addPass("shadel-mark-neighbours", graph::QueueClass::Graphics, graph::PassKind::Compute);
-  neighbours.read(frame.remap, graph::Access::StorageRead);
+  frame.remap = neighbours.write(frame.remap, graph::Access::StorageReadWrite);
+  neighbours.read(frame.masks, graph::Access::Sampled);
   frame.masks = neighbours.write(frame.masks, graph::Access::StorageReadWrite);
   readEntryBlocks(neighbours, frame);
   neighbours.execute([frame](PassContext& ctx) {

@@ -9,9 +9,10 @@
 // reads (layer-shade shades only those), and of each neighbour chunk whose
 // first row or column fills the tile's gutter.
 // With SG_MARK_OWN_CHUNK_ONLY (masks, bilinear or trilinear) it sets only
-// the mask of the footprint's own chunk: what the neighbours' first column /
-// row give the gutter follows from the masks in a compute step after the
-// draws (shadel_mark_neighbours.comp), which spares every pixel the loop over
+// the mask of the footprint's own chunk: the chunk's occupancy bit and what
+// the neighbours' first column / row give the gutter follow from the masks
+// in a compute step after the draws (shadel_mark_neighbours.comp), which
+// spares every pixel the occupancy's read and atomic and the loop over
 // neighbour chunks.
 // Early depth test: hidden surfaces mark nothing. No colour output.
 //
@@ -68,6 +69,7 @@ layout(set = 0, binding = kBindLevelRectTexels) uniform usamplerBuffer levelRect
 // lanes). A read may miss a bit another invocation of this pass has just set
 // (bits are only ever set here): that costs one redundant atomic, never a
 // missing mark.
+#ifndef SG_MARK_OWN_CHUNK_ONLY  // (glslang emits uncalled functions: the remap must not be in the interface)
 layout(set = 0, binding = kBindRemapTexels) uniform usamplerBuffer remapTexels;  // RGBA32UI: .zw the occupancy
 
 // Sets the chunk's bit in its remap entry's occupancy unless it shows set.
@@ -76,6 +78,7 @@ void sgMarkChunk(SgShadelAddress a) {
   if ((packUint2x32(texelFetch(remapTexels, int(a.entryIndex)).zw) & bit) == uint64_t(0))
     atomicOr(remap[a.entryIndex].occupancy, bit);
 }
+#endif
 
 #ifdef SG_SHADEL_MASKS
 layout(set = 0, binding = kBindShadelMasks, std430) buffer ShadelMasks { uint64_t shadelMasks[]; };
@@ -156,9 +159,12 @@ void markLevel(uint index) {
   SgLevelRect rect = level.rect;
   SgBilinearTaps taps = sgBilinearTaps(inShadingUv, rect.size);
   uvec2 tile = sgFootprintTileShadel(rect, taps);
+#ifndef SG_MARK_OWN_CHUNK_ONLY
   // Read first: most pixels find their chunk already marked, and a read is
-  // much cheaper than an atomic.
+  // much cheaper than an atomic. (With SG_MARK_OWN_CHUNK_ONLY the occupancy
+  // bit follows from the chunk's mask: shadel_mark_neighbours.comp.)
   sgMarkChunk(sgShadelAddress(tile, params.entriesPerSideLog2));
+#endif
 #ifdef SG_SHADEL_MASKS
   markFootprint(level, taps, tile);
 #endif

@@ -16,10 +16,14 @@
 // whatever order they run in. A superset of what the fragment shader used to
 // add to the neighbours (column 7 also holds boxes at lo.x == 6): a few more
 // shadels shaded at the edges of what is visible at a level, the same ones read.
-// Only chunks with storage need their gutter shadels: a thread per owned
-// entry of the live span (entry_span.glsl), like shadel-clear's, visits its
-// entry's marked chunks (the occupancy bits the fragment shader set) and
-// writes only their masks. Before, the fragment shader did this per pixel: up
+// First it sets the entry's occupancy (shadel-clear zeroed it): a chunk is
+// marked when the fragment shader set any bit of its mask (its own-chunk box
+// is never empty), so the fragment shader needs no occupancy read and atomic
+// per pixel. Only chunks with storage need their gutter shadels: a thread
+// per owned entry of the live span (entry_span.glsl), like shadel-clear's,
+// visits its entry's marked chunks and writes only their masks; no other
+// thread writes this entry's masks, so the occupancy read from them first is
+// what the fragment shader marked. Before, the fragment shader did this per pixel: up
 // to three neighbour chunks' mask reads and atomics in a loop (each a loop over
 // the lanes on lavapipe, run as often as the lane with the most chunks needed).
 #include <framework/shadel/shaders/decoupled.glsl>
@@ -27,6 +31,7 @@
 
 layout(local_size_x = 64) in;
 layout(set = 0, binding = kBindShadelMasks, std430) buffer ShadelMasks { uint64_t shadelMasks[]; };
+layout(set = 0, binding = kBindShadelMaskPairTexels) uniform usamplerBuffer shadelMaskPairs;  // RGBA32UI: two masks a texel
 
 const uint64_t kColumn0BelowRow0 = uint64_t(0x0101010101010100ul);  // shadels (0, y), y >= 1 (bit y * 8 + x)
 
@@ -43,9 +48,17 @@ uint64_t sgMaskOf(uint ownedIndex, uvec2 entry, uint side, uvec2 chunk) {
 void main() {
   uint i = sgSpanEntry(64u);
   if (!sgInSpan(i)) return;
-  SgOwnedEntry owned = ownedEntries[i];
-  uint64_t marked = remap[owned.entryIndex].occupancy;
+  // The masks two at a time through a texel view: a gather each on
+  // lavapipe, where a storage-buffer read is a loop over the lanes.
+  uint64_t marked = uint64_t(0);
+  for (uint c = 0u; c < SG_CHUNKS_PER_ENTRY; c += 2u) {
+    uvec4 pair = texelFetch(shadelMaskPairs, int((i * SG_CHUNKS_PER_ENTRY + c) >> 1u));
+    uint two = uint((pair.x | pair.y) != 0u) | (uint((pair.z | pair.w) != 0u) << 1u);
+    marked |= uint64_t(two) << c;
+  }
   if (marked == uint64_t(0)) return;
+  SgOwnedEntry owned = ownedEntries[i];
+  remap[owned.entryIndex].occupancy = marked;
   SgLevelRect rect = sgLevelRect(owned.instanceId, owned.level);
   uint side = max(rect.size >> SG_ENTRY_SIZE_LOG2, 1u);
   uvec2 entry = (sgVirtualShadel(SgShadelAddress(owned.entryIndex, 0u, 0u), params.entriesPerSideLog2) - rect.origin) >>
