@@ -4,7 +4,8 @@
 // reads (sgSelectFilterLevel: the nearest for point and bilinear, fine and
 // coarse for trilinear), the chunk of the footprint's top-left tap, whose
 // tile in shade storage (the chunk and a one-shadel gutter) holds the whole
-// footprint. One remap read per level, an atomic only when the bit is missing.
+// footprint. One remap read per level, an atomic only when the bit is missing
+// (with SG_MARK_OWN_CHUNK_ONLY, below, neither).
 // With SG_SHADEL_MASKS it also marks which shadels of the chunk the footprint
 // reads (layer-shade shades only those), and of each neighbour chunk whose
 // first row or column fills the tile's gutter.
