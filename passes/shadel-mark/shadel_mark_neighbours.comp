@@ -16,16 +16,17 @@
 // whatever order they run in. A superset of what the fragment shader used to
 // add to the neighbours (column 7 also holds boxes at lo.x == 6): a few more
 // shadels shaded at the edges of what is visible at a level, the same ones read.
-// First it sets the entry's occupancy (shadel-clear zeroed it): a chunk is
-// marked when the fragment shader set any bit of its mask (its own-chunk box
-// is never empty), so the fragment shader needs no occupancy read and atomic
-// per pixel. Only chunks with storage need their gutter shadels: a thread
-// per owned entry of the live span (entry_span.glsl), like shadel-clear's,
-// visits its entry's marked chunks and writes only their masks; no other
-// thread writes this entry's masks, so the occupancy read from them first is
-// what the fragment shader marked. Before, the fragment shader did this per pixel: up
-// to three neighbour chunks' mask reads and atomics in a loop (each a loop over
-// the lanes on lavapipe, run as often as the lane with the most chunks needed).
+// Only chunks with storage need their gutter shadels: a thread per owned
+// entry of the live span (entry_span.glsl), like shadel-clear's, visits its
+// entry's marked chunks and writes only their masks. Before, the fragment
+// shader did this per pixel: up to three neighbour chunks' mask reads and
+// atomics in a loop (each a loop over the lanes on lavapipe, run as often as
+// the lane with the most chunks needed).
+// The thread first sets its entry's occupancy (shadel-clear zeroed it): a
+// chunk is marked when the fragment shader set any bit of its mask (its
+// own-chunk box is never empty), so the fragment shader needs no occupancy
+// read and atomic per pixel. No other thread writes this entry's masks, so
+// what it reads first is what the fragment shader marked.
 #include <framework/shadel/shaders/decoupled.glsl>
 #include <framework/shadel/shaders/entry_span.glsl>
 
