@@ -14,8 +14,10 @@ namespace {
 constexpr uint32_t kChunkSlotsPerEntry = 64;  // chunk slots per owned entry, one mask each
 constexpr std::array kBindings{kBindFrame,       kBindParams,      kBindObjects,        kBindShadelInstances,
                                kBindLevelRects,  kBindRemap,       kBindRemapTexels,    kBindLevelRectTexels};
-constexpr std::array kMaskBindings{kBindFrame,       kBindParams,      kBindObjects,        kBindShadelInstances,
-                                   kBindLevelRects,  kBindRemap,       kBindRemapTexels,    kBindLevelRectTexels,
+// The level rectangles as a storage buffer only for the baseline (sgLevelRect),
+// which has no masks.
+constexpr std::array kMaskBindings{kBindFrame,       kBindParams,           kBindObjects, kBindShadelInstances,
+                                   kBindRemap,       kBindRemapTexels,      kBindLevelRectTexels,
                                    kBindShadelMasks, kBindShadelMaskTexels};
 // Marking the own chunk's mask only, the fragment shader leaves the remap
 // entry (its occupancy) to shadel-mark-neighbours.
