@@ -41,6 +41,7 @@ gpu::PipelineLayoutDesc decoupledLayout(std::span<const uint32_t> bindings, bool
         b == kBindShadelMaskTexels || b == kBindShadelMaskPairTexels || b == kBindLevelRectTexels ||
         b == kBindChunkSlotTexels)
       type = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    if (b == kBindMarkRequests) type = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
     if (b == kBindLayerImage)
       type = layerImageStorage ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     layout.bindings.push_back({b, type});
@@ -95,6 +96,9 @@ void bindDecoupled(PassContext& ctx, const gpu::Pipeline& pipeline, const Decoup
         writes.push_back({b, gpu::TexelBufferBinding{ctx.buffer(f.masks).texelView(
                                  ctx.device().context(), VK_FORMAT_R32G32B32A32_UINT, 2 * sizeof(uint64_t))}});
         break;
+      case kBindMarkRequests:
+        writes.push_back({b, gpu::ImageBinding{ctx.image(f.markRequests).view(), VK_IMAGE_LAYOUT_GENERAL}});
+        break;
       case kBindLayerImage: {
         const auto& pipelineBindings = pipeline.bindings();
         bool storage = false;
@@ -138,7 +142,8 @@ void readEntryBlocks(graph::Pass& pass, const DecoupledFrame& frame) {
 }
 
 void drawDecoupled(PassContext& ctx, const DecoupledFrame& frame, std::span<const uint32_t> bindings, VkBuffer indirect,
-                   const std::function<const gpu::Pipeline&(bool alphaTest, uint32_t levelRule)>& pipeline) {
+                   const std::function<const gpu::Pipeline&(bool alphaTest, uint32_t levelRule)>& pipeline,
+                   bool reverseOpaque) {
   const auto& draws = frame.view.scene.draws();
   const auto levelRuleOf = [&](size_t i) {
     const uint32_t object = frame.objectIds[i];
@@ -149,10 +154,14 @@ void drawDecoupled(PassContext& ctx, const DecoupledFrame& frame, std::span<cons
   for (size_t i = 0; i < frame.view.draws.size(); ++i) rules.push_back(levelRuleOf(i));
   std::sort(rules.begin(), rules.end());
   rules.erase(std::unique(rules.begin(), rules.end()), rules.end());
+  const size_t count = frame.view.draws.size();
   for (const bool alphaTest : {false, true}) {
-    for (const uint32_t rule : rules) {
+    const bool reversed = reverseOpaque && !alphaTest;
+    for (size_t r = 0; r < rules.size(); ++r) {
+      const uint32_t rule = rules[reversed ? rules.size() - 1 - r : r];
       const gpu::Pipeline* bound = nullptr;
-      for (size_t i = 0; i < frame.view.draws.size(); ++i) {
+      for (size_t n = 0; n < count; ++n) {
+        const size_t i = reversed ? count - 1 - n : n;
         const render::DrawItem& draw = draws[frame.view.draws[i]];
         if ((draw.alphaMode == scene::AlphaMode::Mask) != alphaTest || levelRuleOf(i) != rule) continue;
         if (!bound) {

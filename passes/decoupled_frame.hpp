@@ -82,6 +82,10 @@ struct DecoupledFrame {
   // the sheet debug view.
   bool shadelMasks = false;
   graph::ResourceHandle masks;  // valid when shadelMasks, from shadel-mark on
+  // The per-pixel mark requests the depth pre-pass wrote (R32UI: a mask slot
+  // and box, shadel_box.glsl; shadel-mark's markRequestsPossible), which
+  // shadel-mark-requests turns into mask bits; invalid: shadel-mark rasterizes.
+  graph::ResourceHandle markRequests;
 };
 
 // The define shadel-mark and composite are both compiled with: the filter
@@ -120,8 +124,13 @@ void readEntryBlocks(graph::Pass& pass, const DecoupledFrame& frame);
 // alpha-mask ones with pipeline(true, rule), their alpha-tested variant, whose
 // set 1 is the draw's scene material; within each, the objects without a level
 // rule (0) first, then those of each rule (DecoupledFrame::levelRules). Set 0
-// is bound for each pipeline from `bindings`.
+// is bound for each pipeline from `bindings`. `reverseOpaque`: the opaque
+// draws in the opposite order (composite, and shadel-mark's requests in the
+// depth pre-pass: of opaque fragments tied in depth both keep the first, so
+// across draws the one forward's last-drawn-wins keeps; alpha-tested ones,
+// whose fragments may be cut away after the depth test, keep the last).
 void drawDecoupled(PassContext& ctx, const DecoupledFrame& frame, std::span<const uint32_t> bindings, VkBuffer indirect,
-                   const std::function<const gpu::Pipeline&(bool alphaTest, uint32_t levelRule)>& pipeline);
+                   const std::function<const gpu::Pipeline&(bool alphaTest, uint32_t levelRule)>& pipeline,
+                   bool reverseOpaque = false);
 
 }  // namespace sg::passes

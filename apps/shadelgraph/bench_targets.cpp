@@ -1,7 +1,9 @@
 // shadelgraph bench targets: issue 14's targets from one run. Four groups,
 // each reusing another bench's measuring:
 //   timed (per size): forward and decoupled of the default scene and
-//     DamagedHelmet, the default scene decoupled with the simplest material,
+//     DamagedHelmet (decoupled also with shadel-mark rasterizing, against
+//     which its work in the depth pre-pass is measured), the default scene
+//     decoupled with the simplest material,
 //     and the geometry-heavy models forward, all alternated round-robin
 //     (bench_sessions.hpp) -> composite and shadel-mark ÷ forward-opaque, the
 //     shade-space passes ÷ the decoupled frame, layer-shade ns per shadel, the
@@ -51,9 +53,15 @@ const std::vector<std::string> kCoverageSizes{"640x360", "1280x720"};
 const std::vector<std::string> kTimedScenes{"default", "DamagedHelmet"};
 const std::vector<std::string> kCoverageNamed{"default", "DamagedHelmet", "Duck", "Suzanne"};
 const std::vector<std::string> kGeometryModels{"MetalRoughSpheresNoTextures", "2CylinderEngine", "ReciprocatingSaw"};
-const std::vector<std::string> kShadeSpacePasses{"shadel-clear",    "shadel-mask-clear", "shadel-mark",
-                                                 "shadel-mark-neighbours", "shadel-allocate", "work-aggregate",
-                                                 "support-expand"};
+const std::vector<std::string> kShadeSpacePasses{"shadel-clear",           "shadel-mask-clear", "shadel-mark",
+                                                 "shadel-mark-requests",   "shadel-mark-neighbours",
+                                                 "shadel-allocate",        "work-aggregate",    "support-expand"};
+// shadel-mark's work in the depth pre-pass (its requests, drawn there) is the
+// pre-pass's time over the same frame's with shadel-mark rasterizing (--mark raster).
+double depthPassMarkMs(const BenchSession& requests, const BenchSession& raster) {
+  const auto prepass = [](const BenchSession& s) { return s.passMedian("z-prepass") + s.passMedian("z-prepass (late)"); };
+  return prepass(requests) - prepass(raster);
+}
 const std::vector<std::string> kCullScenes{"cull-base", "cull-hidden", "cull-offscreen"};
 const std::vector<std::string> kAliasedMaterials{"skin", "bumps"};
 // No near-empty material exists: the simplest debug one (a hash of the triangle ID, no texture, no light).
@@ -179,6 +187,7 @@ void measureTimed(gpu::Device& device, const Scenes& scenes, const Size& size, i
   struct PathPair {
     std::string scene;
     BenchSession forward, decoupled;
+    BenchSession rasterMark;  // decoupled, shadel-mark rasterizing (what its work in the depth pre-pass is measured against)
   };
   std::vector<std::unique_ptr<PathPair>> pairs;
   std::unique_ptr<BenchSession> empty;
@@ -203,8 +212,10 @@ void measureTimed(gpu::Device& device, const Scenes& scenes, const Size& size, i
     pair.scene = name;
     pair.forward.make(device, loaded.scene, scene::ShadingMode::Forward);
     pair.decoupled.make(device, loaded.scene, scene::ShadingMode::Decoupled);
+    pair.rasterMark.make(device, loaded.scene, scene::ShadingMode::Decoupled, {.markRequests = false});
     view(pair.forward);
     view(pair.decoupled);
+    view(pair.rasterMark);
     if (name == "default") {
       scene::Scene plain = loaded.scene;
       for (auto& instance : plain.instances) instance.material = kEmptyMaterial;
@@ -232,20 +243,27 @@ void measureTimed(gpu::Device& device, const Scenes& scenes, const Size& size, i
   for (const auto& pair : pairs) {
     const double forwardOpaque = pair->forward.passMedian("forward-opaque");
     const double composite = pair->decoupled.passMedian("composite");
-    // With its second step, where it runs (the chunk bits from the shadel masks).
-    const double mark =
-        pair->decoupled.passMedian("shadel-mark") + pair->decoupled.passMedian("shadel-mark-neighbours");
-    const nlohmann::json context{{"forward_opaque_ms", forwardOpaque},
-                                 {"composite_ms", composite},
-                                 {"shadel_mark_ms", mark},
-                                 {"forward_frame_ms", pair->forward.frameMedian()},
-                                 {"decoupled_frame_ms", pair->decoupled.frameMedian()}};
+    // With its steps, where they run: the requests drawn in the depth pre-pass
+    // and their merge, the chunk bits from the shadel masks.
+    const double inDepthPass = depthPassMarkMs(pair->decoupled, pair->rasterMark);
+    const double mark = inDepthPass + pair->decoupled.passMedian("shadel-mark") +
+                        pair->decoupled.passMedian("shadel-mark-requests") +
+                        pair->decoupled.passMedian("shadel-mark-neighbours");
+    const nlohmann::json context{
+        {"forward_opaque_ms", forwardOpaque},
+        {"composite_ms", composite},
+        {"shadel_mark_ms", mark},
+        {"shadel_mark_in_depth_pass_ms", inDepthPass},
+        {"forward_frame_ms", pair->forward.frameMedian()},
+        {"decoupled_frame_ms", pair->decoupled.frameMedian()},
+        {"raster_mark_frame_ms", pair->rasterMark.frameMedian()},
+        {"raster_mark_ms", pair->rasterMark.passMedian("shadel-mark") + pair->rasterMark.passMedian("shadel-mark-neighbours")}};
     rows.composite.figures.push_back(
         {.scene = pair->scene, .size = size.text, .value = ratioOrZero(composite, forwardOpaque), .context = context});
     rows.mark.figures.push_back(
         {.scene = pair->scene, .size = size.text, .value = ratioOrZero(mark, forwardOpaque), .context = context});
-    double shadeSpace = 0.0;
-    nlohmann::json passes = nlohmann::json::object();
+    double shadeSpace = inDepthPass;
+    nlohmann::json passes{{"shadel-mark in z-prepass", inDepthPass}};
     for (const auto& pass : kShadeSpacePasses) {
       passes[pass] = pair->decoupled.passMedian(pass);
       shadeSpace += passes[pass].get<double>();

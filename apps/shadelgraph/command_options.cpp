@@ -94,6 +94,11 @@ void addFrameSetupOptions(CLI::App& command, RenderArgs& args) {
   command.add_option("--animation", args.animation, "which glTF animations play: all, none, an index or a name")
       ->capture_default_str();
   command.add_flag("--no-aliasing", args.noAliasing, "give every transient its own memory");
+  command.add_option("--mark", args.mark,
+                     "where shadel-mark finds what composite reads (bilinear with shadel masks): depth-pass (the depth "
+                     "pre-pass writes each pixel's request) or raster (it draws the decoupled objects once more)")
+      ->check(CLI::IsMember({"depth-pass", "raster"}))
+      ->capture_default_str();
   command.add_option("--z-prepass", args.zPrepass,
                      "depth pre-pass of frames without decoupled objects: auto (where overdraw pays for it), on, off")
       ->check(CLI::IsMember({"auto", "on", "off"}))

@@ -55,6 +55,7 @@ struct RenderArgs {
   int soakEvery = 100;
   bool noAliasing = false;
   std::string zPrepass = "auto";  // the forward frame's depth pre-pass: auto, on, off
+  std::string mark = "depth-pass";  // shadel-mark's requests from the depth pre-pass, or raster (DecoupledSettings::markRequests)
   MaterialArgs materials;
   FrameArgs frameGraph;
 };

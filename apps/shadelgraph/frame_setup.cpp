@@ -18,6 +18,7 @@ plugins::DecoupledSettings decoupledSettings(const RenderArgs& args) {
   plugins::DecoupledSettings decoupled{.storageFactor = args.storage, .filter = args.filter,
                                       .shadeRate = uint32_t(args.shadeRate), .overlap = args.framesInFlight > 1,
                                       .shadeBudgetMs = args.shadeBudget};
+  decoupled.markRequests = args.mark == "depth-pass";
   for (const auto& [name, view] : debugViews())
     if (name == args.view) decoupled.view = view;
   if (args.bias) decoupled.fixedBias = float(args.bias.value());

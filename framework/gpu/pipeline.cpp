@@ -96,6 +96,8 @@ Pipeline::Pipeline(const Context& context, ShaderCompiler& compiler, const Pipel
   raster.polygonMode = VK_POLYGON_MODE_FILL;
   raster.frontFace = desc.frontFace;  // ignored: front face is dynamic state (set per draw)
   raster.lineWidth = 1.0f;
+  raster.depthBiasEnable = desc.depthBias != 0.0f;
+  raster.depthBiasConstantFactor = desc.depthBias;
   VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
   multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
   VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};

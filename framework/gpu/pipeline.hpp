@@ -44,6 +44,8 @@ struct GraphicsPipelineDesc {
   bool depthTest = false;
   bool depthWrite = false;
   VkCompareOp depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;
+  // Constant depth bias in the format's units (minimum resolvable differences); 0: none.
+  float depthBias = 0.0f;
   bool alphaBlend = false;                                    // premultiplied "over"
   std::string name;
 };

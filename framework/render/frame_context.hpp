@@ -17,6 +17,7 @@
 #include <shadelgraph/gpu/graph_executor.hpp>
 #include <shadelgraph/graph/render_graph.hpp>
 #include <shadelgraph/plugin/frame_description.hpp>
+#include <shadelgraph/render/depth_pass_draws.hpp>
 #include <shadelgraph/render/scene_view.hpp>
 #include <shadelgraph/render/shadow_views.hpp>
 #include <shadelgraph/scene/scene.hpp>
@@ -77,6 +78,8 @@ class FrameContext {
   SceneView view(std::span<const uint32_t> draws) const;
   // The culled draw commands a cull pass publishes for the passes after it (see readDrawCommands).
   DrawCommands& drawCommands() { return drawCommands_; }
+  // Draws a package hands the depth pre-pass (set in its prepare step; depth_pass_draws.hpp).
+  std::optional<DepthPassDraws>& depthPassDraws() { return depthPassDraws_; }
 
   // The frame resource's current version; throws naming the pass when no pass wrote it.
   graph::ResourceHandle read(const std::string& resource) const;
@@ -126,6 +129,7 @@ class FrameContext {
   std::map<std::string, std::shared_ptr<void>>& states_;
   FrameDraws draws_;
   DrawCommands drawCommands_;
+  std::optional<DepthPassDraws> depthPassDraws_;
   std::vector<uint32_t> visible_;
   std::map<std::string, graph::ResourceHandle> resources_;
   const plugin::ResolvedPass* pass_ = nullptr;

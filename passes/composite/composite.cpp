@@ -43,12 +43,24 @@ gpu::GraphicsPipelineDesc compositePipeline(int filter, bool levelView, bool alp
           .vertexInput = render::sceneVertexInput(),
           .colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT},
           .depthFormat = VK_FORMAT_D32_SFLOAT,
+          // Opaque: of fragments tied in depth only the first draws: biased
+          // one unit nearer, it passes LESS against the depth pre-pass's value
+          // and writes its own, which the next tied fragment does not pass.
+          // The opaque draws go in reverse order, so across draws that is the
+          // last-drawn one, as forward's EQUAL test keeps. Alpha-tested: the
+          // early depth write would land before the alpha test discards, so
+          // none, and LESS_OR_EQUAL: every tied fragment draws (the last one
+          // shows), but none where an opaque one took the pixel. The depth
+          // pre-pass's requests keep the same fragments (drawMarkRequests), so
+          // their chunks are the ones marked.
           .depthTest = true,
-          .depthWrite = false};
+          .depthWrite = !alphaTest,
+          .depthCompare = alphaTest ? VK_COMPARE_OP_LESS_OR_EQUAL : VK_COMPARE_OP_LESS,
+          .depthBias = -1.0f};
 }
 
-graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle color,
-                                   graph::ResourceHandle depth, std::optional<VkClearColorValue> clear) {
+CompositeOutput addComposite(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle color,
+                             graph::ResourceHandle depth, std::optional<VkClearColorValue> clear) {
   // Composite reads exactly the footprint shadel-mark marked for its filter:
   // any other filter would read unmarked shadels (misses).
   if (frame.markedFilter >= 0 && frame.markedFilter != frame.filter)
@@ -58,7 +70,7 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
   addShadelGutter(graph, frame);
   auto& pass = graph.addPass("composite", graph::QueueClass::Graphics);
   if (!clear) pass.read(color, graph::Access::ColorAttachmentRead);
-  pass.read(depth, graph::Access::DepthRead);
+  depth = pass.write(depth, graph::Access::DepthAttachment);
   // Both through texel views (composite.frag).
   pass.read(frame.remap, graph::Access::Sampled, graph::ShaderStage::Fragment);
   pass.read(frame.slots, graph::Access::Sampled, graph::ShaderStage::Fragment);
@@ -69,7 +81,7 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
   // Culled draws (instance count 0 in the frame's draw commands) are skipped.
   pass.execute([indirect = render::readDrawCommands(pass, frame.view).indirect, frame, color, depth,
                 clear](PassContext& ctx) {
-    ctx.beginRendering({ColorTarget{color, clear}}, DepthTarget{depth, {}, true}, true);
+    ctx.beginRendering({ColorTarget{color, clear}}, DepthTarget{depth, {}}, true);
     drawDecoupled(ctx, frame, kBindings, indirect, [&](bool alphaTest, uint32_t levelRule) -> const gpu::Pipeline& {
       const std::string variant = std::to_string(frame.filter) + (frame.levelView ? "/level" : "") +
                                   (alphaTest ? "/alpha-test" : "") + levelRuleVariant(levelRule);
@@ -77,10 +89,10 @@ graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& fr
         return compositePipeline(frame.filter, frame.levelView, alphaTest, frame.view.scene.materialSetLayout(),
                                  levelRule, countsPerSubgroup(ctx.device().context().physicalDevice()));
       });
-    });
+    }, /*reverseOpaque=*/true);
     ctx.endRendering();
   });
-  return color;
+  return {color, depth};
 }
 
 }  // namespace sg::passes

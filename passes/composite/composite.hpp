@@ -6,11 +6,16 @@
 
 namespace sg::passes {
 
+struct CompositeOutput {
+  graph::ResourceHandle color, depth;
+};
 // Draws the decoupled objects with their shaded samples (manual trilinear
-// through the remap table) over the forward pass's colour. Returns the colour.
-// `clear`: the colour is still unwritten (no forward pass drew before it), clear it first.
-graph::ResourceHandle addComposite(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle color,
-                                   graph::ResourceHandle depth, std::optional<VkClearColorValue> clear = {});
+// through the remap table) over the forward pass's colour. Of fragments tied
+// in depth it draws one only, the last-drawn (compositePipeline), and so
+// writes the depth. `clear`: the colour is still unwritten (no forward pass drew before
+// it), clear it first.
+CompositeOutput addComposite(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle color,
+                             graph::ResourceHandle depth, std::optional<VkClearColorValue> clear = {});
 // filter: 0 point, 1 bilinear, 2 trilinear; levelView shows the detail level
 // instead; alphaTest: the variant for alpha-mask objects, `materialSet` (the
 // scene material) its set 1; levelRule: the variant for objects with that

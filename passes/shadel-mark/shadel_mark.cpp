@@ -23,11 +23,15 @@ constexpr std::array kMaskBindings{kBindFrame,       kBindParams,           kBin
 // entry (its occupancy) to shadel-mark-neighbours.
 constexpr std::array kOwnChunkBindings{kBindFrame,           kBindParams,      kBindObjects, kBindShadelInstances,
                                        kBindLevelRectTexels, kBindShadelMasks, kBindShadelMaskTexels};
+// Writing requests, the fragment shader touches no table of the masks either.
+constexpr std::array kRequestBindings{kBindFrame, kBindParams, kBindObjects, kBindShadelInstances, kBindLevelRectTexels};
+constexpr std::array kRequestMergeBindings{kBindShadelMasks, kBindMarkRequests};
 constexpr std::array kNeighbourBindings{kBindParams,       kBindShadelInstances, kBindLevelRects,
                                         kBindRemap,        kBindOwnedEntries,    kBindShadelMasks,
                                         kBindShadelMaskPairTexels, kBindEntryBlocks};
 
-std::span<const uint32_t> markBindings(bool shadelMasks, bool ownChunkOnly) {
+std::span<const uint32_t> markBindings(bool shadelMasks, bool ownChunkOnly, bool requests = false) {
+  if (requests) return kRequestBindings;
   if (ownChunkOnly) return kOwnChunkBindings;
   return shadelMasks ? std::span<const uint32_t>(kMaskBindings) : kBindings;
 }
@@ -35,19 +39,29 @@ std::span<const uint32_t> markBindings(bool shadelMasks, bool ownChunkOnly) {
 
 bool markOwnChunkOnly(int filter, bool shadelMasks) { return shadelMasks && filter != 0; }
 
+bool markRequestsPossible(const DecoupledFrame& frame) {
+  return frame.shadelMasks && !frame.baseline && frame.filter == 1 && frame.ownedEntryCount < kMaxRequestEntries;
+}
+
+gpu::ComputePipelineDesc shadelMarkRequestsPipeline() {
+  return {.shader = {.path = "passes/shadel-mark/shadel_mark_requests.comp"},
+          .layout = decoupledLayout(kRequestMergeBindings, false)};
+}
+
 gpu::ComputePipelineDesc shadelMarkNeighboursPipeline() {
   return {.shader = {.path = "passes/shadel-mark/shadel_mark_neighbours.comp"},
           .layout = decoupledLayout(kNeighbourBindings, false, sizeof(SgEntrySpan))};
 }
 
 gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline, bool alphaTest, VkDescriptorSetLayout materialSet,
-                                             bool shadelMasks, uint32_t levelRule) {
+                                             bool shadelMasks, uint32_t levelRule, bool requests) {
   std::vector<std::pair<std::string, std::string>> defines{filterDefine(filter)};
   if (baseline) defines.emplace_back("SG_MARK_BASELINE", "1");
   if (shadelMasks) defines.emplace_back("SG_SHADEL_MASKS", "1");
   if (markOwnChunkOnly(filter, shadelMasks)) defines.emplace_back("SG_MARK_OWN_CHUNK_ONLY", "1");
+  if (requests) defines.emplace_back("SG_MARK_REQUESTS", "1");
   for (auto& define : levelRuleDefines(levelRule)) defines.push_back(std::move(define));
-  const std::span<const uint32_t> bindings = markBindings(shadelMasks, markOwnChunkOnly(filter, shadelMasks));
+  const std::span<const uint32_t> bindings = markBindings(shadelMasks, markOwnChunkOnly(filter, shadelMasks), requests);
   std::vector<std::pair<std::string, std::string>> vertexDefines;
   if (baseline) vertexDefines.emplace_back("SG_MARK_BASELINE", "1");  // the baseline reads its levels itself
   if (alphaTest) {
@@ -59,9 +73,24 @@ gpu::GraphicsPipelineDesc shadelMarkPipeline(int filter, bool baseline, bool alp
           .layout = alphaTest ? decoupledLayout(bindings, false, sizeof(render::ObjectConstants), {materialSet})
                               : decoupledLayout(bindings, false, sizeof(render::ObjectConstants)),
           .vertexInput = render::sceneVertexInput(),
+          .colorFormats = requests ? std::vector<VkFormat>{VK_FORMAT_R32_UINT} : std::vector<VkFormat>{},
           .depthFormat = VK_FORMAT_D32_SFLOAT,
           .depthTest = true,
-          .depthWrite = false};
+          // Requests: drawn in the depth pre-pass (render::DepthPassDraws): of
+          // fragments tied in depth the opaque ones keep the first, the
+          // alpha-tested ones the last, as composite draws them (compositePipeline).
+          .depthWrite = requests,
+          .depthCompare = requests && !alphaTest ? VK_COMPARE_OP_LESS : VK_COMPARE_OP_LESS_OR_EQUAL};
+}
+
+void drawMarkRequests(PassContext& ctx, const DecoupledFrame& frame, VkBuffer indirect) {
+  drawDecoupled(ctx, frame, kRequestBindings, indirect, [&](bool alphaTest, uint32_t levelRule) -> const gpu::Pipeline& {
+    return ctx.device().pipeline(
+        std::string("shadel-mark/requests") + (alphaTest ? "/alpha-test" : "") + levelRuleVariant(levelRule), [&] {
+          return shadelMarkPipeline(frame.filter, false, alphaTest, frame.view.scene.materialSetLayout(), true, levelRule,
+                                    true);
+        });
+  }, /*reverseOpaque=*/true);  // composite's order and tie rule (compositePipeline)
 }
 
 void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle depth) {
@@ -83,37 +112,52 @@ void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::Reso
   } else {
     frame.masks = {};
   }
-  auto& pass = graph.addPass("shadel-mark", graph::QueueClass::Graphics);
-  pass.read(depth, graph::Access::DepthRead);
-  render::readSceneGeometry(pass, frame.view);
-  // Read through texel views too (shadel_mark.frag), written by atomics;
-  // marking the own chunk only, it leaves the occupancy to the neighbours step.
-  const bool ownChunkOnly = markOwnChunkOnly(frame.filter, masks);
-  if (!ownChunkOnly) {
-    pass.read(frame.remap, graph::Access::Sampled, graph::ShaderStage::Fragment);
-    frame.remap = pass.write(frame.remap, graph::Access::StorageReadWrite, graph::ShaderStage::Fragment);
-  }
-  if (masks) {
-    pass.read(frame.masks, graph::Access::Sampled, graph::ShaderStage::Fragment);
-    frame.masks = pass.write(frame.masks, graph::Access::StorageReadWrite, graph::ShaderStage::Fragment);
-  }
   frame.markedFilter = frame.filter;
-  // Culled draws (instance count 0 in the frame's draw commands) are skipped.
-  pass.execute([indirect = render::readDrawCommands(pass, frame.view).indirect, frame, depth, masks,
-                ownChunkOnly](PassContext& ctx) {
-    ctx.beginRendering({}, DepthTarget{depth, {}, true}, true);
-    const std::span<const uint32_t> bindings = markBindings(masks, ownChunkOnly);
-    drawDecoupled(ctx, frame, bindings, indirect, [&](bool alphaTest, uint32_t levelRule) -> const gpu::Pipeline& {
-      const std::string variant = std::to_string(frame.filter) + (frame.baseline ? "/baseline" : "") +
-                                  (alphaTest ? "/alpha-test" : "") + (masks ? "/masks" : "") +
-                                  levelRuleVariant(levelRule);
-      return ctx.device().pipeline("shadel-mark/" + variant, [&] {
-        return shadelMarkPipeline(frame.filter, frame.baseline, alphaTest, frame.view.scene.materialSetLayout(), masks,
-                                  levelRule);
-      });
+  const bool ownChunkOnly = markOwnChunkOnly(frame.filter, masks);
+  if (frame.markRequests.valid() && masks && ownChunkOnly) {
+    // The depth pre-pass wrote the requests (drawMarkRequests): their bits into the masks.
+    auto& merge = graph.addPass("shadel-mark-requests", graph::QueueClass::Graphics, graph::PassKind::Compute);
+    merge.read(frame.markRequests, graph::Access::StorageRead);
+    frame.masks = merge.write(frame.masks, graph::Access::StorageReadWrite);
+    merge.execute([frame](PassContext& ctx) {
+      const auto& pipeline = ctx.device().pipeline("shadel-mark-requests", [] { return shadelMarkRequestsPipeline(); });
+      bindDecoupled(ctx, pipeline, frame, kRequestMergeBindings);
+      const VkExtent2D size = ctx.image(frame.markRequests).extent();
+      // 8x8 threads of 4x4 pixels a workgroup.
+      vkCmdDispatch(ctx.cmd(), (size.width + 31) / 32, (size.height + 31) / 32, 1);
     });
-    ctx.endRendering();
-  });
+  } else {
+    frame.markRequests = {};
+    auto& pass = graph.addPass("shadel-mark", graph::QueueClass::Graphics);
+    pass.read(depth, graph::Access::DepthRead);
+    render::readSceneGeometry(pass, frame.view);
+    // Read through texel views too (shadel_mark.frag), written by atomics;
+    // marking the own chunk only, it leaves the occupancy to the neighbours step.
+    if (!ownChunkOnly) {
+      pass.read(frame.remap, graph::Access::Sampled, graph::ShaderStage::Fragment);
+      frame.remap = pass.write(frame.remap, graph::Access::StorageReadWrite, graph::ShaderStage::Fragment);
+    }
+    if (masks) {
+      pass.read(frame.masks, graph::Access::Sampled, graph::ShaderStage::Fragment);
+      frame.masks = pass.write(frame.masks, graph::Access::StorageReadWrite, graph::ShaderStage::Fragment);
+    }
+    // Culled draws (instance count 0 in the frame's draw commands) are skipped.
+    pass.execute([indirect = render::readDrawCommands(pass, frame.view).indirect, frame, depth, masks,
+                  ownChunkOnly](PassContext& ctx) {
+      ctx.beginRendering({}, DepthTarget{depth, {}, true}, true);
+      const std::span<const uint32_t> bindings = markBindings(masks, ownChunkOnly);
+      drawDecoupled(ctx, frame, bindings, indirect, [&](bool alphaTest, uint32_t levelRule) -> const gpu::Pipeline& {
+        const std::string variant = std::to_string(frame.filter) + (frame.baseline ? "/baseline" : "") +
+                                    (alphaTest ? "/alpha-test" : "") + (masks ? "/masks" : "") +
+                                    levelRuleVariant(levelRule);
+        return ctx.device().pipeline("shadel-mark/" + variant, [&] {
+          return shadelMarkPipeline(frame.filter, frame.baseline, alphaTest, frame.view.scene.materialSetLayout(), masks,
+                                    levelRule);
+        });
+      });
+      ctx.endRendering();
+    });
+  }
   if (!ownChunkOnly) return;
   // The marked chunks' occupancy bits, and the gutters' shadels in the neighbours of the marked chunks.
   auto& neighbours = graph.addPass("shadel-mark-neighbours", graph::QueueClass::Graphics, graph::PassKind::Compute);

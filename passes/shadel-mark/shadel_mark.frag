@@ -15,7 +15,11 @@
 // in a compute step after the draws (shadel_mark_neighbours.comp), which
 // spares every pixel the occupancy's read and atomic and the loop over
 // neighbour chunks.
-// Early depth test: hidden surfaces mark nothing. No colour output.
+// Early depth test: hidden surfaces mark nothing. No colour output, but with
+// SG_MARK_REQUESTS (bilinear with masks), where the depth pre-pass draws the
+// decoupled objects with this shader (render::DepthPassDraws): it writes the
+// pixel's request instead of marking, and the fragment that keeps the depth
+// keeps the pixel's request.
 //
 // Cost on lavapipe: every buffer read or atomic in a fragment shader is a
 // loop over the 8 lanes, whether or not a lane takes its branch (an `if` is
@@ -26,12 +30,18 @@
 #include <framework/render/shaders/object.glsl>
 #include <framework/shadel/shaders/decoupled.glsl>
 #include <passes/shadel-mark/shadel_mark_levels.glsl>
+#include <passes/shadel-mark/shadel_box.glsl>
 
 #ifndef SG_FILTER
 #error "SG_FILTER: the composite filter (passes::filterDefine)"
 #endif
 
+#if defined(SG_MARK_REQUESTS) && defined(SG_ALPHA_TEST)
+// In the depth pre-pass (SG_MARK_REQUESTS) the fragment writes depth: where
+// the alpha test cuts it away it must not, so the depth test comes after.
+#else
 layout(early_fragment_tests) in;
+#endif
 layout(location = 0) in vec2 inShadingUv;
 
 #ifdef SG_ALPHA_TEST
@@ -82,6 +92,9 @@ void sgMarkChunk(SgShadelAddress a) {
 #endif
 
 #ifdef SG_SHADEL_MASKS
+#ifdef SG_MARK_REQUESTS
+layout(location = 0) out uint outRequest;  // R32UI, cleared to 0: no request
+#else
 layout(set = 0, binding = kBindShadelMasks, std430) buffer ShadelMasks { uint64_t shadelMasks[]; };
 layout(set = 0, binding = kBindShadelMaskTexels) uniform usamplerBuffer shadelMaskTexels;  // RG32UI
 
@@ -89,14 +102,7 @@ layout(set = 0, binding = kBindShadelMaskTexels) uniform usamplerBuffer shadelMa
 void sgMarkShadels(uint slot, uint64_t bits) {
   if ((packUint2x32(texelFetch(shadelMaskTexels, int(slot)).xy) & bits) != bits) atomicOr(shadelMasks[slot], bits);
 }
-
-// The shadels of a chunk in the box [lo, hi] (inclusive, inside [0,8)²):
-// the row's bits times one bit per row of the box (no carries: row < 256).
-uint64_t sgBoxBits(uvec2 lo, uvec2 hi) {
-  uint row = ((2u << (hi.x - lo.x)) - 1u) << lo.x;
-  uint64_t rows = (uint64_t(0x0101010101010101ul) >> (SG_CHUNK_SIZE * (7u - (hi.y - lo.y)))) << (SG_CHUNK_SIZE * lo.y);
-  return uint64_t(row) * rows;
-}
+#endif
 
 #ifdef SG_MARK_OWN_CHUNK_ONLY
 // What composite reads of the tile, bilinear or trilinear: the 2x2 taps at
@@ -104,12 +110,19 @@ uint64_t sgBoxBits(uvec2 lo, uvec2 hi) {
 // chunk (lo..min(lo + 1, 7)), whatever their weight (a weight-0 tap is still
 // fetched). The part in the gutter (the next chunks' first column / row)
 // shadel_mark_neighbours.comp derives from these masks after the draws.
+// With SG_MARK_REQUESTS (bilinear: one footprint a pixel) it writes the mask
+// slot and lo as this pixel's request instead (shadel_box.glsl), and
+// shadel_mark_requests.comp sets the bits after the depth pre-pass: no atomic
+// here, whose loop over the lanes lavapipe runs in every group, needed or not.
 void markFootprint(SgMarkLevel level, SgBilinearTaps taps, uvec2 tile) {
   uvec2 inChunk = tile & (SG_CHUNK_SIZE - 1u);
   uvec2 chunkOrigin = tile - inChunk;
-  uint64_t bits = sgBoxBits(inChunk, min(inChunk + 1u, uvec2(SG_CHUNK_SIZE - 1u)));
-  sgMarkShadels(sgMarkStorageBase(level, chunkOrigin) + sgShadelAddress(chunkOrigin, params.entriesPerSideLog2).chunkIndex,
-                bits);
+  uint slot = sgMarkStorageBase(level, chunkOrigin) + sgShadelAddress(chunkOrigin, params.entriesPerSideLog2).chunkIndex;
+#ifdef SG_MARK_REQUESTS
+  outRequest = sgMarkRequest(slot, inChunk);
+#else
+  sgMarkShadels(slot, sgBoxBits(inChunk, min(inChunk + 1u, uvec2(SG_CHUNK_SIZE - 1u))));
+#endif
 }
 #else
 // What composite reads of the tile: the footprint's taps at (tile & 7) +
@@ -185,7 +198,11 @@ void main() {
   SgLevelSelection sel =
       sgSelectFilterLevel(SG_FILTER, dFdx(inShadingUv) * size0, dFdy(inShadingUv) * size0, params.bias, levels.y);
 #ifdef SG_ALPHA_TEST
+#ifdef SG_MARK_REQUESTS
+  if (sgMaskedOut(inUv0, inUv1, inColorAlpha)) discard;  // no request: the clear stays
+#else
   if (sgMaskedOut(inUv0, inUv1, inColorAlpha)) return;  // after the derivatives: uniform control flow for them
+#endif
 #endif
   markLevel(sel.fine);
   if (kMarkCoarse && sel.coarse != sel.fine) markLevel(sel.coarse);

@@ -60,7 +60,8 @@ void registerDecoupledPackage(plugin::Registry& registry) {
                       d.publish(ctx, {"shadel.remap", "shadel.counters", "shadel.work"});
                     }});
   registry.addPass({.name = "shadel-mark",
-                    .description = "rasterizes decoupled objects against the depth and marks the chunks composite will read",
+                    .description = "marks the chunks composite will read: from the requests the depth pre-pass wrote (bilinear), "
+                                   "else rasterizing decoupled objects against the depth",
                     // view.decoupled: it draws only decoupled objects (a frame without them may skip the z-prepass).
                     .reads = {"scene.depth", "shadel.remap", plugin::kDecoupledDrawsResource},
                     .writes = {"shadel.remap"},
@@ -68,6 +69,7 @@ void registerDecoupledPackage(plugin::Registry& registry) {
                     .declare = [](FrameContext& ctx) {
                       DecoupledShading& d = shading(ctx);
                       if (!d.shading()) return;
+                      d.takeMarkRequests(ctx);
                       passes::addShadelMark(ctx.graph(), d.frame(ctx), ctx.read("scene.depth"));
                       d.publish(ctx, {"shadel.remap"});
                     }});
@@ -105,8 +107,9 @@ void registerDecoupledPackage(plugin::Registry& registry) {
   registry.addPass({.name = "composite",
                     .description = "draws decoupled objects filtering their shaded samples through the remap table",
                     .reads = {"scene.hdr", "scene.depth", "shadel.shaded", "shadel.remap", "shadel.counters"},
-                    // shadel.shaded: its shadel-gutter step fills the tiles' gutters first.
-                    .writes = {"scene.hdr", "shadel.shaded", "shadel.counters"},
+                    // shadel.shaded: its shadel-gutter step fills the tiles' gutters first;
+                    // scene.depth: of fragments tied in depth it draws the first (composite.hpp).
+                    .writes = {"scene.hdr", "scene.depth", "shadel.shaded", "shadel.counters"},
                     .parameters = {{"filter", -1, "0 point, 1 bilinear, 2 trilinear; -1: the renderer's setting"}},
                     // The filter is settled here, before any pass declares: shadel-mark
                     // marks the footprint of the same filter.
@@ -117,16 +120,18 @@ void registerDecoupledPackage(plugin::Registry& registry) {
                       if (filter > 2)
                         throw plugin::FrameError("pass 'composite': filter " + std::to_string(filter) +
                                                  " (0 point, 1 bilinear, 2 trilinear)");
-                      if (filter >= 0) d.setFrameFilter(filter);
+                      if (filter >= 0) d.setFrameFilter(ctx, filter);
                     },
                     .declare = [](FrameContext& ctx) {
                       DecoupledShading& d = shading(ctx);
                       if (!d.shading()) return;
                       passes::DecoupledFrame& frame = d.frame(ctx);
                       const auto hdr = ctx.read("scene.hdr");
-                      ctx.write("scene.hdr", passes::addComposite(ctx.graph(), frame, hdr, ctx.read("scene.depth"),
-                                                                  passes::clearIfUnwritten(
-                                                                      hdr, passes::hdrBackground(ctx.inputs().scene.lights))));
+                      const auto out = passes::addComposite(
+                          ctx.graph(), frame, hdr, ctx.read("scene.depth"),
+                          passes::clearIfUnwritten(hdr, passes::hdrBackground(ctx.inputs().scene.lights)));
+                      ctx.write("scene.hdr", out.color);
+                      ctx.write("scene.depth", out.depth);
                       d.publish(ctx, {"shadel.shaded", "shadel.counters"});
                     }});
   registry.addPass({.name = "counters-readback",

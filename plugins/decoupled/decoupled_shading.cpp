@@ -19,6 +19,7 @@
 #include "layer-shade/layer_shade.hpp"
 #include "live-entry-blocks/live_entry_blocks.hpp"
 #include "shade-frame/shade_frame_work.hpp"
+#include "shadel-mark/shadel_mark.hpp"
 #include "id_map_budget.hpp"
 #include "layer_rate.hpp"
 #include "shade-reuse/shade_reuse.hpp"
@@ -474,6 +475,8 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
                                                        layerPlan_.persistent.empty() && !settings_.baseline &&
                                                        settings_.view != DebugView::Sheet});
   passes::DecoupledFrame& frame = *frame_;
+  offerDepthPassDraws(ctx);
+  markByRequests_ = false;
   declaredHistory_ = history_.declare(graph, in.device, in.executor, materials, layerPlan_.persistent, keepShading,
                                       storage_.widthTexels(), storage_.heightTexels(), remapBytes_, frames_,
                                       std::to_string(in.width) + "x" + std::to_string(in.height));
@@ -516,10 +519,29 @@ void DecoupledShading::setFixedBias(std::optional<float> bias) {
   bias_ = bias.value_or(adjuster_.bias());
 }
 
-void DecoupledShading::setFrameFilter(int filter) {
+void DecoupledShading::setFrameFilter(render::FrameContext& ctx, int filter) {
   if (!frame_) return;
   if (frame_->markedFilter >= 0) throw std::logic_error("the composite filter changed after shadel-mark was declared");
   frame_->filter = filter;
+  offerDepthPassDraws(ctx);
+}
+
+void DecoupledShading::offerDepthPassDraws(render::FrameContext& ctx) {
+  auto& offer = ctx.depthPassDraws();
+  offer.reset();
+  if (!frame_ || !shading() || !settings_.markRequests || !passes::markRequestsPossible(*frame_)) return;
+  std::vector<uint32_t> draws(frame_->view.draws.begin(), frame_->view.draws.end());
+  std::sort(draws.begin(), draws.end());
+  offer = render::DepthPassDraws{.draws = std::move(draws),
+                                 .draw = [frame = *frame_](PassContext& pc, VkBuffer indirect) {
+                                   passes::drawMarkRequests(pc, frame, indirect);
+                                 }};
+}
+
+void DecoupledShading::takeMarkRequests(render::FrameContext& ctx) {
+  const auto& offer = ctx.depthPassDraws();
+  frame_->markRequests = offer ? offer->target : graph::ResourceHandle{};
+  markByRequests_ = frame_->markRequests.valid();
 }
 
 passes::DecoupledFrame& DecoupledShading::frame(render::FrameContext& ctx) {
@@ -644,6 +666,7 @@ DecoupledStats DecoupledShading::stats() const {
   s.remapBytes = remapBytes_;
   s.historyBytes = history_.bytes();
   s.layerDispatches = layerPlan_.dispatches;
+  s.markedByRequests = markByRequests_;
   s.ownedEntries = ownedEntryCount_;
   s.liveEntries = uint32_t(shadel::entriesIn(liveSpans_[ring()]));
   s.visitedEntries = s.counters.entriesVisited;

@@ -51,6 +51,11 @@ struct DecoupledSettings {
   bool baseline = false;           // bench --baseline: shadel-mark as before issue 14
   // Shade only the shadels composite reads (passes::DecoupledFrame::shadelMasks, where it applies); false: whole chunks.
   bool shadelMasks = true;
+  // With the bilinear filter and shadel masks the depth pre-pass writes
+  // shadel-mark's requests (passes::markRequestsPossible); false: shadel-mark
+  // rasterizes the objects again and marks with atomics (the same images;
+  // tests compare the two).
+  bool markRequests = true;
   // Invocations of a layer-shade workgroup (8 to 64, each shading 64 / n
   // shadels of its chunk); 0: the device's subgroup size. The images do not
   // depend on it; tests compare the shapes.
@@ -111,6 +116,7 @@ struct DecoupledStats {
   uint64_t idMapBytes = 0;
   uint64_t historyBytes = 0;  // persistent layers' images and last frame's remap
   uint32_t layerDispatches = 0;  // indirect layer-shade dispatches of the frame
+  bool markedByRequests = false;  // the depth pre-pass wrote shadel-mark's requests (DecoupledFrame::markRequests)
   // Owned remap entries allocated, and those the per-entry passes visited in
   // that frame (live spans), in how many runs (dispatches per such pass).
   uint32_t ownedEntries = 0, liveEntries = 0, liveSpans = 0;
@@ -159,7 +165,10 @@ class DecoupledShading {
   void addShadeFrameTail(graph::RenderGraph& graph, const plugin::Registry& materials);
   // This frame's composite filter instead of the setting (composite's
   // `filter` parameter): from a prepare step, before any pass declares.
-  void setFrameFilter(int filter);
+  void setFrameFilter(render::FrameContext& ctx, int filter);
+  // shadel-mark's declare: the requests the depth pre-pass wrote, if it drew
+  // the decoupled objects (offerDepthPassDraws), become frame().markRequests.
+  void takeMarkRequests(render::FrameContext& ctx);
   // From the next frame on: a fixed bias, or the adjuster's (empty).
   void setFixedBias(std::optional<float> bias);
   const DecoupledSettings& settings() const { return settings_; }
@@ -197,6 +206,10 @@ class DecoupledShading {
   const std::vector<ShrunkIdMap>& shrunkIdMaps() const { return shrunkIdMaps_; }
 
  private:
+  // Where shadel-mark's requests apply, hands the depth pre-pass the decoupled
+  // draws (render::DepthPassDraws), so they are rasterized once less; else
+  // takes the offer back.
+  void offerDepthPassDraws(render::FrameContext& ctx);
   void createTables(gpu::Device& device);
   // Gives shadel space to draws whose object now asks for decoupled, releases the rest.
   void syncObjects(const render::FrameContext& ctx);
@@ -257,6 +270,7 @@ class DecoupledShading {
   bool tablesDirty_ = true;
   // This frame: the objects shaded decoupled (draws = ids, materials).
   std::vector<uint32_t> frameObjects_;
+  bool markByRequests_ = false;  // this frame's DecoupledFrame::markRequests was written
   std::vector<std::string> frameMaterials_;
   std::vector<RunTimeForward> frameForward_;  // allocated objects drawn forward this frame (mode auto)
   LayerPlan layerPlan_;

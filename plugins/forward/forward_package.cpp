@@ -83,6 +83,12 @@ graph::ResourceHandle occlusionCull(FrameContext& ctx, graph::ResourceHandle dep
   return cull.late;
 }
 
+// Draws a package adds to the depth pre-pass (render::DepthPassDraws), if any.
+render::DepthPassDraws* packageDraws(FrameContext& ctx) {
+  auto& draws = ctx.depthPassDraws();
+  return draws ? &*draws : nullptr;
+}
+
 // The depth pre-pass, occlusion-culled: the draws visible last frame first,
 // then every draw tested against that depth, then the draws found visible
 // that were not drawn yet.
@@ -90,10 +96,10 @@ graph::ResourceHandle culledZPrepass(FrameContext& ctx, passes::OverdrawProbe* p
   importDrawCommands(ctx, *ctx.inputs().culling);
   const auto view = ctx.view(ctx.visibleDraws());
   const auto tested = alphaTestedDraws(ctx);
-  const auto depth =
-      passes::addZPrepass(ctx.graph(), view, depthTarget(ctx), tested, {probe, passes::OverdrawSlot::Prepass});
+  const auto depth = passes::addZPrepass(ctx.graph(), view, depthTarget(ctx), tested,
+                                         {probe, passes::OverdrawSlot::Prepass}, packageDraws(ctx));
   return passes::addZPrepassLate(ctx.graph(), view, depth, occlusionCull(ctx, depth), tested,
-                                 {probe, passes::OverdrawSlot::PrepassLate});
+                                 {probe, passes::OverdrawSlot::PrepassLate}, packageDraws(ctx));
 }
 
 passes::ZPrepassChoice& zPrepassChoice(FrameContext& ctx) {
@@ -236,7 +242,8 @@ void registerForwardPackage(plugin::Registry& registry) {
                     .writes = {render::kSceneVerticesResource},
                     .declare = declareSkinning});
   registry.addPass({.name = "z-prepass",
-                    .description = "depth of every visible opaque object, forward or decoupled, and of decoupled alpha-mask objects (alpha-tested); "
+                    .description = "depth of every visible opaque object, forward or decoupled, and of decoupled alpha-mask objects (alpha-tested), "
+                                   "with the draws a package adds (decoupled, bilinear: shadel-mark's requests); "
                                    "without decoupled objects only where overdraw pays for it (else forward-opaque writes the depth)",
                     .reads = {plugin::kForwardDrawsResource},
                     .writes = {"scene.depth"},
@@ -252,7 +259,8 @@ void registerForwardPackage(plugin::Registry& registry) {
                       }
                       ctx.write("scene.depth",
                                 passes::addZPrepass(ctx.graph(), ctx.view(ctx.visibleDraws()), depthTarget(ctx),
-                                                    alphaTestedDraws(ctx), {probe, passes::OverdrawSlot::Prepass}));
+                                                    alphaTestedDraws(ctx), {probe, passes::OverdrawSlot::Prepass},
+                                                    packageDraws(ctx)));
                     }});
   registry.addPass({.name = "object-pick",
                     .description = "the object under a pixel, read back (only in a frame with a pick pending: "

@@ -255,8 +255,20 @@ TEST(Cli, DecoupledStatsHaveTheDocumentedKeys) {
   EXPECT_EQ(json["objects_decoupled"], 11);
   EXPECT_GT(json["covered_pixels"].get<uint64_t>(), 0u);
   EXPECT_EQ(json["composite_misses"], 0);
-  for (const char* pass : {"shadel-clear", "shadel-mark", "shadel-allocate", "work-aggregate", "layer-shade", "composite"})
+  // shadel-mark-requests: the default bilinear filter's mark, from requests the z-prepass wrote.
+  for (const char* pass : {"shadel-clear", "shadel-mark-requests", "shadel-allocate", "work-aggregate", "layer-shade",
+                           "composite"})
     EXPECT_TRUE(json["pass_ms"].contains(pass)) << pass;
+  EXPECT_FALSE(json["pass_ms"].contains("shadel-mark"));
+  // --mark raster: shadel-mark draws the objects again, and the z-prepass writes no requests.
+  r = run("render --mode decoupled --mark raster --size 96x64 --frames 2 -o " + (tempDir() / "d.png").string() +
+          " --stats " + stats.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream raster(stats);
+  const auto rasterJson = nlohmann::json::parse(raster);
+  EXPECT_TRUE(rasterJson["pass_ms"].contains("shadel-mark"));
+  EXPECT_FALSE(rasterJson["pass_ms"].contains("shadel-mark-requests"));
+  EXPECT_EQ(rasterJson["composite_misses"], 0);
 }
 
 TEST(Cli, AFrameThatDeclaresLastFramesGraphReusesItsPlan) {
@@ -287,7 +299,8 @@ std::set<std::string> passNames(const std::string& args) {
 
 TEST(Cli, OnlyTheShadingTheSceneUsesIsInTheGraph) {
   const auto automatic = passNames("");
-  for (const char* pass : {"shadel-clear", "shadel-mark", "shadel-allocate", "work-aggregate", "layer-shade", "composite"})
+  for (const char* pass : {"shadel-clear", "shadel-mark-requests", "shadel-allocate", "work-aggregate", "layer-shade",
+                           "composite"})
     EXPECT_TRUE(automatic.count(pass)) << pass << ": the default scene is decoupled under auto";
   const auto forward = passNames("--mode forward");
   for (const auto& name : forward) EXPECT_EQ(name.find("shadel-"), std::string::npos) << name;

@@ -188,6 +188,35 @@ TEST_P(DecoupledFilters, ShadelMasksShadeWhatCompositeReads) {
   EXPECT_GT(skipped, 0u) << "the masks left nothing out";
 }
 
+// shadel-mark's requests (bilinear with shadel masks): the depth pre-pass
+// draws the decoupled objects with the mark's fragment shader, which writes
+// each pixel's mask slot and box; a compute step merges them per 4x4 pixels
+// and sets the bits, and shadel-mark-neighbours derives the occupancy. Only
+// the fragment that keeps the depth requests, where shadel-mark's atomics
+// mark every fragment tied with it (composite draws the first of them), so
+// they must give the same images with no miss and at most the atomics'
+// chunks, from random cameras.
+TEST_P(DecoupledScenes, DepthPassRequestsMarkWhatCompositeReads) {
+  LOAD_OR_SKIP(loaded, GetParam());
+  Session requests(*loaded, scene::ShadingMode::Decoupled, {.storageChunks = 16384});
+  Session atomics(*loaded, scene::ShadingMode::Decoupled, {.storageChunks = 16384, .markRequests = false});
+  const scene::Bounds bounds = scene::worldBounds(requests.scene());
+  std::mt19937 rng(2112);
+  int byRequests = 0;
+  for (int i = 0; i < 12; ++i) {
+    const scene::Camera camera = randomCamera(bounds, rng, i);
+    const gpu::HostImage a = requests.render(96, camera), b = atomics.render(96, camera);
+    const auto r = requests.stats(), w = atomics.stats();
+    EXPECT_FALSE(w.markedByRequests);
+    byRequests += r.markedByRequests ? 1 : 0;
+    EXPECT_TRUE(a.rgba8 == b.rgba8) << GetParam() << " camera " << i;
+    EXPECT_LE(r.counters.chunksMarked, w.counters.chunksMarked) << "camera " << i;
+    EXPECT_EQ(r.counters.compositeMisses, 0u) << "camera " << i;
+    EXPECT_EQ(w.counters.compositeMisses, 0u) << "camera " << i;
+  }
+  EXPECT_GT(byRequests, 0) << "no frame marked by requests: the test compares nothing";
+}
+
 // MorphPrimitivesTest: its texture has no mip levels, so its level follows
 // the footprint's anisotropy (shadel::kUnmipmappedLevelRule) in both passes.
 INSTANTIATE_TEST_SUITE_P(Scenes, DecoupledFilters,

@@ -64,6 +64,9 @@ SG_CONST uint kBindLevelRectTexels = 44u;  // 40..43, 48, 49: frame_interface.h
 SG_CONST uint kBindChunkSlotTexels = 45u;
 // shadel-mark-neighbours reads the shadel masks two at a time (RGBA32UI).
 SG_CONST uint kBindShadelMaskPairTexels = 46u;
+// shadel-mark's bilinear requests (R32UI storage image, one per pixel): what
+// shadel-mark-requests turns into shadel-mask bits.
+SG_CONST uint kBindMarkRequests = 47u;
 // A chunk slot: the physical chunk; kNoSlot: no storage.
 SG_CONST uint kNoSlot = 0xFFFFFFFFu;
 SG_CONST uint kStaleAgeBins = 16u;  // SgShadeCounters.staleAgeChunks: ages 0..14, then 15 or more

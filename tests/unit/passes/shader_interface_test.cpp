@@ -251,6 +251,7 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
   const uint32_t kLevelRule = shadel::packLevelRule(shadel::kUnmipmappedLevelRule);
   errors += mismatches("z-prepass", passes::zPrepassPipeline());
   errors += mismatches("z-prepass alpha-test", passes::zPrepassAlphaTestPipeline(VK_NULL_HANDLE));
+  errors += mismatches("z-prepass no-value", passes::zPrepassNoValuePipeline());
   errors += mismatches("exposure-meter", passes::exposureMeterPipeline());
   errors += mismatches("exposure", passes::exposurePipeline(false));
   errors += mismatches("exposure manual", passes::exposurePipeline(true));
@@ -275,6 +276,13 @@ TEST_F(ShaderInterface, EveryPassShaderMatchesItsDeclaration) {
             errors += mismatches("shadel-mark filter=" + std::to_string(filter) + (alphaTest ? " alpha-test" : "") +
                                      (masks ? " masks" : "") + passes::levelRuleVariant(rule),
                                  passes::shadelMarkPipeline(filter, baseline, alphaTest, VK_NULL_HANDLE, masks, rule));
+  // Requests: bilinear with masks only (passes::markRequestsPossible).
+  for (bool alphaTest : {false, true})
+    for (uint32_t rule : {0u, kLevelRule})
+      errors += mismatches(std::string("shadel-mark requests") + (alphaTest ? " alpha-test" : "") +
+                               passes::levelRuleVariant(rule),
+                           passes::shadelMarkPipeline(1, false, alphaTest, VK_NULL_HANDLE, true, rule, true));
+  errors += mismatches("shadel-mark-requests", passes::shadelMarkRequestsPipeline());
   errors += mismatches("shadel-mark-neighbours", passes::shadelMarkNeighboursPipeline());
   for (bool header : {false, true}) errors += mismatches("live-entry-blocks", passes::liveEntryBlocksPipeline(header));
   for (bool apply : {false, true}) errors += mismatches("support-expand", passes::supportExpandPipeline(apply));
