@@ -50,7 +50,7 @@ void drawDepth(PassContext& ctx, const render::SceneView& view, VkBuffer indirec
   counter.end(ctx.cmd());
 }
 
-// The package's target, cleared first (`clear`) or added to.
+// The package's target: made by the first pre-pass of the frame, written by each.
 graph::ResourceHandle writePackageTarget(graph::RenderGraph& graph, graph::Pass& pass, render::DepthPassDraws* package) {
   if (!package) return {};
   graph::ResourceHandle target = package->target.valid()
