@@ -5,6 +5,7 @@
 // passes hand to each other. The decoupled package (plugins/decoupled) fills
 // it. The binding numbers and records are the shared shader interface
 // (framework/shadel/shaders/decoupled_interface.h).
+#include <cstdint>
 #include <functional>
 #include <initializer_list>
 #include <span>
@@ -86,6 +87,10 @@ struct DecoupledFrame {
   // and box, shadel_box.glsl; shadel-mark's markRequestsPossible), which
   // shadel-mark-requests turns into mask bits; invalid: shadel-mark rasterizes.
   graph::ResourceHandle markRequests;
+  // The pixels the decoupled draws can cover (x0, y0, x1, y1, end exclusive;
+  // render::boxScreenRect of their world boxes): shadel-mark-requests merges
+  // only there (on lavapipe a compute shader pays for empty pixels too).
+  int32_t cover[4] = {0, 0, INT32_MAX, INT32_MAX};
 };
 
 // The define shadel-mark and composite are both compiled with: the filter

@@ -37,6 +37,7 @@ struct FrameInputs {
   gpu::GraphExecutor& executor;  // to bind a package's own persistent and imported resources
   const std::vector<scene::ShadingMode>& objectModes;  // per scene instance: its requested mode this frame
   std::span<const glm::vec4> drawSpheres;  // per draw: its world bounding sphere (xyz centre, w radius)
+  std::span<const scene::Bounds> drawBounds;  // per draw: its world bounding box (the sphere holds it)
   uint64_t frameNumber = 0;
   glm::vec3 cameraPosition{0.0f};
   // Pixels an object of size 1 covers at distance 1 (perspective); 0 for orthographic.

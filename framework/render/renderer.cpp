@@ -15,12 +15,16 @@ namespace sg::render {
 namespace {
 
 // The world bounding sphere of every draw, for frustum and occlusion culling.
-std::vector<glm::vec4> drawSpheres(const scene::Scene& scene, const std::vector<DrawItem>& draws) {
+std::vector<scene::Bounds> drawBounds(const scene::Scene& scene, const std::vector<DrawItem>& draws) {
+  std::vector<scene::Bounds> bounds;
+  for (const auto& draw : draws)
+    bounds.push_back(scene::transformBounds(scene.meshes[size_t(scene.instances[draw.instance].mesh)].bounds, draw.world));
+  return bounds;
+}
+
+std::vector<glm::vec4> drawSpheres(const std::vector<scene::Bounds>& bounds) {
   std::vector<glm::vec4> spheres;
-  for (const auto& draw : draws) {
-    const auto world = scene::transformBounds(scene.meshes[size_t(scene.instances[draw.instance].mesh)].bounds, draw.world);
-    spheres.emplace_back(world.center(), world.radius());
-  }
+  for (const auto& b : bounds) spheres.emplace_back(b.center(), b.radius());
   return spheres;
 }
 
@@ -49,7 +53,7 @@ Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, const plugin:
       frame_(std::move(frame)),
       layerTextures_(device, registry),
       gpuScene_(device.context(), device.memory(), scene),
-      culling_(device.context(), device.memory(), gpuScene_.draws(), drawSpheres(scene, gpuScene_.draws())),
+      culling_(device.context(), device.memory(), gpuScene_.draws(), drawSpheres(drawBounds(scene, gpuScene_.draws()))),
       deformation_(device.context(), device.memory(), scene, gpuScene_.deformation()),
       executor_(device) {
   registry_.check();
@@ -75,7 +79,8 @@ Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, const plugin:
     if (!registry_.hasMaterial(draw.materialStack))
       throw plugin::PluginError("object '" + scene.instances[draw.instance].name + "' uses material '" +
                                 draw.materialStack + "', which no plugin registered");
-  drawSpheres_ = drawSpheres(scene, gpuScene_.draws());
+  drawBounds_ = drawBounds(scene, gpuScene_.draws());
+  drawSpheres_ = drawSpheres(drawBounds_);
   for (uint32_t i = 0; i < scene.instances.size(); ++i)
     if (deformation_.deformed(i)) updateSpheres(i, scene.instances[i].world);
   // Plugins' GLSL (their layers' sources) by virtual path.
@@ -115,6 +120,7 @@ void Renderer::updateSpheres(uint32_t instance, const glm::mat4& world) {
   const auto& draws = gpuScene_.draws();
   for (uint32_t d = 0; d < draws.size(); ++d) {
     if (draws[d].instance != instance) continue;
+    drawBounds_[d] = bounds;
     drawSpheres_[d] = glm::vec4(bounds.center(), bounds.radius());
     culling_.setSphere(d, drawSpheres_[d]);
   }
@@ -166,7 +172,7 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
                           : 0.0f;
   auto frame = std::make_unique<Frame>(Frame{
       {gpuScene_, uniformBuffer, lightBuffer, noLightGrid_, gpuScene_.allDraws(), registry_, layerTextures_},
-      {scene_, device_, executor_, modes_, drawSpheres_, frameNumber_++, cam.position(), focal, uniforms.viewProjection,
+      {scene_, device_, executor_, modes_, drawSpheres_, drawBounds_, frameNumber_++, cam.position(), focal, uniforms.viewProjection,
        settings.width, settings.height, settings.occlusionCulling ? &culling_ : nullptr},
       {}, {}, {}, {}, std::move(shadows)});
   frame->inputs.shadowViews = frame->shadows;

@@ -45,7 +45,7 @@ bool markRequestsPossible(const DecoupledFrame& frame) {
 
 gpu::ComputePipelineDesc shadelMarkRequestsPipeline() {
   return {.shader = {.path = "passes/shadel-mark/shadel_mark_requests.comp"},
-          .layout = decoupledLayout(kRequestMergeBindings, false)};
+          .layout = decoupledLayout(kRequestMergeBindings, false, 4 * sizeof(int32_t))};
 }
 
 gpu::ComputePipelineDesc shadelMarkNeighboursPipeline() {
@@ -115,7 +115,8 @@ void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::Reso
   frame.markedFilter = frame.filter;
   const bool ownChunkOnly = markOwnChunkOnly(frame.filter, masks);
   if (frame.markRequests.valid() && masks && ownChunkOnly) {
-    // The depth pre-pass wrote the requests (drawMarkRequests): their bits into the masks.
+    // The depth pre-pass wrote the requests (drawMarkRequests): their bits into
+    // the masks, over the pixels the decoupled draws can cover.
     auto& merge = graph.addPass("shadel-mark-requests", graph::QueueClass::Graphics, graph::PassKind::Compute);
     merge.read(frame.markRequests, graph::Access::StorageRead);
     frame.masks = merge.write(frame.masks, graph::Access::StorageReadWrite);
@@ -123,8 +124,12 @@ void addShadelMark(graph::RenderGraph& graph, DecoupledFrame& frame, graph::Reso
       const auto& pipeline = ctx.device().pipeline("shadel-mark-requests", [] { return shadelMarkRequestsPipeline(); });
       bindDecoupled(ctx, pipeline, frame, kRequestMergeBindings);
       const VkExtent2D size = ctx.image(frame.markRequests).extent();
+      const int32_t rect[4] = {std::max(frame.cover[0], 0), std::max(frame.cover[1], 0),
+                               std::min(frame.cover[2], int32_t(size.width)), std::min(frame.cover[3], int32_t(size.height))};
+      if (rect[2] <= rect[0] || rect[3] <= rect[1]) return;  // nothing drawn on screen: no request
+      vkCmdPushConstants(ctx.cmd(), pipeline.layout(), VK_SHADER_STAGE_ALL, 0, sizeof rect, rect);
       // 8x8 threads of 4x4 pixels a workgroup.
-      vkCmdDispatch(ctx.cmd(), (size.width + 31) / 32, (size.height + 31) / 32, 1);
+      vkCmdDispatch(ctx.cmd(), uint32_t(rect[2] - rect[0] + 31) / 32, uint32_t(rect[3] - rect[1] + 31) / 32, 1);
     });
   } else {
     frame.markRequests = {};

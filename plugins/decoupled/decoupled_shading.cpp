@@ -8,6 +8,7 @@
 
 #include <shadelgraph/gpu/pass_context.hpp>
 #include <decoupled_frame.hpp>
+#include <shadelgraph/render/frustum.hpp>
 #include <shadelgraph/render/material_variants.hpp>
 #include <shadelgraph/scene/scene.hpp>
 #include <shadelgraph/scene/uv_chart.hpp>
@@ -475,6 +476,13 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
                                                        layerPlan_.persistent.empty() && !settings_.baseline &&
                                                        settings_.view != DebugView::Sheet});
   passes::DecoupledFrame& frame = *frame_;
+  glm::ivec4 cover(int(in.width), int(in.height), 0, 0);
+  for (const uint32_t d : frame.view.draws) {
+    const glm::ivec4 r = render::boxScreenRect(in.viewProjection, in.drawBounds[d], in.width, in.height);
+    if (r.z <= r.x || r.w <= r.y) continue;
+    cover = glm::ivec4(glm::min(glm::ivec2(cover), glm::ivec2(r)), glm::max(glm::ivec2(cover.z, cover.w), glm::ivec2(r.z, r.w)));
+  }
+  std::copy_n(&cover.x, 4, frame.cover);
   offerDepthPassDraws(ctx);
   markByRequests_ = false;
   declaredHistory_ = history_.declare(graph, in.device, in.executor, materials, layerPlan_.persistent, keepShading,

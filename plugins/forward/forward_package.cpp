@@ -138,7 +138,7 @@ bool drawsZPrepass(FrameContext& ctx) {
     choice.recordForced(drawn, reason);
     return drawn;
   };
-  if (!ctx.draws().decoupled.empty()) return forced(true, "decoupled objects visible (shadel-mark tests its depth)");
+  if (!ctx.draws().decoupled.empty()) return forced(true, "decoupled objects visible (shadel-mark and composite use its depth)");
   if (ctx.has("scene.depth")) return forced(true, "an earlier pass drew depth");
   const auto reads = [](const plugin::PassPlugin& p, const char* resource) {
     return std::find(p.reads.begin(), p.reads.end(), resource) != p.reads.end();
