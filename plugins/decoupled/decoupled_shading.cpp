@@ -476,6 +476,7 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
                                                        layerPlan_.persistent.empty() && !settings_.baseline &&
                                                        settings_.view != DebugView::Sheet});
   passes::DecoupledFrame& frame = *frame_;
+  // Where the decoupled draws can land on screen: shadel-mark-requests merges there only.
   glm::ivec4 cover(int(in.width), int(in.height), 0, 0);
   for (const uint32_t d : frame.view.draws) {
     const glm::ivec4 r = render::boxScreenRect(in.viewProjection, in.drawBounds[d], in.width, in.height);
