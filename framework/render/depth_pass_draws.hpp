@@ -1,7 +1,7 @@
 #pragma once
 // Draws a package hands the depth pre-pass instead of rasterizing them once
 // more in a pass of its own. The pre-pass draws them with the package's
-// pipelines into one more colour target (the output's size, `format`),
+// pipelines into one more colour target (R32UI, the output's size),
 // before its own depth-only draws, and gives its own draws a fragment shader
 // that writes 0 there and compares LESS: a package's fragment tied in depth
 // with one of them keeps the pixel. So each pixel's value is the one of the
@@ -21,7 +21,6 @@ namespace sg::render {
 
 struct DepthPassDraws {
   std::vector<uint32_t> draws;  // GpuScene draw indices the package draws (sorted); the pre-pass leaves them out
-  graph::Format format = graph::Format::R32Uint;
   // Records the package's draws (pipelines, descriptors), each from command
   // d of `indirect` (the frame's draw commands; those the phase draws).
   std::function<void(PassContext&, VkBuffer indirect)> draw;

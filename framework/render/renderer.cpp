@@ -14,7 +14,7 @@
 namespace sg::render {
 namespace {
 
-// The world bounding sphere of every draw, for frustum and occlusion culling.
+// The world bounding box of every draw, and the sphere around each (frustum and occlusion culling).
 std::vector<scene::Bounds> drawBounds(const scene::Scene& scene, const std::vector<DrawItem>& draws) {
   std::vector<scene::Bounds> bounds;
   for (const auto& draw : draws)
@@ -53,7 +53,9 @@ Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, const plugin:
       frame_(std::move(frame)),
       layerTextures_(device, registry),
       gpuScene_(device.context(), device.memory(), scene),
-      culling_(device.context(), device.memory(), gpuScene_.draws(), drawSpheres(drawBounds(scene, gpuScene_.draws()))),
+      drawBounds_(drawBounds(scene, gpuScene_.draws())),
+      drawSpheres_(drawSpheres(drawBounds_)),
+      culling_(device.context(), device.memory(), gpuScene_.draws(), drawSpheres_),
       deformation_(device.context(), device.memory(), scene, gpuScene_.deformation()),
       executor_(device) {
   registry_.check();
@@ -79,8 +81,6 @@ Renderer::Renderer(gpu::Device& device, const scene::Scene& scene, const plugin:
     if (!registry_.hasMaterial(draw.materialStack))
       throw plugin::PluginError("object '" + scene.instances[draw.instance].name + "' uses material '" +
                                 draw.materialStack + "', which no plugin registered");
-  drawBounds_ = drawBounds(scene, gpuScene_.draws());
-  drawSpheres_ = drawSpheres(drawBounds_);
   for (uint32_t i = 0; i < scene.instances.size(); ++i)
     if (deformation_.deformed(i)) updateSpheres(i, scene.instances[i].world);
   // Plugins' GLSL (their layers' sources) by virtual path.

@@ -103,11 +103,11 @@ class Renderer {
   plugin::ResolvedFrame frame_;
   std::map<std::string, std::shared_ptr<void>> states_;
   std::vector<scene::ShadingMode> modes_;
-  std::vector<glm::vec4> drawSpheres_;  // world bounding sphere of every draw, for frustum culling
-  std::vector<scene::Bounds> drawBounds_;  // world bounding box of every draw (the sphere holds it)
   uint64_t frameNumber_ = 0;
   LayerTextures layerTextures_;
   GpuScene gpuScene_;
+  std::vector<scene::Bounds> drawBounds_;  // world bounding box of every draw (the sphere holds it)
+  std::vector<glm::vec4> drawSpheres_;     // world bounding sphere of every draw, for frustum culling
   DrawCulling culling_;
   ObjectDeformation deformation_;
   gpu::Buffer frameUniforms_[2];  // one per frame in flight

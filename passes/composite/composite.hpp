@@ -12,8 +12,8 @@ struct CompositeOutput {
 // Draws the decoupled objects with their shaded samples (manual trilinear
 // through the remap table) over the forward pass's colour. Of fragments tied
 // in depth it draws one only, the last-drawn (compositePipeline), and so
-// writes the depth. `clear`: the colour is still unwritten (no forward pass drew before
-// it), clear it first.
+// writes the depth. `clear`: the colour is still unwritten (no forward pass
+// drew before it), clear it first.
 CompositeOutput addComposite(graph::RenderGraph& graph, DecoupledFrame& frame, graph::ResourceHandle color,
                              graph::ResourceHandle depth, std::optional<VkClearColorValue> clear = {});
 // filter: 0 point, 1 bilinear, 2 trilinear; levelView shows the detail level

@@ -56,7 +56,7 @@ graph::ResourceHandle writePackageTarget(graph::RenderGraph& graph, graph::Pass&
   graph::ResourceHandle target = package->target.valid()
                                      ? package->target
                                      : graph.createImage("depth pre-pass values",
-                                                         {.format = package->format, .size = graph::Size::relative(1.0f)});
+                                                         {.format = graph::Format::R32Uint, .size = graph::Size::relative(1.0f)});
   package->target = pass.write(target, graph::Access::ColorAttachment);
   return package->target;
 }

@@ -485,7 +485,6 @@ void DecoupledShading::prepare(render::FrameContext& ctx) {
   }
   std::copy_n(&cover.x, 4, frame.cover);
   offerDepthPassDraws(ctx);
-  markByRequests_ = false;
   declaredHistory_ = history_.declare(graph, in.device, in.executor, materials, layerPlan_.persistent, keepShading,
                                       storage_.widthTexels(), storage_.heightTexels(), remapBytes_, frames_,
                                       std::to_string(in.width) + "x" + std::to_string(in.height));
@@ -550,7 +549,6 @@ void DecoupledShading::offerDepthPassDraws(render::FrameContext& ctx) {
 void DecoupledShading::takeMarkRequests(render::FrameContext& ctx) {
   const auto& offer = ctx.depthPassDraws();
   frame_->markRequests = offer ? offer->target : graph::ResourceHandle{};
-  markByRequests_ = frame_->markRequests.valid();
 }
 
 passes::DecoupledFrame& DecoupledShading::frame(render::FrameContext& ctx) {
@@ -675,7 +673,7 @@ DecoupledStats DecoupledShading::stats() const {
   s.remapBytes = remapBytes_;
   s.historyBytes = history_.bytes();
   s.layerDispatches = layerPlan_.dispatches;
-  s.markedByRequests = markByRequests_;
+  s.markedByRequests = frame_ && frame_->markRequests.valid();  // shadel-mark keeps them only where it merged them
   s.ownedEntries = ownedEntryCount_;
   s.liveEntries = uint32_t(shadel::entriesIn(liveSpans_[ring()]));
   s.visitedEntries = s.counters.entriesVisited;

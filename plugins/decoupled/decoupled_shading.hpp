@@ -270,7 +270,6 @@ class DecoupledShading {
   bool tablesDirty_ = true;
   // This frame: the objects shaded decoupled (draws = ids, materials).
   std::vector<uint32_t> frameObjects_;
-  bool markByRequests_ = false;  // this frame's DecoupledFrame::markRequests was written
   std::vector<std::string> frameMaterials_;
   std::vector<RunTimeForward> frameForward_;  // allocated objects drawn forward this frame (mode auto)
   LayerPlan layerPlan_;
