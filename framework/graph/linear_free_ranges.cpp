@@ -3,6 +3,18 @@
 #include <algorithm>
 
 namespace sg::graph {
+namespace {
+
+// All ones if `condition`, else zero. With pick(), a choice without a branch
+// where the condition flips at random from call to call (GCC turns a ?: into
+// a jump when several values hang on one bool).
+constexpr uint64_t maskOf(bool condition) { return uint64_t{0} - condition; }
+// `yes` where `mask` is set, else `no`.
+constexpr uint64_t pick(uint64_t mask, uint64_t yes, uint64_t no) { return no ^ ((yes ^ no) & mask); }
+
+constexpr std::size_t kNone = ~std::size_t{0};
+
+}  // namespace
 
 uint64_t LinearFreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
                                     std::vector<uint32_t>& previous, uint32_t& block) {
@@ -27,92 +39,220 @@ void LinearFreeRanges::allow(uint32_t occupant, QueueMask queues) {
 
 void LinearFreeRanges::clear(QueueMask queues) {
   fragments_.clear();
+  stretches_.assign(1, kSentinel);
   blocks_.clear();
   queues_ = queues;
+  hasEmpty_ = false;
 }
 
 uint64_t LinearFreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
-                              std::vector<uint32_t>& previous) {
+                                    std::vector<uint32_t>& previous) {
   const QueueMask taker = queueCount(queue) == 1 ? queue : QueueMask::None;
-  // One walk over runs of adjacent fragments `taker` may take, the best fitting kept.
-  std::size_t best = 0, bestEnd = 0;  // fragments of the best run: [best, bestEnd)
+  // Best fit: the smallest run (the first of them) that holds `size` bytes once aligned.
   uint64_t bestBegin = 0, bestLength = ~uint64_t{0};
-  bool found = false;
-  uint64_t runBegin = 0, runEnd = 0;  // the last run seen
-  std::size_t runFirst = 0, runLast = 0;
-  const Fragment* const fragments = fragments_.data();
-  const std::size_t n = fragments_.size();
-  for (std::size_t i = 0; i < n;) {
-    if (!any(fragments[i].queues & taker)) {
-      ++i;
-      continue;
+  std::size_t bestStretch = kNone, bestFirst = 0;  // the run's stretch and that one's first fragment
+  const std::size_t stretchCount = stretches_.size() - 1;  // the sentinel aside
+  const auto walk = [&](auto aligned) {
+    const auto consider = [&](uint64_t begin, uint64_t end, bool usable, std::size_t stretch, std::size_t first) {
+      const uint64_t length = end - begin;
+      const bool fits = usable & (length >= size) & (aligned(begin) + size <= end);
+      const uint64_t key = length | maskOf(!fits);  // ~0 if it does not fit: never better
+      const uint64_t better = maskOf(key < bestLength);
+      bestLength = pick(better, key, bestLength);
+      bestBegin = pick(better, begin, bestBegin);
+      bestStretch = pick(better, stretch, bestStretch);
+      bestFirst = pick(better, first, bestFirst);
+    };
+    std::size_t first = 0;
+    for (std::size_t k = 0; k < stretchCount; ++k) {
+      const Stretch& s = stretches_[k];
+      // A stretch every fragment of which `taker` may take is one run.
+      consider(s.begin, s.end, any(s.all & taker), k, first);
+      if (any(s.any & ~s.all & taker)) [[unlikely]] {
+        // Some fragments only: the runs of adjacent ones `taker` may take.
+        const std::size_t end = first + s.count;
+        for (std::size_t i = first; i < end;) {
+          if (!any(fragments_[i].queues & taker)) {
+            ++i;
+            continue;
+          }
+          const uint64_t runBegin = fragments_[i].begin;
+          for (++i; i < end && any(fragments_[i].queues & taker); ++i) {}
+          consider(runBegin, fragments_[i - 1].end, true, k, first);
+        }
+      }
+      first += s.count;
     }
-    runFirst = i;
-    runBegin = fragments[i].begin;
-    runEnd = fragments[i].end;
-    for (++i; i < n && fragments[i].begin == runEnd && any(fragments[i].queues & taker); ++i) runEnd = fragments[i].end;
-    runLast = i;
-    const uint64_t length = runEnd - runBegin;
-    if (length < size || length >= bestLength || alignUp(runBegin, alignment) + size > runEnd) continue;
-    best = runFirst;
-    bestEnd = runLast;
-    bestBegin = runBegin;
-    bestLength = length;
-    found = true;
+  };
+  if ((alignment & (alignment - 1)) == 0) {  // a power of two (Vulkan's case), 0 or 1
+    const uint64_t mask = alignment <= 1 ? 0 : alignment - 1;
+    walk([mask](uint64_t v) { return (v + mask) & ~mask; });
+  } else {
+    walk([alignment](uint64_t v) { return alignUp(v, alignment); });
   }
-  const bool inRun = runLast == n && n != 0;  // the last fragment ends a run `taker` may take
 
+  std::size_t stretch = bestStretch;  // the stretch [offset, offset + size) is taken from (kNone: none)
+  std::size_t stretchFirst = bestFirst;
   uint64_t offset = 0;
-  if (found) {
+  if (bestStretch != kNone) {
     offset = alignUp(bestBegin, alignment);
   } else {
-    // Grow the heap, starting inside the last run if it ends at the top.
-    const bool fromTop = inRun && runEnd == heapSize;
-    best = fromTop ? runFirst : n;
-    offset = alignUp(fromTop ? runBegin : heapSize, alignment);
+    // Grow the heap, starting inside the run of the last fragment if it ends at the top.
+    uint64_t start = heapSize;
+    if (stretchCount != 0 && stretches_[stretchCount - 1].end == heapSize) {
+      const Stretch& top = stretches_[stretchCount - 1];
+      const std::size_t topFirst = fragments_.size() - top.count;
+      std::size_t i = fragments_.size();
+      if (any(top.all & taker)) {
+        i = topFirst;
+      } else {
+        while (i > topFirst && any(fragments_[i - 1].queues & taker)) --i;
+      }
+      if (i < fragments_.size()) {
+        start = fragments_[i].begin;
+        stretch = stretchCount - 1;
+        stretchFirst = topFirst;
+      }
+    }
+    offset = alignUp(start, alignment);
     if (offset > heapSize) {  // fresh padding below the new range: free for every queue
       fragments_.push_back({heapSize, offset, kNobody, queues_});
+      if (stretchCount != 0 && stretches_[stretchCount - 1].end == heapSize) {
+        Stretch& top = stretches_[stretchCount - 1];
+        top.end = offset;
+        ++top.count;
+        top.all &= queues_;
+        top.any |= queues_;
+      } else {
+        stretches_.insert(stretches_.end() - 1, {heapSize, offset, 1, queues_, queues_});
+      }
     }
     heapSize = offset + size;
-    bestEnd = fragments_.size();
+  }
+  if (stretch == kNone) {
+    if (hasEmpty_) stretches_ = stretchesOfFragments();
+    return offset;
   }
 
   // Take [offset, end) out of the fragments that overlap it; report their users.
   const uint64_t end = offset + size;
-  std::size_t first = best;
-  while (first < bestEnd && fragments_[first].end <= offset) ++first;
+  Stretch& s = stretches_[stretch];
+  const std::size_t stretchEnd = stretchFirst + s.count;
+  std::size_t first = stretchFirst;
+  while (first < stretchEnd && fragments_[first].end <= offset) ++first;
   std::size_t last = first;
-  for (; last < bestEnd && fragments_[last].begin < end; ++last) {
+  for (; last < stretchEnd && fragments_[last].begin < end; ++last) {
     if (fragments_[last].occupant != kNobody) previous.push_back(fragments_[last].occupant);
   }
-  if (first == last) return offset;
-  Fragment rest[2];
-  std::size_t count = 0;
-  if (fragments_[first].begin < offset) {
-    rest[count] = fragments_[first];
-    rest[count++].end = offset;
+  if (first == last) {
+    if (hasEmpty_) stretches_ = stretchesOfFragments();
+    return offset;
   }
-  if (fragments_[last - 1].end > end) {
-    rest[count] = fragments_[last - 1];
-    rest[count++].begin = end;
+  // What is left of the first and last of them (written whether or not any is, to save the branches).
+  const bool restBefore = fragments_[first].begin < offset;
+  const bool restAfter = fragments_[last - 1].end > end;
+  Fragment rest[2] = {fragments_[first], {}};
+  rest[0].end = offset;
+  rest[restBefore ? 1 : 0] = fragments_[last - 1];
+  rest[restBefore ? 1 : 0].begin = end;
+  const std::size_t restCount = std::size_t{restBefore} + std::size_t{restAfter};
+  splice(first, last, rest, restCount);
+  const auto remaining = static_cast<uint32_t>(s.count + restCount - (last - first));
+
+  // The stretch keeps what is left of it on either side of [offset, end).
+  const bool uniform = s.all == s.any;  // else its pieces' queues are surveyed again
+  const bool keepsBefore = s.begin < offset;
+  const bool keepsAfter = end < s.end;
+  if (!keepsBefore && !keepsAfter) {
+    stretches_.erase(stretches_.begin() + static_cast<std::ptrdiff_t>(stretch));
+  } else if (keepsBefore && keepsAfter && offset < end) {  // split in two
+    Stretch after = s;
+    after.begin = end;
+    s.end = offset;
+    s.count = static_cast<uint32_t>(first - stretchFirst + restBefore);
+    after.count = remaining - s.count;
+    stretches_.insert(stretches_.begin() + static_cast<std::ptrdiff_t>(stretch) + 1, after);
+    if (!uniform) {
+      survey(stretches_[stretch], stretchFirst);
+      survey(stretches_[stretch + 1], stretchFirst + stretches_[stretch].count);
+    }
+  } else {
+    if (!keepsAfter) s.end = offset;
+    if (!keepsBefore) s.begin = end;
+    s.count = remaining;
+    if (!uniform) survey(s, stretchFirst);
   }
-  splice(first, last, rest, count);
+  if (hasEmpty_) stretches_ = stretchesOfFragments();
   return offset;
 }
 
 void LinearFreeRanges::release(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues) {
-  const auto at = std::lower_bound(fragments_.begin(), fragments_.end(), offset,
-                                   [](const Fragment& f, uint64_t o) { return f.begin < o; });
-  fragments_.insert(at, {offset, offset + size, occupant, queues & queues_});
+  queues &= queues_;
+  const uint64_t end = offset + size;
+  // The first stretch at or after the range, and the new fragment's index: counted, not
+  // searched (a handful of stretches, and no branch).
+  const std::size_t stretchCount = stretches_.size() - 1;
+  std::size_t next = 0, at = 0;
+  for (std::size_t k = 0; k < stretchCount; ++k) {
+    const bool before = stretches_[k].begin < offset;
+    next += before;
+    at += stretches_[k].count & maskOf(before);
+  }
+  fragments_.insert(fragments_.begin() + static_cast<std::ptrdiff_t>(at), {offset, end, occupant, queues});
+  const bool joinsBefore = next > 0 && stretches_[next - 1].end == offset;
+  const bool joinsAfter = stretches_[next].begin == end;
+  if (joinsBefore) {
+    Stretch& before = stretches_[next - 1];
+    before.end = end;
+    ++before.count;
+    before.all &= queues;
+    before.any |= queues;
+    if (joinsAfter) {  // the range joins two stretches
+      const Stretch& after = stretches_[next];
+      before.end = after.end;
+      before.count += after.count;
+      before.all &= after.all;
+      before.any |= after.any;
+      stretches_.erase(stretches_.begin() + static_cast<std::ptrdiff_t>(next));
+    }
+  } else if (joinsAfter) {
+    Stretch& after = stretches_[next];
+    after.begin = offset;
+    ++after.count;
+    after.all &= queues;
+    after.any |= queues;
+  } else {
+    stretches_.insert(stretches_.begin() + static_cast<std::ptrdiff_t>(next), {offset, end, 1, queues, queues});
+  }
+  if (size == 0) hasEmpty_ = true;
+  if (hasEmpty_) stretches_ = stretchesOfFragments();
 }
 
 void LinearFreeRanges::allow(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues) {
   queues &= queues_;
   if (!any(queues)) return;
-  auto it = std::lower_bound(fragments_.begin(), fragments_.end(), offset,
-                             [](const Fragment& f, uint64_t o) { return f.end <= o; });
-  for (; it != fragments_.end() && it->begin < offset + size; ++it) {
-    if (it->occupant == occupant) it->queues |= queues;
+  const uint64_t end = offset + size;
+  // Every stretch that overlaps the range: its fragments of `occupant` there, and its queues again.
+  const std::size_t stretchCount = stretches_.size() - 1;
+  std::size_t k = 0, first = 0;
+  for (std::size_t j = 0; j < stretchCount; ++j) {
+    const bool before = stretches_[j].end <= offset;
+    k += before;
+    first += stretches_[j].count & maskOf(before);
+  }
+  for (; stretches_[k].begin < end; ++k) {  // (the sentinel begins at ~0)
+    Stretch& s = stretches_[k];
+    QueueMask all = ~QueueMask::None, some = QueueMask::None;
+    for (std::size_t i = first; i < first + s.count; ++i) {
+      Fragment& f = fragments_[i];
+      const bool mine = (f.occupant == occupant) & (f.end > offset) & (f.begin < end);
+      f.queues |= mine ? queues : QueueMask::None;
+      all &= f.queues;
+      some |= f.queues;
+    }
+    s.all = all;
+    s.any = some;
+    first += s.count;
   }
 }
 
@@ -129,6 +269,17 @@ std::vector<LinearFreeRanges::Span> LinearFreeRanges::rangesFor(QueueClass queue
   return spans;
 }
 
+bool LinearFreeRanges::consistent() const {
+  const std::vector<Stretch> expected = stretchesOfFragments();
+  if (expected.size() != stretches_.size()) return false;
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    const Stretch& a = expected[k];
+    const Stretch& b = stretches_[k];
+    if (a.begin != b.begin || a.end != b.end || a.count != b.count || a.all != b.all || a.any != b.any) return false;
+  }
+  return true;
+}
+
 void LinearFreeRanges::splice(std::size_t first, std::size_t last, const Fragment* rest, std::size_t count) {
   const std::size_t removed = last - first;
   const auto at = fragments_.begin() + static_cast<std::ptrdiff_t>(first);
@@ -139,6 +290,32 @@ void LinearFreeRanges::splice(std::size_t first, std::size_t last, const Fragmen
     std::copy(rest, rest + removed, at);
     fragments_.insert(at + static_cast<std::ptrdiff_t>(removed), rest + removed, rest + count);
   }
+}
+
+void LinearFreeRanges::survey(Stretch& stretch, std::size_t first) {
+  QueueMask all = ~QueueMask::None, some = QueueMask::None;
+  for (std::size_t i = first; i < first + stretch.count; ++i) {
+    all &= fragments_[i].queues;
+    some |= fragments_[i].queues;
+  }
+  stretch.all = all;
+  stretch.any = some;
+}
+
+std::vector<LinearFreeRanges::Stretch> LinearFreeRanges::stretchesOfFragments() const {
+  std::vector<Stretch> stretches;
+  for (const Fragment& f : fragments_) {
+    if (!stretches.empty() && stretches.back().end == f.begin) {
+      stretches.back().end = f.end;
+      ++stretches.back().count;
+      stretches.back().all &= f.queues;
+      stretches.back().any |= f.queues;
+    } else {
+      stretches.push_back({f.begin, f.end, 1, f.queues, f.queues});
+    }
+  }
+  stretches.push_back(kSentinel);
+  return stretches;
 }
 
 }  // namespace sg::graph

@@ -3,6 +3,13 @@
 // of them per allocation: cheaper than the block list and its bins while a
 // heap has few fragments (placeTransients picks by the number of transients),
 // and the oracle the block list is tested against. Same interface.
+//
+// The walk goes over *stretches*, maximal sequences of adjacent fragments
+// (used memory between two stretches), each with the queues all and any of
+// its fragments may take: a stretch every fragment of which the taker may
+// take is one run, one of none is no run, and only a mixed one (rare) is
+// walked fragment by fragment. Synthetic graphs have about three fragments
+// per stretch, and the walk is branch-free per stretch.
 
 #include <shadelgraph/graph/free_ranges.hpp>
 
@@ -30,6 +37,8 @@ class LinearFreeRanges {
   // The ranges `queue` may take, adjacent fragments merged, by offset (for tests and dumps).
   std::vector<Span> rangesFor(QueueClass queue) const;
   std::size_t fragmentCount() const { return fragments_.size(); }
+  // Whether the stretches are those of the fragments (for tests).
+  bool consistent() const;
 
  private:
   static constexpr uint32_t kNobody = ~0u;  // alignment padding: never used
@@ -40,13 +49,34 @@ class LinearFreeRanges {
     QueueMask queues;  // may take it over
   };
 
+  // `count` adjacent fragments (after those of the stretches before), bytes [begin, end).
+  // (A count, not the first fragment's index: inserting a fragment changes one stretch only.)
+  struct Stretch {
+    uint64_t begin;
+    uint64_t end;
+    uint32_t count;
+    QueueMask all;  // queues every fragment may be taken by
+    QueueMask any;  // queues some fragment may be taken by
+  };
+  static constexpr Stretch kSentinel{~uint64_t{0}, ~uint64_t{0}, 0, QueueMask::None, QueueMask::None};
+
   // Replaces fragments [first, last) with `rest` (0 to 2 fragments).
   void splice(std::size_t first, std::size_t last, const Fragment* rest, std::size_t count);
+  // Recomputes a stretch's queues from its fragments (from fragment `first` on).
+  void survey(Stretch& stretch, std::size_t first);
+  // The stretches of the fragments, from scratch.
+  std::vector<Stretch> stretchesOfFragments() const;
 
   std::vector<Fragment> fragments_;
+  // By offset, then a sentinel (begin ~0, no fragments, no queues).
+  std::vector<Stretch> stretches_ = {kSentinel};
   std::vector<Span> blocks_;     // allocate()'s blocks: their ranges
   std::vector<Span> occupants_;  // per occupant released: its range
   QueueMask queues_ = ~QueueMask::None;
+  // An empty fragment (a zero-byte range released) joins its neighbours in
+  // ways the stretches are not kept up to date for: they are rebuilt after
+  // every change then (never seen in practice).
+  bool hasEmpty_ = false;
 };
 
 }  // namespace sg::graph

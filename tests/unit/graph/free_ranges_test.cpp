@@ -52,7 +52,7 @@ using Implementations = ::testing::Types<FreeRanges, LinearFreeRanges>;
 TYPED_TEST_SUITE(FreeRangesTest, Implementations);
 
 bool consistent(const FreeRanges& ranges, uint64_t heapSize) { return ranges.consistent(heapSize); }
-bool consistent(const LinearFreeRanges&, uint64_t) { return true; }
+bool consistent(const LinearFreeRanges& ranges, uint64_t) { return ranges.consistent(); }
 
 TYPED_TEST(FreeRangesTest, BestFitTakesTheSmallestRangeThatHolds) {
   uint64_t heap = 0;
@@ -304,9 +304,11 @@ TEST(FreeRanges, PlacesExactlyAsTheLinearWalkOnRandomLifetimes) {
         ASSERT_EQ(heapA, heapB) << "heap " << heapIndex << ", transient " << i;
         ASSERT_EQ(prevA, prevB) << "heap " << heapIndex << ", transient " << i;
         ASSERT_TRUE(blocks.consistent(heapA)) << "heap " << heapIndex << ", transient " << i;
+        ASSERT_TRUE(linear.consistent()) << "heap " << heapIndex << ", transient " << i;
         takeOvers += prevA.empty() ? 0 : 1;
         placed[i] = true;
       }
+      ASSERT_TRUE(linear.consistent()) << "heap " << heapIndex << ", position " << p;
       if (p % 7 == 0) {
         for (const QueueClass q : kAll) ASSERT_EQ(blocks.rangesFor(q), linear.rangesFor(q)) << "heap " << heapIndex;
         ASSERT_EQ(blocks.fragmentCount(), linear.fragmentCount());
