@@ -49,25 +49,24 @@ uint64_t LinearFreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask
                                     std::vector<uint32_t>& previous) {
   const QueueMask taker = queueCount(queue) == 1 ? queue : QueueMask::None;
   // Best fit: the smallest run (the first of them) that holds `size` bytes once aligned.
-  uint64_t bestBegin = 0, bestLength = ~uint64_t{0};
-  std::size_t bestStretch = kNone, bestFirst = 0;  // the run's stretch and that one's first fragment
+  // Where it is: its stretch's index (high half) and first fragment (low half)
+  // in one word, one select instead of two; kSubRun set if it is a run inside
+  // a mixed stretch (bestBegin), else the whole stretch.
+  constexpr uint64_t kSubRun = uint64_t{1} << 63;
+  uint64_t bestLength = ~uint64_t{0}, bestAt = ~uint64_t{0}, bestBegin = 0;
   const std::size_t stretchCount = stretches_.size() - 1;  // the sentinel aside
   const auto walk = [&](auto aligned) {
-    const auto consider = [&](uint64_t begin, uint64_t end, bool usable, std::size_t stretch, std::size_t first) {
-      const uint64_t length = end - begin;
-      const bool fits = usable & (length >= size) & (aligned(begin) + size <= end);
-      const uint64_t key = length | maskOf(!fits);  // ~0 if it does not fit: never better
-      const uint64_t better = maskOf(key < bestLength);
-      bestLength = pick(better, key, bestLength);
-      bestBegin = pick(better, begin, bestBegin);
-      bestStretch = pick(better, stretch, bestStretch);
-      bestFirst = pick(better, first, bestFirst);
+    const auto fits = [&](uint64_t begin, uint64_t end) {
+      return (end - begin >= size) & (aligned(begin) + size <= end);
     };
     std::size_t first = 0;
     for (std::size_t k = 0; k < stretchCount; ++k) {
       const Stretch& s = stretches_[k];
       // A stretch every fragment of which `taker` may take is one run.
-      consider(s.begin, s.end, any(s.all & taker), k, first);
+      const uint64_t key = (s.end - s.begin) | maskOf(!(any(s.all & taker) & fits(s.begin, s.end)));  // ~0: no
+      const uint64_t better = maskOf(key < bestLength);
+      bestLength = pick(better, key, bestLength);
+      bestAt = pick(better, uint64_t{k} << 32 | first, bestAt);
       if (any(s.any & ~s.all & taker)) [[unlikely]] {
         // Some fragments only: the runs of adjacent ones `taker` may take.
         const std::size_t end = first + s.count;
@@ -78,7 +77,12 @@ uint64_t LinearFreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask
           }
           const uint64_t runBegin = fragments_[i].begin;
           for (++i; i < end && any(fragments_[i].queues & taker); ++i) {}
-          consider(runBegin, fragments_[i - 1].end, true, k, first);
+          const uint64_t runEnd = fragments_[i - 1].end;
+          if (fits(runBegin, runEnd) && runEnd - runBegin < bestLength) {
+            bestLength = runEnd - runBegin;
+            bestAt = kSubRun | uint64_t{k} << 32 | first;
+            bestBegin = runBegin;
+          }
         }
       }
       first += s.count;
@@ -90,6 +94,10 @@ uint64_t LinearFreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask
   } else {
     walk([alignment](uint64_t v) { return alignUp(v, alignment); });
   }
+  const bool found = bestAt != ~uint64_t{0};
+  const std::size_t bestStretch = found ? (bestAt & ~kSubRun) >> 32 : kNone;
+  const std::size_t bestFirst = bestAt & 0xffffffffu;
+  if (found && !(bestAt & kSubRun)) bestBegin = stretches_[bestStretch].begin;
 
   std::size_t stretch = bestStretch;  // the stretch [offset, offset + size) is taken from (kNone: none)
   std::size_t stretchFirst = bestFirst;

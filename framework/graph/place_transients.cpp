@@ -51,9 +51,12 @@ void sweep(std::span<const TransientLifetime> transients, std::span<const Memory
   std::vector<std::pair<uint32_t, uint32_t>>& aliasPairs = scratch.aliasPairs;
   std::vector<uint32_t>& previous = scratch.previous;
   auto& allowances = scratch.allowances;
-  const auto laterFirst = [](const MemoryPlan::Scratch::Allowance& a, const MemoryPlan::Scratch::Allowance& b) {
-    return a.position > b.position;
-  };
+  std::vector<uint32_t>& firstAllowanceAt = scratch.firstAllowanceAt;
+  // Positions are those of the order up to the last use of a transient: an
+  // allowance from any later position could never serve a transient.
+  const uint32_t positions = transients.empty() ? 0 : transients[byEnd.back()].lastUse + 1;
+  firstAllowanceAt.assign(positions, kInvalidIndex);
+  uint32_t allowedUpTo = 0;  // the positions whose allowances were given
   std::vector<uint32_t>& blocks = scratch.blocks;  // (the block list's handles)
   if constexpr (!kLinear) blocks.resize(transients.size());
   unaliasedSize.clear();
@@ -80,9 +83,9 @@ void sweep(std::span<const TransientLifetime> transients, std::span<const Memory
         const uint32_t from = availableFrom(done, q, queues, unused);
         if (from <= t.firstUse) {
           now |= toMask(q);
-        } else if (from != kInvalidIndex) {
-          allowances.push_back({from, doneIndex, toMask(q)});
-          std::push_heap(allowances.begin(), allowances.end(), laterFirst);
+        } else if (from < positions) {
+          allowances.push_back({firstAllowanceAt[from], doneIndex, toMask(q)});
+          firstAllowanceAt[from] = static_cast<uint32_t>(allowances.size() - 1);
         }
       }
       if constexpr (kLinear) {
@@ -91,15 +94,16 @@ void sweep(std::span<const TransientLifetime> transients, std::span<const Memory
         freeLists[m.heap].release(blocks[doneIndex], doneIndex, now);
       }
     }
-    while (!allowances.empty() && allowances.front().position <= t.firstUse) {
-      const auto a = allowances.front();
-      std::pop_heap(allowances.begin(), allowances.end(), laterFirst);
-      allowances.pop_back();
-      const MemoryPlacement& m = plan.placements[transients[a.index].id];
-      if constexpr (kLinear) {
-        freeLists[m.heap].allow(m.offset, m.size, a.index, a.queues);
-      } else {
-        freeLists[m.heap].allow(a.index, a.queues);
+    // (Allowances commute: their order within a position does not matter.)
+    for (; allowedUpTo <= t.firstUse; ++allowedUpTo) {
+      for (uint32_t i = firstAllowanceAt[allowedUpTo]; i != kInvalidIndex; i = allowances[i].next) {
+        const auto a = allowances[i];
+        const MemoryPlacement& m = plan.placements[transients[a.index].id];
+        if constexpr (kLinear) {
+          freeLists[m.heap].allow(m.offset, m.size, a.index, a.queues);
+        } else {
+          freeLists[m.heap].allow(a.index, a.queues);
+        }
       }
     }
 

@@ -47,11 +47,14 @@ struct MemoryPlan {
     std::vector<uint32_t> previous;
     std::vector<uint32_t> blocks;  // per transient: its block in its heap's free ranges
     struct Allowance {
-      uint32_t position;  // from here on
-      uint32_t index;     // into transients
-      QueueMask queues;   // may take over its memory
+      uint32_t next;     // the next allowance at the same position (kInvalidIndex: none)
+      uint32_t index;    // into transients
+      QueueMask queues;  // may take over its memory
     };
-    std::vector<Allowance> allowances;  // a min-heap by position
+    // Per position, a list through `allowances` of what becomes allowed there
+    // (positions are dense: buckets instead of a heap).
+    std::vector<Allowance> allowances;
+    std::vector<uint32_t> firstAllowanceAt;
   } scratch;
 };
 
