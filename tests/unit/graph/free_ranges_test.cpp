@@ -230,6 +230,49 @@ TYPED_TEST(FreeRangesTest, AllocationsAreTheBestFitOfWhatTheQueueMayTake) {
   }
 }
 
+// placeTransients() gives LinearFreeRanges ranges of any size, zero bytes
+// included (an empty fragment joins both its neighbours): its stretches of
+// adjacent fragments stay those of the fragments, and what it hands out
+// never overlaps what is in use.
+TEST(LinearFreeRanges, ZeroByteRangesKeepTheStretchesRight) {
+  std::mt19937 rng(11);
+  LinearFreeRanges ranges;
+  ranges.clear(kBoth);
+  uint64_t heap = 0;
+  struct Live {
+    uint64_t offset, size;
+    uint32_t id;
+  };
+  std::vector<Live> live, released;
+  std::vector<uint32_t> previous;
+  uint32_t next = 0;
+  for (int step = 0; step < 2000; ++step) {
+    const uint32_t what = rng() % 4;
+    if (what == 0 && !live.empty()) {
+      const std::size_t i = rng() % live.size();
+      ranges.release(live[i].offset, live[i].size, live[i].id, rng() % 2 ? kGraphics : kCompute);
+      released.push_back(live[i]);
+      live.erase(live.begin() + static_cast<std::ptrdiff_t>(i));
+    } else if (what == 1 && !released.empty()) {
+      const Live& r = released[rng() % released.size()];
+      ranges.allow(r.offset, r.size, r.id, kBoth);
+    } else {
+      const uint64_t size = rng() % 4 == 0 ? 0 : 16 * (1 + rng() % 8);
+      previous.clear();
+      const uint64_t offset = ranges.allocate(size, 16, rng() % 2 ? kGraphics : kCompute, heap, previous);
+      for (const Live& l : live) {
+        ASSERT_TRUE(size == 0 || l.size == 0 || offset + size <= l.offset || l.offset + l.size <= offset)
+            << "step " << step;
+      }
+      live.push_back({offset, size, next++});
+      released.erase(std::remove_if(released.begin(), released.end(),
+                                    [&](const Live& r) { return r.offset < offset + size && offset < r.offset + r.size; }),
+                     released.end());
+    }
+    ASSERT_TRUE(ranges.consistent()) << "step " << step;
+  }
+}
+
 // The block list with its size-class bins against the linear walk it
 // replaced: transients with random lifetimes, sizes (1 byte to 64 MiB),
 // alignments (powers of two and not) and queues (three, a transient's memory
