@@ -14,6 +14,21 @@ constexpr uint64_t pick(uint64_t mask, uint64_t yes, uint64_t no) { return no ^ 
 
 constexpr std::size_t kNone = ~std::size_t{0};
 
+// How many of `values[0, n)` come before the one sought (`before` holds for a
+// prefix of them): a binary search whose steps are conditional moves, not
+// branches (std::lower_bound branches at every step, at random).
+template <class T, class Before>
+std::size_t countBefore(const T* values, std::size_t n, Before before) {
+  if (n == 0) return 0;
+  const T* base = values;
+  while (n > 1) {
+    const std::size_t half = n / 2;
+    base = before(base[half]) ? base + half : base;
+    n -= half;
+  }
+  return static_cast<std::size_t>(base - values) + (before(*base) ? 1 : 0);
+}
+
 }  // namespace
 
 uint64_t LinearFreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
@@ -67,16 +82,19 @@ uint64_t LinearFreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask
       const uint64_t better = maskOf(key < bestLength);
       bestLength = pick(better, key, bestLength);
       bestAt = pick(better, uint64_t{k} << 32 | first, bestAt);
-      if (any(s.any & ~s.all & taker)) [[unlikely]] {
-        // Some fragments only: the runs of adjacent ones `taker` may take.
+      if (any(taker) && !any(s.all & taker)) [[unlikely]] {
+        // Maybe some fragments: the runs of adjacent ones `taker` may take
+        // (and the stretch's queues brought up to date).
         const std::size_t end = first + s.count;
+        QueueMask all = ~QueueMask::None;
         for (std::size_t i = first; i < end;) {
+          all &= fragments_[i].queues;
           if (!any(fragments_[i].queues & taker)) {
             ++i;
             continue;
           }
           const uint64_t runBegin = fragments_[i].begin;
-          for (++i; i < end && any(fragments_[i].queues & taker); ++i) {}
+          for (++i; i < end && any(fragments_[i].queues & taker); ++i) all &= fragments_[i].queues;
           const uint64_t runEnd = fragments_[i - 1].end;
           if (fits(runBegin, runEnd) && runEnd - runBegin < bestLength) {
             bestLength = runEnd - runBegin;
@@ -84,6 +102,7 @@ uint64_t LinearFreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask
             bestBegin = runBegin;
           }
         }
+        stretches_[k].all = all;
       }
       first += s.count;
     }
@@ -130,9 +149,8 @@ uint64_t LinearFreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask
         top.end = offset;
         ++top.count;
         top.all &= queues_;
-        top.any |= queues_;
       } else {
-        stretches_.insert(stretches_.end() - 1, {heapSize, offset, 1, queues_, queues_});
+        stretches_.insert(stretches_.end() - 1, {heapSize, offset, 1, queues_});
       }
     }
     heapSize = offset + size;
@@ -167,8 +185,8 @@ uint64_t LinearFreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask
   splice(first, last, rest, restCount);
   const auto remaining = static_cast<uint32_t>(s.count + restCount - (last - first));
 
-  // The stretch keeps what is left of it on either side of [offset, end).
-  const bool uniform = s.all == s.any;  // else its pieces' queues are surveyed again
+  // The stretch keeps what is left of it on either side of [offset, end) (and its queues, now perhaps fewer
+  // than its fragments').
   const bool keepsBefore = s.begin < offset;
   const bool keepsAfter = end < s.end;
   if (!keepsBefore && !keepsAfter) {
@@ -180,15 +198,10 @@ uint64_t LinearFreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask
     s.count = static_cast<uint32_t>(first - stretchFirst + restBefore);
     after.count = remaining - s.count;
     stretches_.insert(stretches_.begin() + static_cast<std::ptrdiff_t>(stretch) + 1, after);
-    if (!uniform) {
-      survey(stretches_[stretch], stretchFirst);
-      survey(stretches_[stretch + 1], stretchFirst + stretches_[stretch].count);
-    }
   } else {
     if (!keepsAfter) s.end = offset;
     if (!keepsBefore) s.begin = end;
     s.count = remaining;
-    if (!uniform) survey(s, stretchFirst);
   }
   if (hasEmpty_) stretches_ = stretchesOfFragments();
   return offset;
@@ -214,13 +227,11 @@ void LinearFreeRanges::release(uint64_t offset, uint64_t size, uint32_t occupant
     before.end = end;
     ++before.count;
     before.all &= queues;
-    before.any |= queues;
     if (joinsAfter) {  // the range joins two stretches
       const Stretch& after = stretches_[next];
       before.end = after.end;
       before.count += after.count;
       before.all &= after.all;
-      before.any |= after.any;
       stretches_.erase(stretches_.begin() + static_cast<std::ptrdiff_t>(next));
     }
   } else if (joinsAfter) {
@@ -228,39 +239,21 @@ void LinearFreeRanges::release(uint64_t offset, uint64_t size, uint32_t occupant
     after.begin = offset;
     ++after.count;
     after.all &= queues;
-    after.any |= queues;
   } else {
-    stretches_.insert(stretches_.begin() + static_cast<std::ptrdiff_t>(next), {offset, end, 1, queues, queues});
+    stretches_.insert(stretches_.begin() + static_cast<std::ptrdiff_t>(next), {offset, end, 1, queues});
   }
   if (size == 0) hasEmpty_ = true;
   if (hasEmpty_) stretches_ = stretchesOfFragments();
 }
 
 void LinearFreeRanges::allow(uint64_t offset, uint64_t size, uint32_t occupant, QueueMask queues) {
+  // (The stretches' queues are left as they are: never more than their fragments'.)
   queues &= queues_;
   if (!any(queues)) return;
-  const uint64_t end = offset + size;
-  // Every stretch that overlaps the range: its fragments of `occupant` there, and its queues again.
-  const std::size_t stretchCount = stretches_.size() - 1;
-  std::size_t k = 0, first = 0;
-  for (std::size_t j = 0; j < stretchCount; ++j) {
-    const bool before = stretches_[j].end <= offset;
-    k += before;
-    first += stretches_[j].count & maskOf(before);
-  }
-  for (; stretches_[k].begin < end; ++k) {  // (the sentinel begins at ~0)
-    Stretch& s = stretches_[k];
-    QueueMask all = ~QueueMask::None, some = QueueMask::None;
-    for (std::size_t i = first; i < first + s.count; ++i) {
-      Fragment& f = fragments_[i];
-      const bool mine = (f.occupant == occupant) & (f.end > offset) & (f.begin < end);
-      f.queues |= mine ? queues : QueueMask::None;
-      all &= f.queues;
-      some |= f.queues;
-    }
-    s.all = all;
-    s.any = some;
-    first += s.count;
+  const std::size_t n = fragments_.size();
+  std::size_t i = countBefore(fragments_.data(), n, [offset](const Fragment& f) { return f.end <= offset; });
+  for (; i < n && fragments_[i].begin < offset + size; ++i) {
+    fragments_[i].queues |= fragments_[i].occupant == occupant ? queues : QueueMask::None;
   }
 }
 
@@ -283,7 +276,7 @@ bool LinearFreeRanges::consistent() const {
   for (std::size_t k = 0; k < expected.size(); ++k) {
     const Stretch& a = expected[k];
     const Stretch& b = stretches_[k];
-    if (a.begin != b.begin || a.end != b.end || a.count != b.count || a.all != b.all || a.any != b.any) return false;
+    if (a.begin != b.begin || a.end != b.end || a.count != b.count || !contains(a.all, b.all)) return false;
   }
   return true;
 }
@@ -300,16 +293,6 @@ void LinearFreeRanges::splice(std::size_t first, std::size_t last, const Fragmen
   }
 }
 
-void LinearFreeRanges::survey(Stretch& stretch, std::size_t first) {
-  QueueMask all = ~QueueMask::None, some = QueueMask::None;
-  for (std::size_t i = first; i < first + stretch.count; ++i) {
-    all &= fragments_[i].queues;
-    some |= fragments_[i].queues;
-  }
-  stretch.all = all;
-  stretch.any = some;
-}
-
 std::vector<LinearFreeRanges::Stretch> LinearFreeRanges::stretchesOfFragments() const {
   std::vector<Stretch> stretches;
   for (const Fragment& f : fragments_) {
@@ -317,9 +300,8 @@ std::vector<LinearFreeRanges::Stretch> LinearFreeRanges::stretchesOfFragments() 
       stretches.back().end = f.end;
       ++stretches.back().count;
       stretches.back().all &= f.queues;
-      stretches.back().any |= f.queues;
     } else {
-      stretches.push_back({f.begin, f.end, 1, f.queues, f.queues});
+      stretches.push_back({f.begin, f.end, 1, f.queues});
     }
   }
   stretches.push_back(kSentinel);

@@ -5,11 +5,13 @@
 // and the oracle the block list is tested against. Same interface.
 //
 // The walk goes over *stretches*, maximal sequences of adjacent fragments
-// (used memory between two stretches), each with the queues all and any of
-// its fragments may take: a stretch every fragment of which the taker may
-// take is one run, one of none is no run, and only a mixed one (rare) is
-// walked fragment by fragment. Synthetic graphs have about three fragments
-// per stretch, and the walk is branch-free per stretch.
+// (used memory between two stretches), each with queues every one of its
+// fragments may be taken by: for such a queue the stretch is one run, judged
+// without a branch; other stretches (rare) are walked fragment by fragment.
+// Synthetic graphs have about three fragments per stretch. A stretch's queues
+// may lag behind (allowances add queues to fragments, not to stretches, and a
+// stretch split keeps them): never more than its fragments', so a lagging
+// stretch only takes the slower walk, which brings its queues up to date.
 
 #include <shadelgraph/graph/free_ranges.hpp>
 
@@ -37,7 +39,7 @@ class LinearFreeRanges {
   // The ranges `queue` may take, adjacent fragments merged, by offset (for tests and dumps).
   std::vector<Span> rangesFor(QueueClass queue) const;
   std::size_t fragmentCount() const { return fragments_.size(); }
-  // Whether the stretches are those of the fragments (for tests).
+  // Whether the stretches are those of the fragments, their queues no more than the fragments' (for tests).
   bool consistent() const;
 
  private:
@@ -55,15 +57,12 @@ class LinearFreeRanges {
     uint64_t begin;
     uint64_t end;
     uint32_t count;
-    QueueMask all;  // queues every fragment may be taken by
-    QueueMask any;  // queues some fragment may be taken by
+    QueueMask all;  // queues every fragment may be taken by (or fewer)
   };
-  static constexpr Stretch kSentinel{~uint64_t{0}, ~uint64_t{0}, 0, QueueMask::None, QueueMask::None};
+  static constexpr Stretch kSentinel{~uint64_t{0}, ~uint64_t{0}, 0, QueueMask::None};
 
   // Replaces fragments [first, last) with `rest` (0 to 2 fragments).
   void splice(std::size_t first, std::size_t last, const Fragment* rest, std::size_t count);
-  // Recomputes a stretch's queues from its fragments (from fragment `first` on).
-  void survey(Stretch& stretch, std::size_t first);
   // The stretches of the fragments, from scratch.
   std::vector<Stretch> stretchesOfFragments() const;
 
