@@ -1,8 +1,9 @@
 #pragma once
 // FreeRanges' decisions from a sorted array of fragments and a walk over all
-// of them per allocation: cheaper than the block list and its bins while a
-// heap has few fragments (placeTransients picks by the number of transients),
-// and the oracle the block list is tested against. Same interface.
+// of them (by stretches, below) per allocation: cheaper than the block list
+// and its bins while a heap has few fragments (placeTransients picks by the
+// number of transients), and the oracle the block list is tested against.
+// Same interface.
 //
 // The walk goes over *stretches*, maximal sequences of adjacent fragments
 // (used memory between two stretches), each with queues every one of its
