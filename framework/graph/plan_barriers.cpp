@@ -19,45 +19,51 @@ struct UseTable {
 
 UseTable collectUses(const RenderGraph& graph, std::span<const PassId> order, uint32_t resourceCount,
                      BarrierPlan::Scratch& scratch) {
-  // Two walks over the kept passes: count each resource's uses (one per pass),
-  // then place them, merging a pass's accesses to the same resource.
+  // One walk over the kept passes appends each pass's uses in execution order
+  // (a pass's accesses to one resource merged) and counts them per resource;
+  // a counting sort then groups them by resource. (The sort's flat loop has
+  // one exit; a second walk over the passes would pay every pass's inner-loop
+  // exit again.)
   std::vector<uint32_t>& first = scratch.firstUse;
   std::vector<uint32_t>& lastUse = scratch.lastUse;
   std::vector<Use>& uses = scratch.uses;
+  std::vector<BarrierPlan::Scratch::UseInOrder>& inOrder = scratch.inOrder;
   first.assign(resourceCount + 1, 0);
   lastUse.assign(resourceCount, kInvalidIndex);
-  for (uint32_t position = 0; position < order.size(); ++position) {
-    for (const ResourceAccess& a : graph.accessesOf(order[position])) {
-      if (lastUse[a.resource.index] == position) continue;
-      lastUse[a.resource.index] = position;
-      ++first[a.resource.index + 1];
-    }
-  }
-  for (uint32_t r = 0; r < resourceCount; ++r) first[r + 1] += first[r];
-  uses.resize(first[resourceCount]);
-  std::vector<uint32_t>& cursor = scratch.cursor;
-  cursor.assign(first.begin(), first.end() - 1);
   // Every stage and write of each resource, on the way: what a transient taking over its memory waits for.
   std::vector<BarrierPlan::Scratch::Footprint>& footprints = scratch.footprints;
   footprints.assign(resourceCount, {});
-  for (const PassId p : order) {
+  inOrder.resize(graph.declaration().accesses.size());  // at most one use per access
+  BarrierPlan::Scratch::UseInOrder* next = inOrder.data();
+  for (uint32_t position = 0; position < order.size(); ++position) {
+    const PassId p = order[position];
     const QueueClass queue = graph.pass(p).queue;
     for (const ResourceAccess& a : graph.accessesOf(p)) {
-      BarrierPlan::Scratch::Footprint& footprint = footprints[a.resource.index];
+      const uint32_t r = a.resource.index;
+      BarrierPlan::Scratch::Footprint& footprint = footprints[r];
       footprint.stages |= a.stages;
       footprint.writes |= writeBits(a.accessFlags);
-      uint32_t& next = cursor[a.resource.index];
-      if (next > first[a.resource.index] && uses[next - 1].pass == p) {
-        Use& use = uses[next - 1];
+      if (lastUse[r] == position) [[unlikely]] {
+        // A second access of the pass to this resource: merge it into the pass's use, a few entries back.
+        BarrierPlan::Scratch::UseInOrder* earlier = next - 1;
+        while (earlier->resource != r) --earlier;
+        Use& use = earlier->use;
         use.stages |= a.stages;
         use.access |= a.accessFlags;
         use.write = use.write || a.write;
         if (const auto merged = mergeLayouts(use.layout, a.layout)) use.layout = *merged;
         continue;
       }
-      uses[next++] = {p, queue, a.stages, a.accessFlags, a.layout, a.write};
+      lastUse[r] = position;
+      ++first[r + 1];
+      *next++ = {r, {p, queue, a.stages, a.accessFlags, a.layout, a.write}};
     }
   }
+  for (uint32_t r = 0; r < resourceCount; ++r) first[r + 1] += first[r];
+  uses.resize(first[resourceCount]);
+  std::vector<uint32_t>& cursor = scratch.cursor;
+  cursor.assign(first.begin(), first.end() - 1);
+  for (const BarrierPlan::Scratch::UseInOrder* u = inOrder.data(); u != next; ++u) uses[cursor[u->resource]++] = u->use;
   return {first, lastUse, uses};
 }
 
