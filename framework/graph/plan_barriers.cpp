@@ -8,6 +8,14 @@ namespace {
 
 using Use = ResourceUse;
 
+// `flags` if `keep`, else none: a mask instead of a branch, where `keep` flips
+// from one resource or use to the next.
+template <BitmaskEnum Flags>
+constexpr Flags keptIf(bool keep, Flags flags) {
+  using Bits = std::underlying_type_t<Flags>;
+  return static_cast<Flags>(static_cast<Bits>(flags) & static_cast<Bits>(-static_cast<Bits>(keep)));
+}
+
 // Uses grouped by resource, each group in execution order (views of the scratch).
 struct UseTable {
   const std::vector<uint32_t>& first;    // per resource, plus one
@@ -121,34 +129,44 @@ class ResourceBarrierPlanner {
   }
 
   void run(PipelineStage aliasedStages, AccessFlag aliasedWrites, bool aliased) {
+    // Only a resource used on several queues can have a version read on
+    // several; the others (most) never look for where a run of reads ends.
+    const bool severalQueues = queueCount(resource_.desc.queues) > 1;
+    std::size_t readsEnd = 0;  // where the current run of reads ends, once looked for
     for (std::size_t i = 0; i < uses_.size();) {
       if (uses_[i].write) {
-        write(uses_[i], i == 0 && aliased, aliasedStages, aliasedWrites);
+        write(uses_[i], (i == 0) & aliased, aliasedStages, aliasedWrites);
         ++i;
         continue;
       }
-      std::size_t end = i;
-      QueueMask queues = QueueMask::None;
-      while (end < uses_.size() && !uses_[end].write) queues |= toMask(uses_[end++].queue);
-      if (queueCount(queues) > 1) {
-        sharedReads(i, end);
-      } else {
-        for (std::size_t k = i; k < end; ++k) read(k, end);
+      if (severalQueues & (i >= readsEnd)) {
+        readsEnd = i;
+        QueueMask queues = QueueMask::None;
+        while (readsEnd < uses_.size() && !uses_[readsEnd].write) queues |= toMask(uses_[readsEnd++].queue);
+        if (queueCount(queues) > 1) {
+          sharedReads(i, readsEnd);
+          i = readsEnd;
+          continue;
+        }
       }
-      i = end;
+      read(i);
+      ++i;
     }
     if (!isTransient(resource_.kind)) finish();
   }
 
  private:
-  bool sameQueueWrite(QueueClass q) const { return written_ && (writeExternal_ || writeQueue_ == q); }
+  // (The planner's conditions combine bools with & and |, not && and ||: their
+  // operands are cheap, and each short-circuit would be a branch that flips
+  // with the graph's data.)
+  bool sameQueueWrite(QueueClass q) const { return written_ & (writeExternal_ | (writeQueue_ == q)); }
 
   bool crossQueuePrior(QueueClass q) const {
-    if (written_ && !sameQueueWrite(q)) return true;
-    for (uint32_t other = 0; other < kQueueClassCount; ++other) {
-      if (other != queueIndex(q) && any(queues_[other].waitStages)) return true;
-    }
-    return false;
+    // Written on another queue, or read or transitioned there since.
+    static_assert(kQueueClassCount == 3);
+    const uint32_t waitingQueues = any(queues_[0].waitStages) + any(queues_[1].waitStages) +
+                                   any(queues_[2].waitStages) - any(queues_[queueIndex(q)].waitStages);
+    return (written_ & !sameQueueWrite(q)) | (waitingQueues != 0);
   }
 
   // The source scope every barrier on queue q needs: what already ran on q,
@@ -156,18 +174,16 @@ class ResourceBarrierPlanner {
   Barrier sourceOn(QueueClass q) const {
     Barrier b{.resource = id_};
     b.srcStages = queues_[queueIndex(q)].waitStages | externalWait_;
-    if (sameQueueWrite(q) && !queues_[queueIndex(q)].writeChained) {
-      b.srcStages |= writeStages_;
-      b.srcAccess = writeAccess_;
-    }
+    const bool unchained = sameQueueWrite(q) & !queues_[queueIndex(q)].writeChained;
+    b.srcStages |= keptIf(unchained, writeStages_);
+    b.srcAccess = keptIf(unchained, writeAccess_);
     return b;
   }
 
   void setLayouts(Barrier& b, Layout newLayout) const {
-    if (!image_) return;
-    b.oldLayout = layout_;
-    b.newLayout = newLayout;
-    b.discard = b.discard || layout_ == Layout::Undefined;
+    b.oldLayout = image_ ? layout_ : Layout::Undefined;
+    b.newLayout = image_ ? newLayout : Layout::Undefined;
+    b.discard = b.discard | (image_ & (layout_ == Layout::Undefined));
   }
 
   void emit(PassId pass, bool after, const Barrier& b, QueueClass q) {
@@ -182,16 +198,14 @@ class ResourceBarrierPlanner {
     Barrier b = sourceOn(u.queue);
     b.dstStages = u.stages;
     b.dstAccess = u.access;
-    const bool layoutChange = image_ && layout_ != u.layout;
-    if (aliased) {
-      // Taking over memory: after every access of the previous occupants (same queue).
-      b.srcStages |= aliasedStages;
-      b.srcAccess |= aliasedWrites;
-      b.discard = true;
-    }
-    if (layoutChange && crossQueuePrior(u.queue)) b.srcStages |= u.stages;  // chain with the semaphore wait
+    const bool layoutChange = image_ & (layout_ != u.layout);
+    // Taking over memory: after every access of the previous occupants (same queue).
+    b.srcStages |= keptIf(aliased, aliasedStages);
+    b.srcAccess |= keptIf(aliased, aliasedWrites);
+    b.discard = aliased;
+    b.srcStages |= keptIf(layoutChange & crossQueuePrior(u.queue), u.stages);  // chain with the semaphore wait
     setLayouts(b, u.layout);
-    if (any(b.srcStages) || layoutChange || aliased) out_.add(u.pass, false, b);
+    if (any(b.srcStages) | layoutChange | aliased) out_.add(u.pass, false, b);
 
     layout_ = u.layout;
     written_ = true;
@@ -204,13 +218,13 @@ class ResourceBarrierPlanner {
   }
 
   // A read of a version only one queue reads.
-  void read(std::size_t i, std::size_t segmentEnd) {
+  void read(std::size_t i) {
     const Use& u = uses_[i];
     QueueSync& qs = queues_[queueIndex(u.queue)];
-    const bool layoutChange = image_ && layout_ != u.layout;
-    const bool pendingWrite = (sameQueueWrite(u.queue) && any(writeAccess_)) || qs.transitioned;
-    const bool covered = qs.allVisible || (contains(qs.visibleStages, u.stages) && contains(qs.visibleAccess, u.access));
-    if (!layoutChange && (!pendingWrite || covered)) {
+    const bool layoutChange = image_ & (layout_ != u.layout);
+    const bool pendingWrite = (sameQueueWrite(u.queue) & any(writeAccess_)) | qs.transitioned;
+    const bool covered = qs.allVisible | (contains(qs.visibleStages, u.stages) & contains(qs.visibleAccess, u.access));
+    if (!layoutChange & (!pendingWrite | covered)) {
       qs.waitStages |= u.stages;
       return;
     }
@@ -218,11 +232,11 @@ class ResourceBarrierPlanner {
     // Later readers in the same layout share this barrier.
     b.dstStages = u.stages;
     b.dstAccess = u.access;
-    for (std::size_t k = i + 1; k < segmentEnd && (!image_ || uses_[k].layout == u.layout); ++k) {
+    for (std::size_t k = i + 1; k < uses_.size() && !uses_[k].write && (!image_ || uses_[k].layout == u.layout); ++k) {
       b.dstStages |= uses_[k].stages;
       b.dstAccess |= uses_[k].access;
     }
-    if (layoutChange && crossQueuePrior(u.queue)) b.srcStages |= u.stages;  // chain with the semaphore wait
+    b.srcStages |= keptIf(layoutChange & crossQueuePrior(u.queue), u.stages);  // chain with the semaphore wait
     setLayouts(b, u.layout);
     emit(u.pass, false, b, u.queue);
     if (layoutChange) {
@@ -357,15 +371,16 @@ void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::
     AccessFlag aliasedWrites = AccessFlag::None;
     bool aliased = false;
     for (const ResourceId other : aliases.subspan(resource.aliasesWith.first, resource.aliasesWith.count)) {
+      // Earlier occupants only, not later ones (masks: which it is flips at random).
       // (Last uses from the use table: a small array, where alias lists point anywhere.)
-      if (uses.lastUse[other.index] >= resource.firstUse) continue;  // a later occupant
+      const bool earlier = uses.lastUse[other.index] < resource.firstUse;
       const Footprint& previous = footprints[other.index];
-      aliased = true;
-      aliasedStages |= previous.stages;
-      aliasedWrites |= previous.writes;
+      aliased = aliased || earlier;
+      aliasedStages |= keptIf(earlier, previous.stages);
+      aliasedWrites |= keptIf(earlier, previous.writes);
     }
     // Occupants on other queues: chain with the semaphore waits that ordered them first.
-    if (aliased && r < takeOverWaits.size()) aliasedStages |= takeOverWaits[r];
+    if (r < takeOverWaits.size()) aliasedStages |= keptIf(aliased, takeOverWaits[r]);
     ResourceBarrierPlanner(ResourceId{r}, resource, uses.of(r), order, emitted)
         .run(aliasedStages, aliasedWrites, aliased);
   }
