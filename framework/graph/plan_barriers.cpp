@@ -181,8 +181,10 @@ class ResourceBarrierPlanner {
   }
 
   void setLayouts(Barrier& b, Layout newLayout) const {
-    b.oldLayout = image_ ? layout_ : Layout::Undefined;
-    b.newLayout = image_ ? newLayout : Layout::Undefined;
+    // Buffers have no layout: Undefined (0) for them, by a mask.
+    const auto imageMask = static_cast<uint8_t>(-static_cast<uint8_t>(image_));
+    b.oldLayout = static_cast<Layout>(static_cast<uint8_t>(layout_) & imageMask);
+    b.newLayout = static_cast<Layout>(static_cast<uint8_t>(newLayout) & imageMask);
     b.discard = b.discard | (image_ & (layout_ == Layout::Undefined));
   }
 
@@ -375,7 +377,7 @@ void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::
       // (Last uses from the use table: a small array, where alias lists point anywhere.)
       const bool earlier = uses.lastUse[other.index] < resource.firstUse;
       const Footprint& previous = footprints[other.index];
-      aliased = aliased || earlier;
+      aliased |= earlier;
       aliasedStages |= keptIf(earlier, previous.stages);
       aliasedWrites |= keptIf(earlier, previous.writes);
     }
@@ -385,22 +387,24 @@ void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::
         .run(aliasedStages, aliasedWrites, aliased);
   }
 
-  // Group by pass (counting sort keeps resource order within a pass).
-  const uint32_t slots = graph.passCount() * 2;
-  std::vector<uint32_t>& first = scratch.slotFirst;
-  first.assign(slots + 1, 0);
-  for (const EmittedBarriers::Entry& e : emitted.entries) ++first[e.slot + 1];
-  for (uint32_t s = 0; s < slots; ++s) first[s + 1] += first[s];
-  plan.barriers.resize(emitted.entries.size());
-  std::vector<uint32_t>& cursor = scratch.cursor;
-  cursor.assign(first.begin(), first.end() - 1);
-  for (const EmittedBarriers::Entry& e : emitted.entries) plan.barriers[cursor[e.slot]++] = e.barrier;
+  // Group by pass (counting sort keeps resource order within a pass): each
+  // pass's two ranges from the counts, which turn into cursors in place.
+  std::vector<uint32_t>& cursor = scratch.slotFirst;
+  cursor.assign(graph.passCount() * 2, 0);
+  for (const EmittedBarriers::Entry& e : emitted.entries) ++cursor[e.slot];
   plan.before.resize(graph.passCount());
   plan.after.resize(graph.passCount());
+  uint32_t start = 0;
   for (uint32_t p = 0; p < graph.passCount(); ++p) {
-    plan.before[p] = {first[2 * p], first[2 * p + 1] - first[2 * p]};
-    plan.after[p] = {first[2 * p + 1], first[2 * p + 2] - first[2 * p + 1]};
+    plan.before[p] = {start, cursor[2 * p]};
+    cursor[2 * p] = start;
+    start += plan.before[p].count;
+    plan.after[p] = {start, cursor[2 * p + 1]};
+    cursor[2 * p + 1] = start;
+    start += plan.after[p].count;
   }
+  plan.barriers.resize(emitted.entries.size());
+  for (const EmittedBarriers::Entry& e : emitted.entries) plan.barriers[cursor[e.slot]++] = e.barrier;
 }
 
 }  // namespace sg::graph
