@@ -88,7 +88,9 @@ struct EmittedBarriers {
 };
 
 // What a queue already guarantees about the current version of a resource.
-struct QueueSync {
+// (16 bytes, not 9: indexing by queue is a shift, and resetting all three
+// after a write three 16-byte copies.)
+struct alignas(16) QueueSync {
   PipelineStage waitStages = PipelineStage::None;  // reads and barrier destinations a later write/transition waits for
   PipelineStage visibleStages = PipelineStage::None;
   AccessFlag visibleAccess = AccessFlag::None;
