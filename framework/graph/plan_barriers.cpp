@@ -237,7 +237,7 @@ class ResourceBarrierPlanner {
     // Later readers in the same layout share this barrier.
     b.dstStages = u.stages;
     b.dstAccess = u.access;
-    for (std::size_t k = i + 1; k < uses_.size() && !uses_[k].write && (!image_ || uses_[k].layout == u.layout); ++k) {
+    for (std::size_t k = i + 1; k < uses_.size() && (!uses_[k].write & (!image_ | (uses_[k].layout == u.layout))); ++k) {
       b.dstStages |= uses_[k].stages;
       b.dstAccess |= uses_[k].access;
     }
