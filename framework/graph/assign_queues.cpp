@@ -52,7 +52,10 @@ void assignQueues(const RenderGraph& graph, std::span<const PassId> order, const
   rowValue.clear();
   rowValue.reserve(order.size() + 1);
   rowValue.push_back(0);
-  for (std::vector<uint32_t>& ofQueue : scratch.batchesOfQueue) ofQueue.clear();
+  for (std::vector<uint32_t>& ofQueue : scratch.batchesOfQueue) {
+    ofQueue.clear();
+    ofQueue.reserve(order.size());  // a batch per position at most
+  }
 
   for (uint32_t position = 0; position < order.size(); ++position) {
     const PassId p = order[position];
