@@ -359,7 +359,10 @@ class Validator {
   void checkCycles() {
     const DependencyGraph& deps = deps_;
     // The usual case: every pass declared after the passes it depends on, so no cycle.
-    if (std::all_of(deps.edges.begin(), deps.edges.end(), [](const Dependency& e) { return e.from < e.to; })) return;
+    if (deps.forwardOnly ||
+        std::all_of(deps.edges.begin(), deps.edges.end(), [](const Dependency& e) { return e.from < e.to; })) {
+      return;
+    }
     const std::vector<PassId> order = orderPasses(deps);
     if (order.size() == graph_.passCount()) return;
 
