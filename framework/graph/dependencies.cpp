@@ -14,13 +14,9 @@ namespace {
 template <bool everyPassKept>
 uint32_t listDependencies(const RenderGraph& graph, const VersionTable& versions, const std::vector<bool>& culled,
                           std::vector<Dependency>& found, std::vector<uint32_t>& firstEdge, bool& backward) {
-  const uint32_t passCount = graph.passCount();
   const uint32_t resourceCount = graph.resourceCount();
   // Raw pointers in locals: the walk stores through uint32_t pointers, and
   // `found` only grows out of line, so these stay in registers.
-  const GraphDeclaration& declared = graph.declaration();
-  const PassDecl* passes = declared.passes.data();
-  const ResourceAccess* accesses = declared.accesses.data();
   const uint32_t* firstSlot = versions.firstSlot.data();
   const PassId* producers = versions.producer.data();
   const uint32_t* firstReader = versions.firstReader.data();
@@ -30,43 +26,40 @@ uint32_t listDependencies(const RenderGraph& graph, const VersionTable& versions
   uint32_t capacity = static_cast<uint32_t>(found.size());
   uint32_t count = 0;
   bool anyBackward = false;
-  for (uint32_t p = 0; p < passCount; ++p) {
-    const PassId pass{p};
-    if (!everyPassKept && culled[p]) continue;
-    const Range range = passes[p].accesses;
-    for (const ResourceAccess* a = accesses + range.first; a != accesses + range.first + range.count; ++a) {
-      const uint32_t r = a->resource.index;
-      if (r >= resourceCount) [[unlikely]] continue;  // !graph.isValid(a->resource)
-      if (a->version >= firstSlot[r + 1] - firstSlot[r]) [[unlikely]] continue;  // a forged version
-      const uint32_t slot = firstSlot[r] + a->version;
-      // Read after write, or write after write: after the version's producer.
-      // Write after read (writes only): after everyone reading the version written over.
-      const uint32_t firstReaderOfSlot = firstReader[slot];
-      const uint32_t readerCount = (firstReader[slot + 1] - firstReaderOfSlot) & (a->write ? ~0u : 0u);
-      if (count + 1 + readerCount > capacity) [[unlikely]] {
-        found.resize(2 * (count + 1 + readerCount));
-        list = found.data();
-        capacity = static_cast<uint32_t>(found.size());
-      }
-      const ResourceId resource = a->resource;
-      const PipelineStage stages = a->stages;
-      const auto add = [&](PassId from) [[gnu::always_inline]] {
-        bool edge = from.valid() & (from != pass);
-        if constexpr (!everyPassKept) edge = edge && !culled[from.index];
-        // Field by field: a whole-struct copy goes through the stack here.
-        Dependency& candidate = list[count];
-        candidate.from = from;
-        candidate.to = pass;
-        candidate.resource = resource;
-        candidate.dstStages = stages;
-        count += edge;
-        edgesFrom[from.index + 1] += edge;
-        anyBackward |= edge & (from.index > p);
-      };
-      add(producers[slot]);
-      for (uint32_t i = 0; i < readerCount; ++i) add(readers[firstReaderOfSlot + i]);
+  forEachAccess(graph, versions, [&](uint32_t p, const ResourceAccess& a) __attribute__((always_inline)) {
+    if (!everyPassKept && culled[p]) return;
+    const uint32_t r = a.resource.index;
+    if (r >= resourceCount) [[unlikely]] return;  // !graph.isValid(a.resource)
+    if (a.version >= firstSlot[r + 1] - firstSlot[r]) [[unlikely]] return;  // a forged version
+    const uint32_t slot = firstSlot[r] + a.version;
+    // Read after write, or write after write: after the version's producer.
+    // Write after read (writes only): after everyone reading the version written over.
+    const uint32_t firstReaderOfSlot = firstReader[slot];
+    const uint32_t readerCount = (firstReader[slot + 1] - firstReaderOfSlot) & (a.write ? ~0u : 0u);
+    if (count + 1 + readerCount > capacity) [[unlikely]] {
+      found.resize(2 * (count + 1 + readerCount));
+      list = found.data();
+      capacity = static_cast<uint32_t>(found.size());
     }
-  }
+    const PassId pass{p};
+    const ResourceId resource = a.resource;
+    const PipelineStage stages = a.stages;
+    const auto add = [&](PassId from) __attribute__((always_inline)) {
+      bool edge = from.valid() & (from != pass);
+      if constexpr (!everyPassKept) edge = edge && !culled[from.index];
+      // Field by field: a whole-struct copy goes through the stack here.
+      Dependency& candidate = list[count];
+      candidate.from = from;
+      candidate.to = pass;
+      candidate.resource = resource;
+      candidate.dstStages = stages;
+      count += edge;
+      edgesFrom[from.index + 1] += edge;
+      anyBackward |= edge & (from.index > p);
+    };
+    add(producers[slot]);
+    for (uint32_t i = 0; i < readerCount; ++i) add(readers[firstReaderOfSlot + i]);
+  });
   backward = anyBackward;
   return count;
 }
