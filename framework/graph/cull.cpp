@@ -55,28 +55,27 @@ void cullPasses(const RenderGraph& graph, const VersionTable& versions, bool ext
   // A kept pass needs the producer of each version it reads, and of the version
   // it writes over (the write may keep part of it: load ops, partial writes).
   // The usual case: every producer is declared before the passes using its
-  // versions, so one sweep from the last pass to the first sees each pass
-  // after everything that needs it. Every access of every pass marks its
-  // producer with the pass's own mark (no test per access whose outcome
+  // versions, so one sweep from the last pass's accesses to the first's sees
+  // each pass after everything that needs it. Every access marks its
+  // producer with its pass's own mark (no test per access whose outcome
   // varies at random); a producer declared later than its user (seen too
   // early) sends the walk to the worklist, which handles any order.
   const uint32_t* firstSlot = versions.firstSlot.data();
   const PassId* producers = versions.producer.data();
   uint8_t* mark = needed.data();
   bool producerLater = false;
-  for (uint32_t p = passCount; p-- > 0;) {
+  forEachAccessInReverse(graph, versions, [&](uint32_t p, const ResourceAccess& a) __attribute__((always_inline)) {
+    const uint32_t r = a.resource.index;
+    if (r >= resourceCount) [[unlikely]] return;  // !graph.isValid(a.resource)
+    const uint32_t first = firstSlot[r];
+    const bool known = a.version < firstSlot[r + 1] - first;  // else a forged version: no producer
+    // An unknown version reads version 0's slot, which has no producer.
+    const uint32_t index = producers[first + (known ? a.version : 0u)].index;
+    const uint32_t producer = index < passCount ? index : passCount;  // (std::min makes a branch here)
     const uint8_t keep = mark[p];
-    for (const ResourceAccess& a : graph.accessesOf(PassId{p})) {
-      const uint32_t r = a.resource.index;
-      if (r >= resourceCount) [[unlikely]] continue;  // !graph.isValid(a.resource)
-      const uint32_t first = firstSlot[r];
-      const bool known = a.version < firstSlot[r + 1] - first;  // else a forged version: no producer
-      // An unknown version reads version 0's slot, which has no producer.
-      const uint32_t producer = std::min(producers[first + (known ? a.version : 0u)].index, passCount);
-      producerLater |= (producer > p) & (producer < passCount) & (keep != 0);
-      mark[producer] |= keep;
-    }
-  }
+    producerLater |= (producer > p) & (producer < passCount) & (keep != 0);
+    mark[producer] |= keep;
+  });
   if (producerLater) [[unlikely]] keepNeededByWorklist(graph, versions, needed);
 
   culled.assign(passCount, false);

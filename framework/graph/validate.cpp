@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <array>
-#include <span>
 #include <string>
 #include <string_view>
 
@@ -79,9 +78,6 @@ constexpr std::array<uint8_t, kPassKinds> kQueuesFor = [] {
 bool runsOn(PassKind kind, QueueClass queue) {
   return ((kQueuesFor[static_cast<std::size_t>(kind)] >> queueIndex(queue)) & 1u) != 0;
 }
-std::span<const AccessRule, kAccesses> accessRulesFor(PassKind kind) {
-  return kAccessRules[static_cast<std::size_t>(kind)];
-}
 
 class Validator {
  public:
@@ -91,12 +87,12 @@ class Validator {
 
   std::vector<ValidationError> run() {
     const uint32_t resourceCount = graph_.resourceCount();
-    shapes_.resize(resourceCount);
+    facts_.resize(resourceCount);
     for (uint32_t r = 0; r < resourceCount; ++r) {
       checkResource(ResourceId{r});
-      shapes_[r] = shapeOf(graph_.declaration().traits[r]);
+      facts_[r] = {kInvalidIndex, shapeOf(graph_.declaration().traits[r])};
     }
-    for (uint32_t p = 0; p < graph_.passCount(); ++p) checkPass(PassId{p});
+    checkPasses();
     checkBranches();
     checkCycles();
     return std::move(errors_);
@@ -161,29 +157,33 @@ class Validator {
     return sized & (image.depth != 0) & (image.layers != 0) & (image.mipLevels != 0) & (image.samples != 0);
   }
 
-  // The common case (nothing to report) tested with one branch per pass: every
-  // access's conditions are folded into one flag (table reads and arithmetic
-  // on bools, no branch per condition), and a resource named twice in the pass
-  // (whose accesses must then be compared pairwise) is caught by a 64-bit mask
-  // of resource indices; a false match only costs the detailed walk. A pass
-  // that is not fine takes the detailed walk, which reports what it finds in order.
-  void checkPass(PassId id) {
-    const PassDecl& pass = graph_.pass(id);
-    const std::span<const AccessRule, kAccesses> rules = accessRulesFor(pass.kind);
-    bool fine = runsOn(pass.kind, pass.queue);
-    uint64_t named = 0;  // bit (resource index % 64) of each resource named so far
+  // The common case (nothing to report) without a branch per condition:
+  // every access's conditions are folded into its pass's flag (table reads and
+  // arithmetic on bools), walking all accesses in one loop. A resource named
+  // twice in a pass (whose accesses must then be compared pairwise) marks the
+  // pass too. Only the passes so marked take the detailed walk, in pass
+  // order, which reports what it finds in order.
+  void checkPasses() {
+    const uint32_t passCount = graph_.passCount();
+    const PassDecl* passes = graph_.declaration().passes.data();
+    std::vector<uint8_t> fine(passCount);
+    for (uint32_t p = 0; p < passCount; ++p) fine[p] = runsOn(passes[p].kind, passes[p].queue);
     const uint32_t resourceCount = graph_.resourceCount();
-    for (const ResourceAccess& a : graph_.accessesOf(id)) {
-      if (a.resource.index >= resourceCount) [[unlikely]] {  // !isValid()
-        fine = false;
-        break;
+    ResourceFacts* facts = facts_.data();
+    uint8_t* passFine = fine.data();
+    forEachAccess(graph_, versions_, [&](uint32_t p, const ResourceAccess& a) __attribute__((always_inline)) {
+      const uint32_t r = a.resource.index;
+      if (r >= resourceCount) [[unlikely]] {  // !isValid()
+        passFine[p] = 0;
+        return;
       }
-      const uint64_t bit = uint64_t{1} << (a.resource.index % 64);
-      fine &= (named & bit) == 0;
-      named |= bit;
-      fine &= accessIsFine(rules[static_cast<std::size_t>(a.access)], id, a);
+      const AccessRule& rule = kAccessRules[static_cast<std::size_t>(passes[p].kind)][static_cast<std::size_t>(a.access)];
+      passFine[p] &= (facts[r].namedBy != p) & accessIsFine(rule, PassId{p}, a, facts[r].shape);
+      facts[r].namedBy = p;
+    });
+    for (uint32_t p = 0; p < passCount; ++p) {
+      if (!fine[p]) [[unlikely]] reportPass(PassId{p});
     }
-    if (!fine) [[unlikely]] reportPass(id);
   }
 
   // What accessIsFine() needs of a resource, looked up once per resource:
@@ -201,8 +201,7 @@ class Validator {
 
   // True when checkAccess() (and with it checkVersion()) finds nothing: the same
   // conditions, each computed, combined with `&` (no branch per condition).
-  bool accessIsFine(const AccessRule& rule, PassId passId, const ResourceAccess& a) const {
-    const uint32_t shape = shapes_[a.resource.index];
+  bool accessIsFine(const AccessRule& rule, PassId passId, const ResourceAccess& a, uint32_t shape) const {
     const uint32_t write = a.write ? 1u : 0u;
     const bool allowed = ((rule.fineFor >> ((shape % kTransientShape) + write * 2)) & 1u) != 0;
     const bool stagesFit = (a.shaderStages & ~rule.stages) == ShaderStage::None;
@@ -217,7 +216,7 @@ class Validator {
     return allowed & stagesFit & (initialFine | produced);
   }
 
-  // What checkPass() reports, in order (off the common path).
+  // What checkPasses() reports about one pass, in order (off the common path).
   [[gnu::noinline]] void reportPass(PassId id) {
     const PassDecl& pass = graph_.pass(id);
     if (!canRunOn(pass.kind, pass.queue)) {
@@ -405,7 +404,12 @@ class Validator {
   const DependencyGraph& deps_;
   const CompileOptions& options_;
   std::vector<ValidationError> errors_;
-  std::vector<uint8_t> shapes_;  // per resource, shapeOf() its traits
+  // Per resource: the last pass naming it (checkPasses()) and shapeOf() its traits.
+  struct ResourceFacts {
+    uint32_t namedBy;
+    uint8_t shape;
+  };
+  std::vector<ResourceFacts> facts_;
 };
 
 }  // namespace

@@ -90,6 +90,16 @@ void forEachAccess(const RenderGraph& graph, const VersionTable& versions, Visit
   for (const uint32_t* passOf = versions.passOfAccess.data(); access != end; ++access, ++passOf) visit(*passOf, *access);
 }
 
+// The same from the last access of the last pass to the first of the first.
+template <class Visit>
+void forEachAccessInReverse(const RenderGraph& graph, const VersionTable& versions, Visit&& visit) {
+  const std::vector<ResourceAccess>& all =
+      versions.copiedAccesses ? versions.accessesInPassOrder : graph.declaration().accesses;
+  const ResourceAccess* const first = all.data();
+  const uint32_t* passOf = versions.passOfAccess.data() + all.size();
+  for (const ResourceAccess* access = first + all.size(); access != first;) visit(*--passOf, *--access);
+}
+
 VersionTable indexVersions(const RenderGraph& graph);
 // The same into `table`, reusing its memory.
 void indexVersions(const RenderGraph& graph, VersionTable& table);
