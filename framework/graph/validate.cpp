@@ -171,6 +171,8 @@ class Validator {
     const uint32_t resourceCount = graph_.resourceCount();
     ResourceFacts* facts = facts_.data();
     uint8_t* passFine = fine.data();
+    const uint32_t* firstSlot = versions_.firstSlot.data();
+    const PassId* producers = versions_.producer.data();
     forEachAccess(graph_, versions_, [&](uint32_t p, const ResourceAccess& a) __attribute__((always_inline)) {
       const uint32_t r = a.resource.index;
       if (r >= resourceCount) [[unlikely]] {  // !isValid()
@@ -178,7 +180,7 @@ class Validator {
         return;
       }
       const AccessRule& rule = kAccessRules[static_cast<std::size_t>(passes[p].kind)][static_cast<std::size_t>(a.access)];
-      passFine[p] &= (facts[r].namedBy != p) & accessIsFine(rule, PassId{p}, a, facts[r].shape);
+      passFine[p] &= (facts[r].namedBy != p) & accessIsFine(rule, PassId{p}, a, facts[r].shape, firstSlot, producers);
       facts[r].namedBy = p;
     });
     for (uint32_t p = 0; p < passCount; ++p) {
@@ -201,16 +203,19 @@ class Validator {
 
   // True when checkAccess() (and with it checkVersion()) finds nothing: the same
   // conditions, each computed, combined with `&` (no branch per condition).
-  bool accessIsFine(const AccessRule& rule, PassId passId, const ResourceAccess& a, uint32_t shape) const {
+  // (Raw pointers, in the caller's registers: its byte stores would make the
+  // compiler reload the version table's vectors after each.)
+  static bool accessIsFine(const AccessRule& rule, PassId passId, const ResourceAccess& a, uint32_t shape,
+                           const uint32_t* firstSlot, const PassId* producers) {
     const uint32_t write = a.write ? 1u : 0u;
     const bool allowed = ((rule.fineFor >> ((shape % kTransientShape) + write * 2)) & 1u) != 0;
     const bool stagesFit = (a.shaderStages & ~rule.stages) == ShaderStage::None;
     // The version: version 0 is the frame-start content (readable unless
     // transient); a later one needs a producer, not this pass unless it writes
     // over it. An unknown version reads version 0's slot, which has no producer.
-    const uint32_t first = versions_.firstSlot[a.resource.index];
-    const bool known = a.version < versions_.firstSlot[a.resource.index + 1] - first;
-    const PassId producer = versions_.producer[first + (known ? a.version : 0u)];
+    const uint32_t first = firstSlot[a.resource.index];
+    const bool known = a.version < firstSlot[a.resource.index + 1] - first;
+    const PassId producer = producers[first + (known ? a.version : 0u)];
     const bool produced = producer.valid() & ((producer != passId) | a.write);
     const bool initialFine = (a.version == 0) & (a.write | (shape < kTransientShape));
     return allowed & stagesFit & (initialFine | produced);

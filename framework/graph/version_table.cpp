@@ -8,11 +8,21 @@ namespace {
 // Fills table.passOfAccess (and, if the declaration holds the passes'
 // accesses out of order or with gaps, table.accessesInPassOrder).
 void listPassOfAccess(const GraphDeclaration& declared, VersionTable& table) {
+  // Eight entries at a time, past the pass's end (the next pass overwrites
+  // them; the last one's land in the slack): one round for passes of up to
+  // eight accesses, so the loop's exit is predictable. The positions count
+  // the passes' accesses one after the other: the declaration's own if it
+  // holds them so, which this loop finds out too, else a copy made below.
+  constexpr uint32_t kWidth = 8;
+  table.passOfAccess.resize(declared.accesses.size() + kWidth);  // at least as many as passes' accesses
+  uint32_t* passOf = table.passOfAccess.data();
   bool inPassOrder = true;
   uint32_t next = 0;
-  for (const PassDecl& pass : declared.passes) {
-    inPassOrder &= pass.accesses.first == next;
-    next = pass.accesses.first + pass.accesses.count;
+  for (uint32_t p = 0; p < declared.passes.size(); ++p) {
+    const Range accesses = declared.passes[p].accesses;
+    inPassOrder &= accesses.first == next;
+    for (uint32_t i = 0; i < accesses.count; i += kWidth) std::fill_n(passOf + next + i, kWidth, p);
+    next += accesses.count;
   }
   inPassOrder &= next == declared.accesses.size();
   table.copiedAccesses = !inPassOrder;
@@ -22,19 +32,6 @@ void listPassOfAccess(const GraphDeclaration& declared, VersionTable& table) {
       const std::span<const ResourceAccess> accesses = declared.accessesOf(PassId{p});
       table.accessesInPassOrder.insert(table.accessesInPassOrder.end(), accesses.begin(), accesses.end());
     }
-  }
-  // Eight entries at a time, past the pass's end (the next pass overwrites
-  // them; the last one's land in the slack): one round for passes of up to
-  // eight accesses, so the loop's exit is predictable.
-  constexpr uint32_t kWidth = 8;
-  const std::size_t count = inPassOrder ? declared.accesses.size() : table.accessesInPassOrder.size();
-  table.passOfAccess.resize(count + kWidth);
-  uint32_t* passOf = table.passOfAccess.data();
-  uint32_t first = 0;
-  for (uint32_t p = 0; p < declared.passes.size(); ++p) {
-    const uint32_t accesses = declared.passes[p].accesses.count;
-    for (uint32_t i = 0; i < accesses; i += kWidth) std::fill_n(passOf + first + i, kWidth, p);
-    first += accesses;
   }
 }
 
