@@ -83,7 +83,11 @@ class Validator {
  public:
   Validator(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,
             const CompileOptions& options)
-      : graph_(graph), versions_(versions), deps_(deps), options_(options) {}
+      : graph_(graph),
+        versions_(versions),
+        deps_(deps),
+        options_(options),
+        outputSized_((options.outputWidth != 0) & (options.outputHeight != 0)) {}
 
   std::vector<ValidationError> run() {
     const uint32_t resourceCount = graph_.resourceCount();
@@ -112,7 +116,14 @@ class Validator {
     const ResourceDecl& r = graph_.resource(id);
     const bool isBuffer = r.type == ResourceType::Buffer;
     const bool bufferFine = r.buffer.size != 0;
-    const bool imageFine = (r.image.format != Format::Undefined) & imageSizeLooksFine(r.image);
+    const ImageDesc& image = r.image;
+    const Size& size = image.size;
+    const bool relative = size.mode == Size::Mode::Relative;
+    const bool relativeSized = outputSized_ & (size.scaleX > 0.0f) & (size.scaleY > 0.0f);
+    const bool absoluteSized = (size.width != 0) & (size.height != 0);
+    const uint32_t fewest = std::min(std::min(image.depth, image.layers), std::min(image.mipLevels, image.samples));
+    const bool imageFine = (image.format != Format::Undefined) & ((relative & relativeSized) | (!relative & absoluteSized)) &
+                           (fewest != 0);
     const bool fine = (r.kind != ResourceKind::History) & ((isBuffer & bufferFine) | (!isBuffer & imageFine));
     if (!fine) [[unlikely]] reportResource(id);
   }
@@ -408,6 +419,7 @@ class Validator {
   const VersionTable& versions_;
   const DependencyGraph& deps_;
   const CompileOptions& options_;
+  const bool outputSized_;  // relative sizes resolve to a non-zero extent when their scales are positive
   std::vector<ValidationError> errors_;
   // Per resource: the last pass naming it (checkPasses()) and shapeOf() its traits.
   struct ResourceFacts {
