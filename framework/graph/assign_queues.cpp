@@ -6,16 +6,14 @@
 namespace sg::graph {
 namespace {
 
-struct Need {
-  uint64_t value = 0;
-  PipelineStage stages = PipelineStage::None;
-};
+using Need = QueueSchedule::Scratch::Need;
 
 // Stages already waited for on one queue for one producing queue: a wait on
 // value v covers every value <= v, for its stages, for all later submissions.
 // Waits another one covers are dropped, so the list stays a few entries long.
 class WaitHistory {
  public:
+  explicit WaitHistory(std::vector<Need>& waits) : waits_(waits) {}
   PipelineStage coveredStages(uint64_t value) const {
     PipelineStage stages = PipelineStage::None;
     for (const Need& w : waits_) {
@@ -29,7 +27,7 @@ class WaitHistory {
   }
 
  private:
-  std::vector<Need> waits_;
+  std::vector<Need>& waits_;
 };
 
 }  // namespace
@@ -43,60 +41,71 @@ QueueSchedule assignQueues(const RenderGraph& graph, std::span<const PassId> ord
 
 void assignQueues(const RenderGraph& graph, std::span<const PassId> order, const DependencyGraph& deps,
                   std::span<const Dependency> handoffs, QueueSchedule& schedule) {
+  QueueSchedule::Scratch& scratch = schedule.scratch;
   schedule.batches.clear();
   schedule.waits.clear();
   schedule.batches.reserve(order.size());  // a batch per position at most
   schedule.waits.reserve(order.size());
   schedule.passBatch.assign(graph.passCount(), kInvalidIndex);
-  // Sized once (a batch per position at most) instead of regrown batch by batch.
-  std::vector<uint64_t> batchValue;
-  batchValue.reserve(order.size());
-  std::array<std::vector<uint32_t>, kQueueClassCount> batchesOfQueue;  // by value - 1
+  // Rows of the tables below are batch + 1: row 0 is a spare (see require).
+  std::vector<uint64_t>& rowValue = scratch.rowValue;
+  rowValue.clear();
+  rowValue.reserve(order.size() + 1);
+  rowValue.push_back(0);
+  for (std::vector<uint32_t>& ofQueue : scratch.batchesOfQueue) {
+    ofQueue.clear();
+    ofQueue.reserve(order.size());  // a batch per position at most
+  }
 
   for (uint32_t position = 0; position < order.size(); ++position) {
     const PassId p = order[position];
     const QueueClass queue = graph.pass(p).queue;
     if (schedule.batches.empty() || schedule.batches.back().queue != queue) {
-      auto& ofQueue = batchesOfQueue[queueIndex(queue)];
-      if (ofQueue.empty()) ofQueue.reserve(order.size() - position);
+      auto& ofQueue = scratch.batchesOfQueue[queueIndex(queue)];
       ofQueue.push_back(static_cast<uint32_t>(schedule.batches.size()));
-      batchValue.push_back(ofQueue.size());
+      rowValue.push_back(ofQueue.size());
       schedule.batches.push_back({.queue = queue, .passes = {position, 0}});
     }
     ++schedule.batches.back().passes.count;
     schedule.passBatch[p.index] = static_cast<uint32_t>(schedule.batches.size() - 1);
   }
 
-  // Per batch and producing queue: the highest value needed and the stages that wait.
-  std::vector<std::array<Need, kQueueClassCount>> needs(schedule.batches.size());
+  // Per batch and producing queue: the highest value needed and the stages
+  // that wait. Edges that need no wait (one end culled, or both ends on one
+  // queue: submission order and barriers suffice) update row 0, a spare
+  // never read: no branch, as whether an edge crosses queues flips from edge
+  // to edge. (A culled pass's kInvalidIndex + 1 wraps to row 0.)
+  std::vector<std::array<Need, kQueueClassCount>>& needs = scratch.needs;
+  needs.assign(schedule.batches.size() + 1, {});
   const auto require = [&](const Dependency& e) {
-    const uint32_t from = schedule.passBatch[e.from.index];
-    const uint32_t to = schedule.passBatch[e.to.index];
-    if (from == kInvalidIndex || to == kInvalidIndex) return;
-    const QueueClass producer = schedule.batches[from].queue;
-    if (producer == schedule.batches[to].queue) return;  // submission order and barriers suffice
-    Need& need = needs[to][queueIndex(producer)];
-    need.value = std::max(need.value, batchValue[from]);
+    const uint32_t fromRow = schedule.passBatch[e.from.index] + 1;
+    const uint32_t toRow = schedule.passBatch[e.to.index] + 1;
+    const QueueClass producer = graph.pass(e.from).queue;  // its batch's queue
+    const bool waits = (fromRow != 0) & (producer != graph.pass(e.to).queue);
+    Need& need = needs[toRow * waits][queueIndex(producer)];
+    need.value = std::max(need.value, rowValue[fromRow]);
     // A wait blocking no stage would block nothing.
     need.stages |= any(e.dstStages) ? e.dstStages : PipelineStage::AllCommands;
   };
   for (const Dependency& e : deps.edges) require(e);
   for (const Dependency& e : handoffs) require(e);
 
-  std::array<std::array<WaitHistory, kQueueClassCount>, kQueueClassCount> history;  // [waiting queue][producer]
+  for (auto& ofWaiter : scratch.history) {
+    for (std::vector<Need>& waits : ofWaiter) waits.clear();
+  }
   for (uint32_t b = 0; b < schedule.batches.size(); ++b) {
     Batch& batch = schedule.batches[b];
     batch.waits.first = static_cast<uint32_t>(schedule.waits.size());
     for (uint32_t producer = 0; producer < kQueueClassCount; ++producer) {
-      const Need& need = needs[b][producer];
+      const Need& need = needs[b + 1][producer];
       if (need.value == 0) continue;
-      WaitHistory& waited = history[queueIndex(batch.queue)][producer];
+      WaitHistory waited(scratch.history[queueIndex(batch.queue)][producer]);
       const PipelineStage missing = need.stages & ~waited.coveredStages(need.value);
       if (!any(missing)) continue;
       schedule.waits.push_back({static_cast<QueueClass>(producer), need.value, missing});
       ++batch.waits.count;
       waited.add({need.value, missing});
-      Batch& signaller = schedule.batches[batchesOfQueue[producer][need.value - 1]];
+      Batch& signaller = schedule.batches[scratch.batchesOfQueue[producer][need.value - 1]];
       signaller.signalValue = need.value;
     }
   }

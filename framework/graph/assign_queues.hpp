@@ -4,6 +4,7 @@
 #include <shadelgraph/graph/dependencies.hpp>
 #include <shadelgraph/graph/render_graph.hpp>
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -15,6 +16,21 @@ struct QueueSchedule {
   std::vector<uint32_t> passBatch;    // per pass; kInvalidIndex for passes not in the order
 
   std::span<const SemaphoreWait> waitsOf(const Batch& batch) const { return slice(waits, batch.waits); }
+
+  // assignQueues()'s working memory, kept so that the next call reuses it.
+  struct Scratch {
+    struct Need {
+      uint64_t value = 0;
+      PipelineStage stages = PipelineStage::None;
+    };
+    // Rows: 0 a spare, then batch + 1.
+    std::vector<uint64_t> rowValue;  // the batch's value on its queue (the spare's 0)
+    std::array<std::vector<uint32_t>, kQueueClassCount> batchesOfQueue;  // by value - 1
+    // Per row and producing queue: the highest value needed and the stages that wait.
+    std::vector<std::array<Need, kQueueClassCount>> needs;
+    // Per waiting queue and producing queue: the waits so far (see WaitHistory).
+    std::array<std::array<std::vector<Need>, kQueueClassCount>, kQueueClassCount> history;
+  } scratch;
 };
 
 // Splits `order` into batches (consecutive passes on the same logical queue)

@@ -24,6 +24,9 @@ struct DependencyGraph {
   std::vector<Dependency> edges;
   std::vector<uint32_t> firstEdge;  // per pass, plus one: successors of p are edges[firstEdge[p] .. firstEdge[p + 1])
   std::vector<Dependency> scratch;  // buildDependencies()'s working memory, kept for the next call
+  // True when buildDependencies() found every edge going from an earlier-declared
+  // pass to a later one (the usual case: no sort, no cycle); false when unknown.
+  bool forwardOnly = false;
 
   uint32_t passCount() const { return firstEdge.empty() ? 0 : static_cast<uint32_t>(firstEdge.size() - 1); }
   std::span<const Dependency> successors(PassId p) const {

@@ -50,7 +50,8 @@ void orderPasses(const DependencyGraph& deps, const std::vector<bool>& culled, s
   order.reserve(passCount);
   // The usual case: every pass declared after the passes it depends on. Then
   // declaration order is the answer (each pass is ready when its turn comes).
-  if (std::all_of(deps.edges.begin(), deps.edges.end(), [](const Dependency& e) { return e.from < e.to; })) {
+  if (deps.forwardOnly ||
+      std::all_of(deps.edges.begin(), deps.edges.end(), [](const Dependency& e) { return e.from < e.to; })) {
     for (uint32_t p = 0; p < passCount; ++p) {
       if (kept(PassId{p})) order.push_back(PassId{p});
     }

@@ -8,6 +8,15 @@ namespace {
 
 using Use = ResourceUse;
 
+// `flags` if `keep`, else none: a multiply by 0 or 1 instead of a branch, where
+// `keep` flips from one resource or use to the next (fewer instructions than a
+// mask made of the 16-bit flags).
+template <BitmaskEnum Flags>
+constexpr Flags keptIf(bool keep, Flags flags) {
+  using Bits = std::underlying_type_t<Flags>;
+  return static_cast<Flags>(static_cast<uint32_t>(static_cast<Bits>(flags)) * static_cast<uint32_t>(keep));
+}
+
 // Uses grouped by resource, each group in execution order (views of the scratch).
 struct UseTable {
   const std::vector<uint32_t>& first;    // per resource, plus one
@@ -19,45 +28,51 @@ struct UseTable {
 
 UseTable collectUses(const RenderGraph& graph, std::span<const PassId> order, uint32_t resourceCount,
                      BarrierPlan::Scratch& scratch) {
-  // Two walks over the kept passes: count each resource's uses (one per pass),
-  // then place them, merging a pass's accesses to the same resource.
+  // One walk over the kept passes appends each pass's uses in execution order
+  // (a pass's accesses to one resource merged) and counts them per resource;
+  // a counting sort then groups them by resource. (The sort's flat loop has
+  // one exit; a second walk over the passes would pay every pass's inner-loop
+  // exit again.)
   std::vector<uint32_t>& first = scratch.firstUse;
   std::vector<uint32_t>& lastUse = scratch.lastUse;
   std::vector<Use>& uses = scratch.uses;
+  std::vector<BarrierPlan::Scratch::UseInOrder>& inOrder = scratch.inOrder;
   first.assign(resourceCount + 1, 0);
   lastUse.assign(resourceCount, kInvalidIndex);
-  for (uint32_t position = 0; position < order.size(); ++position) {
-    for (const ResourceAccess& a : graph.accessesOf(order[position])) {
-      if (lastUse[a.resource.index] == position) continue;
-      lastUse[a.resource.index] = position;
-      ++first[a.resource.index + 1];
-    }
-  }
-  for (uint32_t r = 0; r < resourceCount; ++r) first[r + 1] += first[r];
-  uses.resize(first[resourceCount]);
-  std::vector<uint32_t>& cursor = scratch.cursor;
-  cursor.assign(first.begin(), first.end() - 1);
   // Every stage and write of each resource, on the way: what a transient taking over its memory waits for.
   std::vector<BarrierPlan::Scratch::Footprint>& footprints = scratch.footprints;
   footprints.assign(resourceCount, {});
-  for (const PassId p : order) {
+  inOrder.resize(graph.declaration().accesses.size());  // at most one use per access
+  BarrierPlan::Scratch::UseInOrder* next = inOrder.data();
+  for (uint32_t position = 0; position < order.size(); ++position) {
+    const PassId p = order[position];
     const QueueClass queue = graph.pass(p).queue;
     for (const ResourceAccess& a : graph.accessesOf(p)) {
-      BarrierPlan::Scratch::Footprint& footprint = footprints[a.resource.index];
+      const uint32_t r = a.resource.index;
+      BarrierPlan::Scratch::Footprint& footprint = footprints[r];
       footprint.stages |= a.stages;
       footprint.writes |= writeBits(a.accessFlags);
-      uint32_t& next = cursor[a.resource.index];
-      if (next > first[a.resource.index] && uses[next - 1].pass == p) {
-        Use& use = uses[next - 1];
+      if (lastUse[r] == position) [[unlikely]] {
+        // A second access of the pass to this resource: merge it into the pass's use, a few entries back.
+        BarrierPlan::Scratch::UseInOrder* earlier = next - 1;
+        while (earlier->resource != r) --earlier;
+        Use& use = earlier->use;
         use.stages |= a.stages;
         use.access |= a.accessFlags;
         use.write = use.write || a.write;
         if (const auto merged = mergeLayouts(use.layout, a.layout)) use.layout = *merged;
         continue;
       }
-      uses[next++] = {p, queue, a.stages, a.accessFlags, a.layout, a.write};
+      lastUse[r] = position;
+      ++first[r + 1];
+      *next++ = {r, {p, queue, a.stages, a.accessFlags, a.layout, a.write}};
     }
   }
+  for (uint32_t r = 0; r < resourceCount; ++r) first[r + 1] += first[r];
+  uses.resize(first[resourceCount]);
+  std::vector<uint32_t>& cursor = scratch.cursor;
+  cursor.assign(first.begin(), first.end() - 1);
+  for (const BarrierPlan::Scratch::UseInOrder* u = inOrder.data(); u != next; ++u) uses[cursor[u->resource]++] = u->use;
   return {first, lastUse, uses};
 }
 
@@ -73,7 +88,9 @@ struct EmittedBarriers {
 };
 
 // What a queue already guarantees about the current version of a resource.
-struct QueueSync {
+// (16 bytes, not 9: indexing by queue is a shift, and resetting all three
+// after a write three 16-byte copies.)
+struct alignas(16) QueueSync {
   PipelineStage waitStages = PipelineStage::None;  // reads and barrier destinations a later write/transition waits for
   PipelineStage visibleStages = PipelineStage::None;
   AccessFlag visibleAccess = AccessFlag::None;
@@ -115,34 +132,44 @@ class ResourceBarrierPlanner {
   }
 
   void run(PipelineStage aliasedStages, AccessFlag aliasedWrites, bool aliased) {
+    // Only a resource used on several queues can have a version read on
+    // several; the others (most) never look for where a run of reads ends.
+    const bool severalQueues = queueCount(resource_.desc.queues) > 1;
+    std::size_t readsEnd = 0;  // where the current run of reads ends, once looked for
     for (std::size_t i = 0; i < uses_.size();) {
       if (uses_[i].write) {
-        write(uses_[i], i == 0 && aliased, aliasedStages, aliasedWrites);
+        write(uses_[i], (i == 0) & aliased, aliasedStages, aliasedWrites);
         ++i;
         continue;
       }
-      std::size_t end = i;
-      QueueMask queues = QueueMask::None;
-      while (end < uses_.size() && !uses_[end].write) queues |= toMask(uses_[end++].queue);
-      if (queueCount(queues) > 1) {
-        sharedReads(i, end);
-      } else {
-        for (std::size_t k = i; k < end; ++k) read(k, end);
+      if (severalQueues & (i >= readsEnd)) {
+        readsEnd = i;
+        QueueMask queues = QueueMask::None;
+        while (readsEnd < uses_.size() && !uses_[readsEnd].write) queues |= toMask(uses_[readsEnd++].queue);
+        if (queueCount(queues) > 1) {
+          sharedReads(i, readsEnd);
+          i = readsEnd;
+          continue;
+        }
       }
-      i = end;
+      read(i);
+      ++i;
     }
     if (!isTransient(resource_.kind)) finish();
   }
 
  private:
-  bool sameQueueWrite(QueueClass q) const { return written_ && (writeExternal_ || writeQueue_ == q); }
+  // (The planner's conditions combine bools with & and |, not && and ||: their
+  // operands are cheap, and each short-circuit would be a branch that flips
+  // with the graph's data.)
+  bool sameQueueWrite(QueueClass q) const { return written_ & (writeExternal_ | (writeQueue_ == q)); }
 
   bool crossQueuePrior(QueueClass q) const {
-    if (written_ && !sameQueueWrite(q)) return true;
-    for (uint32_t other = 0; other < kQueueClassCount; ++other) {
-      if (other != queueIndex(q) && any(queues_[other].waitStages)) return true;
-    }
-    return false;
+    // Written on another queue, or read or transitioned there since.
+    static_assert(kQueueClassCount == 3);
+    const uint32_t waitingQueues = any(queues_[0].waitStages) + any(queues_[1].waitStages) +
+                                   any(queues_[2].waitStages) - any(queues_[queueIndex(q)].waitStages);
+    return (written_ & !sameQueueWrite(q)) | (waitingQueues != 0);
   }
 
   // The source scope every barrier on queue q needs: what already ran on q,
@@ -150,18 +177,18 @@ class ResourceBarrierPlanner {
   Barrier sourceOn(QueueClass q) const {
     Barrier b{.resource = id_};
     b.srcStages = queues_[queueIndex(q)].waitStages | externalWait_;
-    if (sameQueueWrite(q) && !queues_[queueIndex(q)].writeChained) {
-      b.srcStages |= writeStages_;
-      b.srcAccess = writeAccess_;
-    }
+    const bool unchained = sameQueueWrite(q) & !queues_[queueIndex(q)].writeChained;
+    b.srcStages |= keptIf(unchained, writeStages_);
+    b.srcAccess = keptIf(unchained, writeAccess_);
     return b;
   }
 
   void setLayouts(Barrier& b, Layout newLayout) const {
-    if (!image_) return;
-    b.oldLayout = layout_;
-    b.newLayout = newLayout;
-    b.discard = b.discard || layout_ == Layout::Undefined;
+    // Buffers have no layout: Undefined (0) for them, by a mask.
+    const auto imageMask = static_cast<uint8_t>(-static_cast<uint8_t>(image_));
+    b.oldLayout = static_cast<Layout>(static_cast<uint8_t>(layout_) & imageMask);
+    b.newLayout = static_cast<Layout>(static_cast<uint8_t>(newLayout) & imageMask);
+    b.discard = b.discard | (image_ & (layout_ == Layout::Undefined));
   }
 
   void emit(PassId pass, bool after, const Barrier& b, QueueClass q) {
@@ -176,16 +203,14 @@ class ResourceBarrierPlanner {
     Barrier b = sourceOn(u.queue);
     b.dstStages = u.stages;
     b.dstAccess = u.access;
-    const bool layoutChange = image_ && layout_ != u.layout;
-    if (aliased) {
-      // Taking over memory: after every access of the previous occupants (same queue).
-      b.srcStages |= aliasedStages;
-      b.srcAccess |= aliasedWrites;
-      b.discard = true;
-    }
-    if (layoutChange && crossQueuePrior(u.queue)) b.srcStages |= u.stages;  // chain with the semaphore wait
+    const bool layoutChange = image_ & (layout_ != u.layout);
+    // Taking over memory: after every access of the previous occupants (same queue).
+    b.srcStages |= keptIf(aliased, aliasedStages);
+    b.srcAccess |= keptIf(aliased, aliasedWrites);
+    b.discard = aliased;
+    b.srcStages |= keptIf(layoutChange & crossQueuePrior(u.queue), u.stages);  // chain with the semaphore wait
     setLayouts(b, u.layout);
-    if (any(b.srcStages) || layoutChange || aliased) out_.add(u.pass, false, b);
+    if (any(b.srcStages) | layoutChange | aliased) out_.add(u.pass, false, b);
 
     layout_ = u.layout;
     written_ = true;
@@ -198,13 +223,13 @@ class ResourceBarrierPlanner {
   }
 
   // A read of a version only one queue reads.
-  void read(std::size_t i, std::size_t segmentEnd) {
+  void read(std::size_t i) {
     const Use& u = uses_[i];
     QueueSync& qs = queues_[queueIndex(u.queue)];
-    const bool layoutChange = image_ && layout_ != u.layout;
-    const bool pendingWrite = (sameQueueWrite(u.queue) && any(writeAccess_)) || qs.transitioned;
-    const bool covered = qs.allVisible || (contains(qs.visibleStages, u.stages) && contains(qs.visibleAccess, u.access));
-    if (!layoutChange && (!pendingWrite || covered)) {
+    const bool layoutChange = image_ & (layout_ != u.layout);
+    const bool pendingWrite = (sameQueueWrite(u.queue) & any(writeAccess_)) | qs.transitioned;
+    const bool covered = qs.allVisible | (contains(qs.visibleStages, u.stages) & contains(qs.visibleAccess, u.access));
+    if (!layoutChange & (!pendingWrite | covered)) {
       qs.waitStages |= u.stages;
       return;
     }
@@ -212,11 +237,11 @@ class ResourceBarrierPlanner {
     // Later readers in the same layout share this barrier.
     b.dstStages = u.stages;
     b.dstAccess = u.access;
-    for (std::size_t k = i + 1; k < segmentEnd && (!image_ || uses_[k].layout == u.layout); ++k) {
+    for (std::size_t k = i + 1; k < uses_.size() && (!uses_[k].write & (!image_ | (uses_[k].layout == u.layout))); ++k) {
       b.dstStages |= uses_[k].stages;
       b.dstAccess |= uses_[k].access;
     }
-    if (layoutChange && crossQueuePrior(u.queue)) b.srcStages |= u.stages;  // chain with the semaphore wait
+    b.srcStages |= keptIf(layoutChange & crossQueuePrior(u.queue), u.stages);  // chain with the semaphore wait
     setLayouts(b, u.layout);
     emit(u.pass, false, b, u.queue);
     if (layoutChange) {
@@ -351,35 +376,38 @@ void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::
     AccessFlag aliasedWrites = AccessFlag::None;
     bool aliased = false;
     for (const ResourceId other : aliases.subspan(resource.aliasesWith.first, resource.aliasesWith.count)) {
+      // Earlier occupants only, not later ones (masks: which it is flips at random).
       // (Last uses from the use table: a small array, where alias lists point anywhere.)
-      if (uses.lastUse[other.index] >= resource.firstUse) continue;  // a later occupant
+      const bool earlier = uses.lastUse[other.index] < resource.firstUse;
       const Footprint& previous = footprints[other.index];
-      aliased = true;
-      aliasedStages |= previous.stages;
-      aliasedWrites |= previous.writes;
+      aliased |= earlier;
+      aliasedStages |= keptIf(earlier, previous.stages);
+      aliasedWrites |= keptIf(earlier, previous.writes);
     }
     // Occupants on other queues: chain with the semaphore waits that ordered them first.
-    if (aliased && r < takeOverWaits.size()) aliasedStages |= takeOverWaits[r];
+    if (r < takeOverWaits.size()) aliasedStages |= keptIf(aliased, takeOverWaits[r]);
     ResourceBarrierPlanner(ResourceId{r}, resource, uses.of(r), order, emitted)
         .run(aliasedStages, aliasedWrites, aliased);
   }
 
-  // Group by pass (counting sort keeps resource order within a pass).
-  const uint32_t slots = graph.passCount() * 2;
-  std::vector<uint32_t>& first = scratch.slotFirst;
-  first.assign(slots + 1, 0);
-  for (const EmittedBarriers::Entry& e : emitted.entries) ++first[e.slot + 1];
-  for (uint32_t s = 0; s < slots; ++s) first[s + 1] += first[s];
-  plan.barriers.resize(emitted.entries.size());
-  std::vector<uint32_t>& cursor = scratch.cursor;
-  cursor.assign(first.begin(), first.end() - 1);
-  for (const EmittedBarriers::Entry& e : emitted.entries) plan.barriers[cursor[e.slot]++] = e.barrier;
+  // Group by pass (counting sort keeps resource order within a pass): each
+  // pass's two ranges from the counts, which turn into cursors in place.
+  std::vector<uint32_t>& cursor = scratch.slotFirst;
+  cursor.assign(graph.passCount() * 2, 0);
+  for (const EmittedBarriers::Entry& e : emitted.entries) ++cursor[e.slot];
   plan.before.resize(graph.passCount());
   plan.after.resize(graph.passCount());
+  uint32_t start = 0;
   for (uint32_t p = 0; p < graph.passCount(); ++p) {
-    plan.before[p] = {first[2 * p], first[2 * p + 1] - first[2 * p]};
-    plan.after[p] = {first[2 * p + 1], first[2 * p + 2] - first[2 * p + 1]};
+    plan.before[p] = {start, cursor[2 * p]};
+    cursor[2 * p] = start;
+    start += plan.before[p].count;
+    plan.after[p] = {start, cursor[2 * p + 1]};
+    cursor[2 * p + 1] = start;
+    start += plan.after[p].count;
   }
+  plan.barriers.resize(emitted.entries.size());
+  for (const EmittedBarriers::Entry& e : emitted.entries) plan.barriers[cursor[e.slot]++] = e.barrier;
 }
 
 }  // namespace sg::graph

@@ -35,6 +35,12 @@ struct BarrierPlan {
     std::vector<uint32_t> lastUse;   // per resource: position in the order of its last use
     std::vector<ResourceUse> uses;
     std::vector<uint32_t> cursor;
+    // Uses in execution order, each with its resource, before grouping.
+    struct UseInOrder {
+      uint32_t resource;
+      ResourceUse use;
+    };
+    std::vector<UseInOrder> inOrder;
     // Per resource: every stage and write, what a transient taking over its memory waits for.
     struct Footprint {
       PipelineStage stages = PipelineStage::None;

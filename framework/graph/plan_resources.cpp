@@ -1,5 +1,7 @@
 #include <shadelgraph/graph/plan_resources.hpp>
 
+#include <algorithm>
+
 namespace sg::graph {
 
 // One walk over the kept passes' accesses, in order: lifetimes, usages, queues.
@@ -9,7 +11,7 @@ void gatherUsage(const RenderGraph& graph, std::span<const PassId> order, std::v
     const QueueMask queue = toMask(graph.pass(order[position]).queue);
     for (const ResourceAccess& a : graph.accessesOf(order[position])) {
       ResourceUsage& u = usage[a.resource.index];
-      if (u.firstUse == kInvalidIndex) u.firstUse = position;
+      u.firstUse = std::min(u.firstUse, position);  // kInvalidIndex until the first; no branch on "first?"
       u.lastUse = position;
       u.queues |= queue;
       u.imageUsage |= imageUsageOf(a.access);

@@ -13,10 +13,10 @@ namespace sg::graph {
 // scattered updates touch a small, cache-resident array.
 struct ResourceUsage {
   uint32_t firstUse = kInvalidIndex;  // positions in the order
-  uint32_t lastUse = kInvalidIndex;
+  QueueMask queues = QueueMask::None;
   ImageUsage imageUsage = ImageUsage::None;
   BufferUsage bufferUsage = BufferUsage::None;
-  QueueMask queues = QueueMask::None;
+  uint32_t lastUse = kInvalidIndex;
 };
 
 // One plan entry per declared resource: resolved description, union of usages,

@@ -6,13 +6,23 @@
 namespace sg::graph {
 namespace {
 
-uint32_t scaleExtent(uint32_t extent, float scale) {
+// Every case: zero extents, scales that are not positive (or NaN), products
+// below 1 (at least 1 texel) or from 2^32 on.
+uint32_t scaleExtentAnyCase(uint32_t extent, float scale) {
   if (extent == 0 || !(scale > 0.0f)) return 0;
   const double product = static_cast<double>(extent) * static_cast<double>(scale);
-  // Positive and below 2^32 (every real extent): truncation is the floor, without a libm call.
+  // Positive and below 2^32: truncation is the floor, without a libm call.
   if (product < 4294967296.0) return std::max(static_cast<uint32_t>(product), 1u);
   const double scaled = std::floor(product);
   return static_cast<uint32_t>(std::max(1.0, scaled));
+}
+
+// The same, with the common case (a product from 1 to below 2^32: every real
+// extent) short enough to be inlined; truncation is then the floor.
+uint32_t scaleExtent(uint32_t extent, float scale) {
+  const double product = static_cast<double>(extent) * static_cast<double>(scale);
+  if (product >= 1.0 && product < 4294967296.0) return static_cast<uint32_t>(product);
+  return scaleExtentAnyCase(extent, scale);
 }
 
 }  // namespace

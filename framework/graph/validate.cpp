@@ -4,6 +4,7 @@
 #include <shadelgraph/graph/order.hpp>
 
 #include <algorithm>
+#include <array>
 #include <string>
 #include <string_view>
 
@@ -13,15 +14,89 @@ namespace {
 std::string quoted(std::string_view name) { return "'" + std::string(name) + "'"; }
 std::string str(std::string_view text) { return std::string(text); }
 
+// The shader stages a pass of `kind` runs.
+constexpr ShaderStage shaderStagesOf(PassKind kind) {
+  return kind == PassKind::Raster    ? ShaderStage::Vertex | ShaderStage::Fragment
+         : kind == PassKind::Compute ? ShaderStage::Compute
+                                     : ShaderStage::None;
+}
+
+// What is allowed for one access in one kind of pass: the checks of
+// checkAccess() (but the version's) precomputed from the access traits.
+struct AccessRule {
+  // Bit resourceClass * 4 + write * 2 + notWritable is set when that combination
+  // passes: resourceClass 0 buffer, 1 image of a color format, 2 of a depth
+  // format; write as declared (read() or write()); notWritable for history
+  // resources and read-only imports.
+  uint16_t fineFor = 0;
+  ShaderStage stages = ShaderStage::None;  // the shader stages it may name
+};
+constexpr std::size_t kPassKinds = 3;
+constexpr std::size_t kAccesses = detail::kAccessTraits.size();
+
+constexpr AccessRule ruleFor(Access access, PassKind kind) {
+  const detail::AccessTraits& t = detail::traits(access);
+  const bool colorAttachment = access == Access::ColorAttachment || access == Access::ColorAttachmentRead;
+  const bool depthAttachment = access == Access::DepthAttachment || access == Access::DepthRead;
+  AccessRule rule;
+  rule.stages = t.shader ? shaderStagesOf(kind) : ShaderStage::None;
+  for (uint32_t resourceClass = 0; resourceClass < 3; ++resourceClass) {
+    const bool buffer = resourceClass == 0;
+    const bool depthFormat = resourceClass == 2;
+    const bool typeFits = buffer ? !t.imageOnly : !t.bufferOnly;
+    const bool formatFits = buffer || (!(colorAttachment && depthFormat) && !(depthAttachment && !depthFormat));
+    for (uint32_t write = 0; write < 2; ++write) {
+      for (uint32_t notWritable = 0; notWritable < 2; ++notWritable) {
+        const bool fine = (write != 0) == t.write && typeFits && allowedInPass(access, kind) && formatFits &&
+                          !(write != 0 && notWritable != 0);
+        if (fine) rule.fineFor |= static_cast<uint16_t>(1u << (resourceClass * 4 + write * 2 + notWritable));
+      }
+    }
+  }
+  return rule;
+}
+constexpr std::array<std::array<AccessRule, kAccesses>, kPassKinds> kAccessRules = [] {
+  std::array<std::array<AccessRule, kAccesses>, kPassKinds> rules{};
+  for (std::size_t k = 0; k < kPassKinds; ++k) {
+    for (std::size_t a = 0; a < kAccesses; ++a) {
+      rules[k][a] = ruleFor(static_cast<Access>(a), static_cast<PassKind>(k));
+    }
+  }
+  return rules;
+}();
+// canRunOn() as a table read (a switch on the random pass kinds mispredicts):
+// bit q of kQueuesFor[kind] is set when a pass of `kind` can run on queue class q.
+constexpr std::array<uint8_t, kPassKinds> kQueuesFor = [] {
+  std::array<uint8_t, kPassKinds> queues{};
+  for (std::size_t k = 0; k < kPassKinds; ++k) {
+    for (uint32_t q = 0; q < kQueueClassCount; ++q) {
+      if (canRunOn(static_cast<PassKind>(k), static_cast<QueueClass>(q))) queues[k] |= static_cast<uint8_t>(1u << q);
+    }
+  }
+  return queues;
+}();
+bool runsOn(PassKind kind, QueueClass queue) {
+  return ((kQueuesFor[static_cast<std::size_t>(kind)] >> queueIndex(queue)) & 1u) != 0;
+}
+
 class Validator {
  public:
   Validator(const RenderGraph& graph, const VersionTable& versions, const DependencyGraph& deps,
             const CompileOptions& options)
-      : graph_(graph), versions_(versions), deps_(deps), options_(options) {}
+      : graph_(graph),
+        versions_(versions),
+        deps_(deps),
+        options_(options),
+        outputSized_((options.outputWidth != 0) & (options.outputHeight != 0)) {}
 
   std::vector<ValidationError> run() {
-    for (uint32_t r = 0; r < graph_.resourceCount(); ++r) checkResource(ResourceId{r});
-    for (uint32_t p = 0; p < graph_.passCount(); ++p) checkPass(PassId{p});
+    const uint32_t resourceCount = graph_.resourceCount();
+    facts_.resize(resourceCount);
+    for (uint32_t r = 0; r < resourceCount; ++r) {
+      checkResource(ResourceId{r});
+      facts_[r] = {kInvalidIndex, shapeOf(graph_.declaration().traits[r])};
+    }
+    checkPasses();
     checkBranches();
     checkCycles();
     return std::move(errors_);
@@ -34,7 +109,27 @@ class Validator {
   const std::string& nameOf(ResourceId r) const { return graph_.resource(r).name; }
   const std::string& nameOf(PassId p) const { return graph_.passName(p); }
 
+  // The common case (nothing to report) as one test: both the buffer's and the
+  // image's conditions are computed and the resource's type picks one, so that
+  // a random mix of buffers and images costs no mispredicted branch.
   void checkResource(ResourceId id) {
+    const ResourceDecl& r = graph_.resource(id);
+    const bool isBuffer = r.type == ResourceType::Buffer;
+    const bool bufferFine = r.buffer.size != 0;
+    const ImageDesc& image = r.image;
+    const Size& size = image.size;
+    const bool relative = size.mode == Size::Mode::Relative;
+    const bool relativeSized = outputSized_ & (size.scaleX > 0.0f) & (size.scaleY > 0.0f);
+    const bool absoluteSized = (size.width != 0) & (size.height != 0);
+    const uint32_t fewest = std::min(std::min(image.depth, image.layers), std::min(image.mipLevels, image.samples));
+    const bool imageFine = (image.format != Format::Undefined) & ((relative & relativeSized) | (!relative & absoluteSized)) &
+                           (fewest != 0);
+    const bool fine = (r.kind != ResourceKind::History) & ((isBuffer & bufferFine) | (!isBuffer & imageFine));
+    if (!fine) [[unlikely]] reportResource(id);
+  }
+
+  // What checkResource() reports, in order (off the common path).
+  [[gnu::noinline]] void reportResource(ResourceId id) {
     const ResourceDecl& r = graph_.resource(id);
     if (r.kind == ResourceKind::History &&
         (!graph_.isValid(r.historyOf) || graph_.resource(r.historyOf).kind != ResourceKind::Persistent)) {
@@ -62,16 +157,83 @@ class Validator {
 
   // True when the size checks below find nothing, without resolving the size
   // (a relative extent is 0 only when the output's is or the scale is not positive).
+  // (`&` and `|`, not `&&` and `||`: every condition is computed, none branches.)
   bool imageSizeLooksFine(const ImageDesc& image) const {
     const Size& size = image.size;
-    const bool sized = size.mode == Size::Mode::Relative
-                           ? options_.outputWidth != 0 && options_.outputHeight != 0 && size.scaleX > 0.0f &&
-                                 size.scaleY > 0.0f
-                           : size.width != 0 && size.height != 0;
-    return sized && image.depth != 0 && image.layers != 0 && image.mipLevels != 0 && image.samples != 0;
+    const bool relative = size.mode == Size::Mode::Relative;
+    const bool relativeSized = (options_.outputWidth != 0) & (options_.outputHeight != 0) & (size.scaleX > 0.0f) &
+                               (size.scaleY > 0.0f);
+    const bool absoluteSized = (size.width != 0) & (size.height != 0);
+    const bool sized = (relative & relativeSized) | (!relative & absoluteSized);
+    return sized & (image.depth != 0) & (image.layers != 0) & (image.mipLevels != 0) & (image.samples != 0);
   }
 
-  void checkPass(PassId id) {
+  // The common case (nothing to report) without a branch per condition:
+  // every access's conditions are folded into its pass's flag (table reads and
+  // arithmetic on bools), walking all accesses in one loop. A resource named
+  // twice in a pass (whose accesses must then be compared pairwise) marks the
+  // pass too. Only the passes so marked take the detailed walk, in pass
+  // order, which reports what it finds in order.
+  void checkPasses() {
+    const uint32_t passCount = graph_.passCount();
+    const PassDecl* passes = graph_.declaration().passes.data();
+    std::vector<uint8_t> fine(passCount);
+    for (uint32_t p = 0; p < passCount; ++p) fine[p] = runsOn(passes[p].kind, passes[p].queue);
+    const uint32_t resourceCount = graph_.resourceCount();
+    ResourceFacts* facts = facts_.data();
+    uint8_t* passFine = fine.data();
+    const uint32_t* firstSlot = versions_.firstSlot.data();
+    const PassId* producers = versions_.producer.data();
+    forEachAccess(graph_, versions_, [&](uint32_t p, const ResourceAccess& a) __attribute__((always_inline)) {
+      const uint32_t r = a.resource.index;
+      if (r >= resourceCount) [[unlikely]] {  // !isValid()
+        passFine[p] = 0;
+        return;
+      }
+      const AccessRule& rule = kAccessRules[static_cast<std::size_t>(passes[p].kind)][static_cast<std::size_t>(a.access)];
+      passFine[p] &= (facts[r].namedBy != p) & accessIsFine(rule, PassId{p}, a, facts[r].shape, firstSlot, producers);
+      facts[r].namedBy = p;
+    });
+    for (uint32_t p = 0; p < passCount; ++p) {
+      if (!fine[p]) [[unlikely]] reportPass(PassId{p});
+    }
+  }
+
+  // What accessIsFine() needs of a resource, looked up once per resource:
+  // resourceClass * 4 + notWritable (see AccessRule), plus kTransientShape.
+  static constexpr uint8_t kTransientShape = 16;
+  static uint8_t shapeOf(const ResourceTraits& r) {
+    // (Arithmetic on bools, not `?:`: buffers and images come in random order.)
+    const uint32_t image = r.type == ResourceType::Image;
+    const uint32_t depthFormat = (r.format == Format::D32F) | (r.format == Format::D24S8);  // isDepth()
+    const uint32_t resourceClass = image + (image & depthFormat);
+    const uint32_t notWritable = (r.kind == ResourceKind::History) | r.readOnly;
+    const uint32_t transient = (r.kind == ResourceKind::TransientImage) | (r.kind == ResourceKind::TransientBuffer);
+    return static_cast<uint8_t>(resourceClass * 4 + notWritable + transient * kTransientShape);
+  }
+
+  // True when checkAccess() (and with it checkVersion()) finds nothing: the same
+  // conditions, each computed, combined with `&` (no branch per condition).
+  // (Raw pointers, in the caller's registers: its byte stores would make the
+  // compiler reload the version table's vectors after each.)
+  static bool accessIsFine(const AccessRule& rule, PassId passId, const ResourceAccess& a, uint32_t shape,
+                           const uint32_t* firstSlot, const PassId* producers) {
+    const uint32_t write = a.write ? 1u : 0u;
+    const bool allowed = ((rule.fineFor >> ((shape % kTransientShape) + write * 2)) & 1u) != 0;
+    const bool stagesFit = (a.shaderStages & ~rule.stages) == ShaderStage::None;
+    // The version: version 0 is the frame-start content (readable unless
+    // transient); a later one needs a producer, not this pass unless it writes
+    // over it. An unknown version reads version 0's slot, which has no producer.
+    const uint32_t first = firstSlot[a.resource.index];
+    const bool known = a.version < firstSlot[a.resource.index + 1] - first;
+    const PassId producer = producers[first + (known ? a.version : 0u)];
+    const bool produced = producer.valid() & ((producer != passId) | a.write);
+    const bool initialFine = (a.version == 0) & (a.write | (shape < kTransientShape));
+    return allowed & stagesFit & (initialFine | produced);
+  }
+
+  // What checkPasses() reports about one pass, in order (off the common path).
+  [[gnu::noinline]] void reportPass(PassId id) {
     const PassDecl& pass = graph_.pass(id);
     if (!canRunOn(pass.kind, pass.queue)) {
       error(nameOf(id), "",
@@ -84,43 +246,12 @@ class Validator {
         error(nameOf(id), "", "uses an invalid resource handle");
         continue;
       }
-      // The common case (nothing to report) without the calls that build messages.
-      const ResourceTraits& traits = graph_.declaration().traits[a.resource.index];
-      if (!accessLooksFine(pass, traits, a)) {
-        checkAccess(id, a);
-      } else if (!versionLooksFine(id, traits, a)) {
-        checkVersion(id, a);
-      }
+      checkAccess(id, a);
       // Compare with earlier accesses of the same resource in this pass (passes touch few resources).
       for (std::size_t j = 0; j < i; ++j) {
         if (accesses[j].resource == a.resource) checkAccessPair(id, accesses[j], a);
       }
     }
-  }
-
-  // True when checkAccess() finds nothing wrong but maybe the version: the same conditions, as one test.
-  static bool accessLooksFine(const PassDecl& pass, const ResourceTraits& r, const ResourceAccess& a) {
-    const detail::AccessTraits& t = detail::traits(a.access);
-    if (a.write != t.write) return false;
-    if ((r.type == ResourceType::Buffer && t.imageOnly) || (r.type == ResourceType::Image && t.bufferOnly)) return false;
-    if (!allowedInPass(a.access, pass.kind)) return false;
-    if (any(a.shaderStages & ~(t.shader ? shaderStagesOf(pass.kind) : ShaderStage::None))) return false;
-    if (r.type == ResourceType::Image && !formatFits(r, a)) return false;
-    return !(a.write && (r.kind == ResourceKind::History || r.readOnly));
-  }
-
-  // The shader stages a pass of `kind` runs.
-  static ShaderStage shaderStagesOf(PassKind kind) {
-    return kind == PassKind::Raster    ? ShaderStage::Vertex | ShaderStage::Fragment
-           : kind == PassKind::Compute ? ShaderStage::Compute
-                                       : ShaderStage::None;
-  }
-
-  // Color attachments need a color format, depth attachments a depth format.
-  static bool formatFits(const ResourceTraits& r, const ResourceAccess& a) {
-    const bool colorAttachment = a.access == Access::ColorAttachment || a.access == Access::ColorAttachmentRead;
-    const bool depthAttachment = a.access == Access::DepthAttachment || a.access == Access::DepthRead;
-    return !(colorAttachment && isDepth(r.format)) && !(depthAttachment && !isDepth(r.format));
   }
 
   void checkAccess(PassId passId, const ResourceAccess& a) {
@@ -177,15 +308,6 @@ class Validator {
             "uses the color format " + str(toString(r.format)) + " as a depth attachment (" +
                 str(toString(a.access)) + ")");
     }
-  }
-
-  // True when checkVersion() finds nothing: the same conditions, as one test.
-  bool versionLooksFine(PassId passId, const ResourceTraits& r, const ResourceAccess& a) const {
-    if (a.version == 0) return a.write || !isTransient(r.kind);
-    const uint32_t slot = versions_.slot(a.resource, a.version);
-    if (slot == kInvalidIndex) return false;
-    const PassId producer = versions_.producer[slot];
-    return producer.valid() && (producer != passId || a.write);
   }
 
   void checkVersion(PassId passId, const ResourceAccess& a) {
@@ -252,7 +374,10 @@ class Validator {
   void checkCycles() {
     const DependencyGraph& deps = deps_;
     // The usual case: every pass declared after the passes it depends on, so no cycle.
-    if (std::all_of(deps.edges.begin(), deps.edges.end(), [](const Dependency& e) { return e.from < e.to; })) return;
+    if (deps.forwardOnly ||
+        std::all_of(deps.edges.begin(), deps.edges.end(), [](const Dependency& e) { return e.from < e.to; })) {
+      return;
+    }
     const std::vector<PassId> order = orderPasses(deps);
     if (order.size() == graph_.passCount()) return;
 
@@ -294,7 +419,14 @@ class Validator {
   const VersionTable& versions_;
   const DependencyGraph& deps_;
   const CompileOptions& options_;
+  const bool outputSized_;  // relative sizes resolve to a non-zero extent when their scales are positive
   std::vector<ValidationError> errors_;
+  // Per resource: the last pass naming it (checkPasses()) and shapeOf() its traits.
+  struct ResourceFacts {
+    uint32_t namedBy;
+    uint8_t shape;
+  };
+  std::vector<ResourceFacts> facts_;
 };
 
 }  // namespace

@@ -42,12 +42,24 @@ struct VersionTable {
     uint8_t written = 0;
   };
   std::vector<PassKinds> passKinds;
-  // indexVersions()'s working memory (the reads in declaration order), kept for the next call.
+  // Every pass's accesses, in pass order, and the index of the pass each
+  // belongs to (then a few entries of slack), so that forEachAccess() walks
+  // all accesses in one loop instead of a short loop per pass, whose exit the
+  // CPU mispredicts about once a pass (passes have a few accesses each, in
+  // random numbers). The accesses are the declaration's own when it holds
+  // them in pass order with nothing between (the usual case); else this
+  // copy, which is empty otherwise.
+  std::vector<ResourceAccess> accessesInPassOrder;
+  bool copiedAccesses = false;
+  std::vector<uint32_t> passOfAccess;
+  // indexVersions()'s working memory (the reads in declaration order, then unused
+  // entries: one per access, so that listing a read needs no capacity test), kept for the next call.
   struct Read {
     uint32_t slot;
     PassId pass;
   };
   std::vector<Read> scratch;
+  std::vector<uint32_t> kindsScratch;  // indexVersions()'s too: passKinds as it gathers them
 
   uint32_t versionCount(ResourceId r) const { return firstSlot[r.index + 1] - firstSlot[r.index]; }
   // kInvalidIndex if the version was never referenced.
@@ -64,6 +76,29 @@ struct VersionTable {
     return {readers.data() + firstReader[slot], readers.data() + firstReader[slot + 1]};
   }
 };
+
+// Calls visit(pass index, access) for every access of every pass, in pass order
+// (and, within a pass, in declaration order), in one loop.
+template <class Visit>
+void forEachAccess(const RenderGraph& graph, const VersionTable& versions, Visit&& visit) {
+  const std::vector<ResourceAccess>& all =
+      versions.copiedAccesses ? versions.accessesInPassOrder : graph.declaration().accesses;
+  // (Locals, not the vectors: `visit` may store through pointers the compiler
+  // cannot tell from the vectors' own, and would reload their bounds after each.)
+  const ResourceAccess* access = all.data();
+  const ResourceAccess* const end = access + all.size();
+  for (const uint32_t* passOf = versions.passOfAccess.data(); access != end; ++access, ++passOf) visit(*passOf, *access);
+}
+
+// The same from the last access of the last pass to the first of the first.
+template <class Visit>
+void forEachAccessInReverse(const RenderGraph& graph, const VersionTable& versions, Visit&& visit) {
+  const std::vector<ResourceAccess>& all =
+      versions.copiedAccesses ? versions.accessesInPassOrder : graph.declaration().accesses;
+  const ResourceAccess* const first = all.data();
+  const uint32_t* passOf = versions.passOfAccess.data() + all.size();
+  for (const ResourceAccess* access = first + all.size(); access != first;) visit(*--passOf, *--access);
+}
 
 VersionTable indexVersions(const RenderGraph& graph);
 // The same into `table`, reusing its memory.

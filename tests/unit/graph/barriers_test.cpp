@@ -159,6 +159,40 @@ TEST(GraphBarriers, DepthTestAndSamplingShareTheReadOnlyDepthLayout) {
   EXPECT_EQ(barriersBefore(plan, "shade", depth), std::vector<Barrier>{expected});
 }
 
+// A pass's accesses to one resource merge into one use even with another
+// resource's access between them.
+TEST(GraphBarriers, AccessesToOneResourceMergeAcrossAnotherResourcesAccess) {
+  RenderGraph g;
+  auto depth = g.createImage("depth", ImageDesc{.format = Format::D32F, .size = Size::absolute(8, 8)});
+  auto color = g.createImage("color", colorImage());
+  auto& prepass = g.addPass("prepass", QueueClass::Graphics);
+  depth = prepass.write(depth, Access::DepthAttachment);
+  color = prepass.write(color, Access::ColorAttachment);
+  auto& shade = g.addPass("shade", QueueClass::Graphics);
+  shade.read(depth, Access::DepthRead);
+  shade.read(color, Access::Sampled);
+  shade.read(depth, Access::Sampled);
+  shade.sideEffect();
+  const CompiledPlan plan = compile(g, extent());
+
+  const Barrier expectedDepth{.resource = depth.id,
+                              .srcStages = S::EarlyFragmentTests | S::LateFragmentTests,
+                              .dstStages = S::EarlyFragmentTests | S::LateFragmentTests | S::FragmentShader,
+                              .srcAccess = A::DepthStencilWrite,
+                              .dstAccess = A::DepthStencilRead | A::ShaderSampledRead,
+                              .oldLayout = Layout::DepthAttachment,
+                              .newLayout = Layout::DepthReadOnly};
+  EXPECT_EQ(barriersBefore(plan, "shade", depth), std::vector<Barrier>{expectedDepth});
+  const Barrier expectedColor{.resource = color.id,
+                              .srcStages = S::ColorAttachmentOutput,
+                              .dstStages = S::FragmentShader,
+                              .srcAccess = A::ColorAttachmentWrite,
+                              .dstAccess = A::ShaderSampledRead,
+                              .oldLayout = Layout::ColorAttachment,
+                              .newLayout = Layout::ShaderReadOnly};
+  EXPECT_EQ(barriersBefore(plan, "shade", color), std::vector<Barrier>{expectedColor});
+}
+
 TEST(GraphBarriers, ImportStartsInItsInitialStateAndEndsInItsFinalState) {
   RenderGraph g;
   auto out = g.importImage("output", colorImage(), ImportedState{},

@@ -102,6 +102,27 @@ TEST(GraphCull, OutputKeepsOnlyTheProducerOfTheMarkedVersion) {
   EXPECT_TRUE(passNamed(plan, "overlay").culled);
 }
 
+// Passes may be declared before the producers they read from (handles are
+// wired after adding the passes): the producers are still kept, transitively.
+TEST(GraphCull, ProducersDeclaredAfterTheirReadersAreKept) {
+  RenderGraph g;
+  auto a = g.createImage("a", colorImage());
+  auto b = g.createImage("b", colorImage());
+  auto c = g.createImage("c", colorImage());
+  auto out = g.importImage("output", colorImage(), ImportedState{}, FinalState{.layout = Layout::ColorAttachment});
+  auto& present = g.addPass("present", QueueClass::Graphics);
+  auto& second = g.addPass("second", QueueClass::Graphics);
+  auto& first = g.addPass("first", QueueClass::Graphics);
+  (void)g.addPass("unused", QueueClass::Graphics).write(c, Access::ColorAttachment);
+  a = first.write(a, Access::ColorAttachment);
+  second.read(a, Access::Sampled);
+  b = second.write(b, Access::ColorAttachment);
+  present.read(b, Access::Sampled);
+  (void)present.write(out, Access::ColorAttachment);
+
+  EXPECT_EQ(cullPasses(g, indexVersions(g)), (std::vector<bool>{false, false, false, true}));
+}
+
 TEST(GraphCull, CulledPassesStayInThePlanWithoutBatchOrBarriers) {
   RenderGraph g;
   auto img = g.createImage("img", colorImage());

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <limits>
 #include <random>
 
 namespace sg::graph {
@@ -145,6 +146,21 @@ TEST(GraphProperties, RandomGraphsCompileToConsistentPlans) {
     checkInvariants(g, plan);
     if (HasFatalFailure()) return;
   }
+}
+
+// Relative sizes round down, to at least one texel; zero outputs and scales
+// that are not positive give zero.
+TEST(GraphProperties, RelativeSizesRoundDownToAtLeastOneTexel) {
+  const auto resolved = [](float scaleX, float scaleY, uint32_t width, uint32_t height) {
+    const ResolvedImageDesc d = resolveImageDesc(ImageDesc{.size = Size::relative(scaleX, scaleY)}, width, height);
+    return std::array<uint32_t, 2>{d.width, d.height};
+  };
+  EXPECT_EQ(resolved(1.0f, 0.5f, 1920, 1080), (std::array<uint32_t, 2>{1920, 540}));
+  EXPECT_EQ(resolved(0.3f, 0.75f, 5, 7), (std::array<uint32_t, 2>{1, 5}));
+  EXPECT_EQ(resolved(0.001f, 0.25f, 100, 3), (std::array<uint32_t, 2>{1, 1}));
+  EXPECT_EQ(resolved(0.0f, -1.0f, 100, 100), (std::array<uint32_t, 2>{0, 0}));
+  EXPECT_EQ(resolved(std::numeric_limits<float>::quiet_NaN(), 2.0f, 100, 0), (std::array<uint32_t, 2>{0, 0}));
+  EXPECT_EQ(resolved(std::numeric_limits<float>::infinity(), 1.0f, 0, 64), (std::array<uint32_t, 2>{0, 64}));
 }
 
 }  // namespace
