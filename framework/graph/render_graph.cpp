@@ -18,16 +18,18 @@ RenderGraph::RenderGraph() : declaration_(std::make_unique<GraphDeclaration>()) 
   d.accesses.reserve(kAccesses);
 }
 
-ResourceHandle RenderGraph::add(ResourceDecl&& decl) {
-  declaration_->resources.push_back(std::move(decl));
-  return added();
-}
-
-ResourceHandle RenderGraph::added() {
+// Inline in every create/import: a call to it goes through the PLT (an
+// indirect jump per declared resource).
+[[gnu::always_inline]] inline ResourceHandle RenderGraph::added() {
   const ResourceDecl& decl = declaration_->resources.back();
   declaration_->traits.push_back({decl.kind, decl.type, decl.readOnly, decl.image.format});
   declaration_->versionCounts.push_back(1);
   return {ResourceId{static_cast<uint32_t>(declaration_->resources.size() - 1)}, 0};
+}
+
+ResourceHandle RenderGraph::add(ResourceDecl&& decl) {
+  declaration_->resources.push_back(std::move(decl));
+  return added();
 }
 
 // Transients (most resources of a frame) are built in place: no decl to move.
