@@ -32,22 +32,21 @@ ResourceHandle RenderGraph::add(ResourceDecl&& decl) {
   return added();
 }
 
-// Transients (most resources of a frame) are built in place: no decl to move.
+// Transients (most resources of a frame) are built in place, every field given
+// (C++20 parenthesized aggregate initialization, in ResourceDecl's field
+// order): a value-initialized emplace_back() zeroes the whole decl first (a
+// `rep stos`) and then stores over it; an aggregate temporary costs a move.
 ResourceHandle RenderGraph::createImage(std::string name, const ImageDesc& desc) {
-  ResourceDecl& decl = declaration_->resources.emplace_back();
-  decl.kind = ResourceKind::TransientImage;
-  decl.type = ResourceType::Image;
-  decl.name = std::move(name);
-  decl.image = desc;
+  declaration_->resources.emplace_back(ResourceKind::TransientImage, ResourceType::Image, false, ResourceId{},
+                                       ResourceId{}, desc, BufferDesc{}, ResourceState{}, ResourceState{},
+                                       std::move(name));
   return added();
 }
 
 ResourceHandle RenderGraph::createBuffer(std::string name, const BufferDesc& desc) {
-  ResourceDecl& decl = declaration_->resources.emplace_back();
-  decl.kind = ResourceKind::TransientBuffer;
-  decl.type = ResourceType::Buffer;
-  decl.name = std::move(name);
-  decl.buffer = desc;
+  declaration_->resources.emplace_back(ResourceKind::TransientBuffer, ResourceType::Buffer, false, ResourceId{},
+                                       ResourceId{}, ImageDesc{}, desc, ResourceState{}, ResourceState{},
+                                       std::move(name));
   return added();
 }
 
