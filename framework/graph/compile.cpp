@@ -132,7 +132,9 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
   for (uint32_t p = 0; p < graph.passCount(); ++p) {
     const PassDecl& pass = graph.pass(PassId{p});
     PlannedPass& out = plan.passes[p];
-    out.name = declared.passNames[p];
+    // A frame loop declares the same names frame after frame: comparing is
+    // cheaper than copying (a copy-assignment calls memcpy and rewrites the length).
+    if (const std::string& name = declared.passNames[p]; out.name != name) out.name = name;
     out.queue = pass.queue;
     out.kind = pass.kind;
     out.sideEffect = pass.sideEffect;
