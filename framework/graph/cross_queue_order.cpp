@@ -1,5 +1,7 @@
 #include <shadelgraph/graph/cross_queue_order.hpp>
 
+#include <shadelgraph/graph/branchless.hpp>
+
 #include <algorithm>
 #include <bit>
 
@@ -7,31 +9,38 @@ namespace sg::graph {
 
 void orderAcrossQueues(const RenderGraph& graph, std::span<const PassId> order, const DependencyGraph& deps,
                        CrossQueueOrder& out) {
-  out.batches.clear();
-  out.batches.reserve(order.size());  // a batch per position at most
+  // Whether a pass starts a batch, and whether an edge crosses queues, flip at
+  // random from one to the next: both loops write unconditionally (a batch
+  // per position at most, rewritten until its last pass; edges that need no
+  // wait update a spare batch past the last) instead of branching.
+  out.batches.resize(order.size() + 1);
   out.batchAt.resize(order.size());
-  out.batchOfPass.assign(graph.passCount(), kInvalidIndex);
+  uint32_t count = 0;  // batches so far
+  const uint32_t spare = static_cast<uint32_t>(order.size());
+  out.batchOfPass.assign(graph.passCount(), spare);  // culled passes: the spare
   std::array<uint32_t, kQueueClassCount> submitted{};
   for (uint32_t position = 0; position < order.size(); ++position) {
     const QueueClass queue = graph.pass(order[position]).queue;
-    if (out.batches.empty() || out.batches.back().queue != queue) {
-      ++submitted[queueIndex(queue)];
-      out.batches.push_back({.queue = queue, .firstPosition = position, .submitted = submitted});
-    }
-    out.batchAt[position] = static_cast<uint32_t>(out.batches.size() - 1);
-    out.batchOfPass[order[position].index] = out.batchAt[position];
+    const bool starts = count == 0 || out.batches[count - 1].queue != queue;
+    count += starts;
+    submitted[queueIndex(queue)] += starts;
+    CrossQueueOrder::Batch& batch = out.batches[count - 1];
+    batch = {.queue = queue, .firstPosition = choose(starts, position, batch.firstPosition), .submitted = submitted};
+    out.batchAt[position] = count - 1;
+    out.batchOfPass[order[position].index] = count - 1;
   }
+  out.batches[spare] = {};
   for (const Dependency& e : deps.edges) {
     const uint32_t from = out.batchOfPass[e.from.index];
     const uint32_t to = out.batchOfPass[e.to.index];
-    if (from == kInvalidIndex || to == kInvalidIndex) continue;
     const uint32_t producer = queueIndex(out.batches[from].queue);
-    CrossQueueOrder::Batch& waiter = out.batches[to];
-    if (producer == queueIndex(waiter.queue)) continue;
+    const bool waits = (from != spare) & (to != spare) & (producer != queueIndex(out.batches[to].queue));
+    CrossQueueOrder::Batch& waiter = out.batches[choose(waits, to, spare)];
     // A batch's value: its 1-based index among its queue's batches.
     waiter.waitValue[producer] = std::max(waiter.waitValue[producer], out.batches[from].submitted[producer]);
     waiter.waitStages[producer] |= any(e.dstStages) ? e.dstStages : PipelineStage::AllCommands;
   }
+  out.batches.resize(count);
   for (uint32_t waiting = 0; waiting < kQueueClassCount; ++waiting) {
     for (uint32_t producer = 0; producer < kQueueClassCount; ++producer) {
       out.firstCover[waiting][producer].assign(submitted[producer], kInvalidIndex);

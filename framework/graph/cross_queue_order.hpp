@@ -27,7 +27,7 @@ struct CrossQueueOrder {
   };
   std::vector<Batch> batches;         // as assignQueues() splits the order
   std::vector<uint32_t> batchAt;      // per position in the order
-  std::vector<uint32_t> batchOfPass;  // per pass; kInvalidIndex if not in the order
+  std::vector<uint32_t> batchOfPass;  // per pass; the order's size if not in it
   // [waiting queue][producing queue][value - 1]: the first batch on the
   // waiting queue that waited for at least that value (kInvalidIndex: none).
   std::array<std::array<std::vector<uint32_t>, kQueueClassCount>, kQueueClassCount> firstCover;

@@ -1,14 +1,14 @@
 #include <shadelgraph/graph/linear_free_ranges.hpp>
 
+#include <shadelgraph/graph/branchless.hpp>
+
 #include <algorithm>
 
 namespace sg::graph {
 namespace {
 
-// All ones if `condition`, else zero. With pick(), a choice without a branch
-// where the condition flips at random from call to call (GCC turns a ?: into
-// a jump when several values hang on one bool).
-constexpr uint64_t maskOf(bool condition) { return uint64_t{0} - condition; }
+// All ones if `condition`, else zero (with pick(): one mask, several choices).
+constexpr uint64_t maskOf(bool condition) { return maskIf<uint64_t>(condition); }
 // `yes` where `mask` is set, else `no`.
 constexpr uint64_t pick(uint64_t mask, uint64_t yes, uint64_t no) { return no ^ ((yes ^ no) & mask); }
 
