@@ -25,7 +25,8 @@ void bucketBy(std::span<const TransientLifetime> transients, uint32_t positions,
 // array walked whole costs less. Both place identically. Callgrind, synthetic
 // graphs (about one transient per pass), whole compile, block list against
 // walk: +5.9% at 100 transients, +3.0% at 200, even at 300, -4.3% at 500,
-// -13% at 1000.
+// -13% at 1000 (session 20, before the walk went by stretches; not measured
+// again since).
 constexpr std::size_t kBlockListFrom = 320;
 
 // From which position a transient's memory may be taken over on `queue`
