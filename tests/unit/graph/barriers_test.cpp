@@ -138,30 +138,9 @@ TEST(GraphBarriers, LayoutChangeBetweenTwoReadsNeedsOne) {
   EXPECT_EQ(barriersBefore(plan, "copy", img), std::vector<Barrier>{toCopy});
 }
 
+// The pass's two accesses to depth merge into one use, even with another
+// resource's access declared between them.
 TEST(GraphBarriers, DepthTestAndSamplingShareTheReadOnlyDepthLayout) {
-  RenderGraph g;
-  auto depth = g.createImage("depth", ImageDesc{.format = Format::D32F, .size = Size::absolute(8, 8)});
-  auto& prepass = g.addPass("prepass", QueueClass::Graphics);
-  depth = prepass.write(depth, Access::DepthAttachment);
-  auto& shade = g.addPass("shade", QueueClass::Graphics);
-  shade.read(depth, Access::DepthRead);
-  shade.read(depth, Access::Sampled);
-  shade.sideEffect();
-  const CompiledPlan plan = compile(g, extent());
-
-  const Barrier expected{.resource = depth.id,
-                         .srcStages = S::EarlyFragmentTests | S::LateFragmentTests,
-                         .dstStages = S::EarlyFragmentTests | S::LateFragmentTests | S::FragmentShader,
-                         .srcAccess = A::DepthStencilWrite,
-                         .dstAccess = A::DepthStencilRead | A::ShaderSampledRead,
-                         .oldLayout = Layout::DepthAttachment,
-                         .newLayout = Layout::DepthReadOnly};
-  EXPECT_EQ(barriersBefore(plan, "shade", depth), std::vector<Barrier>{expected});
-}
-
-// A pass's accesses to one resource merge into one use even with another
-// resource's access between them.
-TEST(GraphBarriers, AccessesToOneResourceMergeAcrossAnotherResourcesAccess) {
   RenderGraph g;
   auto depth = g.createImage("depth", ImageDesc{.format = Format::D32F, .size = Size::absolute(8, 8)});
   auto color = g.createImage("color", colorImage());
