@@ -205,7 +205,7 @@ class Validator {
   static uint8_t shapeOf(const ResourceTraits& r) {
     // (Arithmetic on bools, not `?:`: buffers and images come in random order.)
     const uint32_t image = r.type == ResourceType::Image;
-    const uint32_t depthFormat = (r.format == Format::D32F) | (r.format == Format::D24S8);  // isDepth()
+    const uint32_t depthFormat = isDepth(r.format);
     const uint32_t resourceClass = image + (image & depthFormat);
     const uint32_t notWritable = (r.kind == ResourceKind::History) | r.readOnly;
     const uint32_t transient = (r.kind == ResourceKind::TransientImage) | (r.kind == ResourceKind::TransientBuffer);
