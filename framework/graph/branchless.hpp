@@ -13,10 +13,16 @@ constexpr T maskIf(bool condition) {
   return static_cast<T>(T{0} - static_cast<T>(condition));
 }
 
+// `yes` where `mask` is set, else `no` (one mask made once, several choices).
+template <std::unsigned_integral T>
+constexpr T pick(T mask, T yes, T no) {
+  return static_cast<T>(no ^ ((yes ^ no) & mask));
+}
+
 // `yes` if `condition`, else `no`.
 template <std::unsigned_integral T>
 constexpr T choose(bool condition, T yes, T no) {
-  return static_cast<T>(no ^ ((yes ^ no) & maskIf<T>(condition)));
+  return pick(maskIf<T>(condition), yes, no);
 }
 
 }  // namespace sg::graph

@@ -7,11 +7,6 @@
 namespace sg::graph {
 namespace {
 
-// All ones if `condition`, else zero (with pick(): one mask, several choices).
-constexpr uint64_t maskOf(bool condition) { return maskIf<uint64_t>(condition); }
-// `yes` where `mask` is set, else `no`.
-constexpr uint64_t pick(uint64_t mask, uint64_t yes, uint64_t no) { return no ^ ((yes ^ no) & mask); }
-
 constexpr std::size_t kNone = ~std::size_t{0};
 
 // How many of `values[0, n)` come before the one sought (`before` holds for a
@@ -78,8 +73,8 @@ uint64_t LinearFreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask
     for (std::size_t k = 0; k < stretchCount; ++k) {
       const Stretch& s = stretches_[k];
       // A stretch every fragment of which `taker` may take is one run.
-      const uint64_t key = (s.end - s.begin) | maskOf(!(any(s.all & taker) & fits(s.begin, s.end)));  // ~0: no
-      const uint64_t better = maskOf(key < bestLength);
+      const uint64_t key = (s.end - s.begin) | maskIf<uint64_t>(!(any(s.all & taker) & fits(s.begin, s.end)));  // ~0: no
+      const uint64_t better = maskIf<uint64_t>(key < bestLength);
       bestLength = pick(better, key, bestLength);
       bestAt = pick(better, uint64_t{k} << 32 | first, bestAt);
       if (any(taker) && !any(s.all & taker)) [[unlikely]] {
@@ -217,7 +212,7 @@ void LinearFreeRanges::release(uint64_t offset, uint64_t size, uint32_t occupant
   for (std::size_t k = 0; k < stretchCount; ++k) {
     const bool before = stretches_[k].begin < offset;
     next += before;
-    at += stretches_[k].count & maskOf(before);
+    at += stretches_[k].count & maskIf<uint64_t>(before);
   }
   fragments_.insert(fragments_.begin() + static_cast<std::ptrdiff_t>(at), {offset, end, occupant, queues});
   const bool joinsBefore = next > 0 && stretches_[next - 1].end == offset;

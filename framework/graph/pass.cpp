@@ -1,5 +1,7 @@
 #include <shadelgraph/graph/pass.hpp>
 
+#include <shadelgraph/graph/branchless.hpp>
+
 #include <algorithm>
 #include <array>
 #include <utility>
@@ -68,7 +70,7 @@ static_assert(static_cast<uint8_t>(PassKind::Raster) == 0 && static_cast<uint8_t
   // stages; both tables are read and the results masked, so that no branch
   // depends on the access (a mix of shader and fixed-function ones).
   const auto given = static_cast<uint8_t>(stages);
-  const auto defaulted = static_cast<uint8_t>(-static_cast<uint8_t>((given == 0) & t.shader));
+  const auto defaulted = maskIf<uint8_t>((given == 0) & t.shader);
   stages = static_cast<ShaderStage>(
       given | (static_cast<uint8_t>(kDefaultShaderStages[static_cast<uint8_t>(pass.kind) & 3u]) & defaulted));
   const PipelineStage pipelineStages = kPipelineStages[static_cast<uint8_t>(access)][static_cast<uint8_t>(stages) & 7u];

@@ -1,5 +1,7 @@
 #include <shadelgraph/graph/plan_barriers.hpp>
 
+#include <shadelgraph/graph/branchless.hpp>
+
 #include <algorithm>
 #include <array>
 
@@ -185,7 +187,7 @@ class ResourceBarrierPlanner {
 
   void setLayouts(Barrier& b, Layout newLayout) const {
     // Buffers have no layout: Undefined (0) for them, by a mask.
-    const auto imageMask = static_cast<uint8_t>(-static_cast<uint8_t>(image_));
+    const auto imageMask = maskIf<uint8_t>(image_);
     b.oldLayout = static_cast<Layout>(static_cast<uint8_t>(layout_) & imageMask);
     b.newLayout = static_cast<Layout>(static_cast<uint8_t>(newLayout) & imageMask);
     b.discard = b.discard | (image_ & (layout_ == Layout::Undefined));
