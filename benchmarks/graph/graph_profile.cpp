@@ -8,6 +8,10 @@
 // total / (rounds x 8). Another argument "fresh" compiles with a new graph and
 // compiler every time (allocations included); "unchanged" gives every graph its
 // own RenderGraph and PlanCompiler, so each is declared again and its plan reused.
+// A fourth argument "cold" writes 8 MiB between compiles (not collected), so
+// each starts with its data out of L1 and L2, as in `shadelgraph bench graph`,
+// where other sizes and modes run between: with --cache-sim=yes --D1=49152,12,64
+// --LL=2097152,16,64 (this machine's L1d and L2) the misses are what a frame sees.
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -25,15 +29,22 @@ enum class Mode { Reused, Fresh, Unchanged };
 // The graphs and compilers a mode compiles with: one shared (reused), or one per recipe (unchanged).
 struct Workload {
   Mode mode = Mode::Reused;
+  std::vector<uint64_t> evict;  // empty: no eviction
   std::vector<RenderGraph> graphs = std::vector<RenderGraph>(kGraphs);
   std::vector<PlanCompiler> compilers = std::vector<PlanCompiler>(kGraphs);
 };
+
+// Evicts the compile's data from the caches (callgrind stops collecting inside: see --toggle-collect).
+[[gnu::noinline]] void profiledRoundsEvict(std::vector<uint64_t>& junk) {
+  for (std::size_t i = 0; i < junk.size(); i += 8) junk[i] += i;
+}
 
 [[gnu::always_inline]] inline std::size_t runRounds(const std::vector<SyntheticGraph>& recipes, uint32_t rounds,
                                                     Workload& work, const CompileOptions& options) {
   std::size_t kept = 0;
   for (uint32_t round = 0; round < rounds; ++round) {
     for (std::size_t i = 0; i < recipes.size(); ++i) {
+      if (!work.evict.empty()) profiledRoundsEvict(work.evict);
       if (work.mode == Mode::Fresh) {
         RenderGraph g;
         declare(g, recipes[i]);
@@ -70,8 +81,11 @@ int main(int argc, char** argv) {
   if (std::strcmp(modeName, "fresh") == 0) work.mode = Mode::Fresh;
   else if (std::strcmp(modeName, "unchanged") == 0) work.mode = Mode::Unchanged;
   else if (std::strcmp(modeName, "reused") != 0) passes = 0;
+  const bool cold = argc > 4 && std::strcmp(argv[4], "cold") == 0;
+  if (cold) work.evict.assign(std::size_t{8} << 17, 0);  // 8 MiB
+  if (argc > 4 && !cold) passes = 0;
   if (passes < 2 || rounds == 0) {
-    std::fprintf(stderr, "usage: graph_profile [passes >= 2] [rounds >= 1] [reused|fresh|unchanged]\n");
+    std::fprintf(stderr, "usage: graph_profile [passes >= 2] [rounds >= 1] [reused|fresh|unchanged] [cold]\n");
     return 1;
   }
   std::vector<SyntheticGraph> recipes;
@@ -79,6 +93,7 @@ int main(int argc, char** argv) {
   const CompileOptions options = syntheticCompileOptions();
   warmUpRounds(recipes, work, options);
   const std::size_t kept = profiledRounds(recipes, rounds, work, options);
-  std::printf("%u passes, %u rounds x %u graphs (%s), %zu kept passes\n", passes, rounds, kGraphs, modeName, kept);
+  std::printf("%u passes, %u rounds x %u graphs (%s%s), %zu kept passes\n", passes, rounds, kGraphs, modeName,
+              cold ? ", cold" : "", kept);
   return 0;
 }
