@@ -1,5 +1,7 @@
 #include <shadelgraph/graph/place_transients.hpp>
 
+#include <shadelgraph/graph/branchless.hpp>
+
 #include <algorithm>
 #include <bit>
 #include <stdexcept>
@@ -203,18 +205,32 @@ void placeTransients(std::span<const TransientLifetime> transients, uint32_t res
   std::vector<uint32_t>& byEnd = scratch.byEnd;
   bucketBy(transients, positions, [](const TransientLifetime& t) { return t.firstUse; }, scratch.bucketStarts,
            byStart);
-  bucketBy(transients, positions, [](const TransientLifetime& t) { return t.lastUse; }, scratch.bucketStarts, byEnd);
-  for (std::size_t begin = 0; begin < byStart.size();) {
-    std::size_t end = begin + 1;
-    while (end < byStart.size() && transients[byStart[end]].firstUse == transients[byStart[begin]].firstUse) ++end;
-    if (end - begin > 1) {
-      std::sort(byStart.begin() + static_cast<std::ptrdiff_t>(begin), byStart.begin() + static_cast<std::ptrdiff_t>(end),
-                [&](uint32_t a, uint32_t b) {
-                  return sizeOf(a) != sizeOf(b) ? sizeOf(a) > sizeOf(b) : transients[a].id < transients[b].id;
-                });
+  // Each position's transients in order: at most two in practice (a pass
+  // writes one or two new resources), put in order by a swap or not, without
+  // a branch (whether they are already in order is anyone's guess); a sort
+  // for more. (bucketBy() left the end of each position's transients in bucketStarts.)
+  if (!byStart.empty()) {
+    const auto before = [&](uint32_t a, uint32_t b) {
+      return (sizeOf(a) > sizeOf(b)) | ((sizeOf(a) == sizeOf(b)) & (transients[a].id < transients[b].id));
+    };
+    const auto lastIndex = static_cast<uint32_t>(byStart.size() - 1);
+    uint32_t begin = 0;
+    for (uint32_t p = 0; p < positions; ++p) {
+      const uint32_t end = scratch.bucketStarts[p];
+      if (end - begin > 2) [[unlikely]] {
+        std::sort(byStart.begin() + begin, byStart.begin() + end, before);
+      } else {
+        // (Past the last transient when there are fewer than two: the same ones written back.)
+        const uint32_t i = std::min(begin, lastIndex), j = std::min(begin + 1, lastIndex);
+        const uint32_t a = byStart[i], b = byStart[j];
+        const bool swap = (end - begin == 2) & before(b, a);
+        byStart[i] = choose(swap, b, a);
+        byStart[j] = choose(swap, a, b);
+      }
+      begin = end;
     }
-    begin = end;
   }
+  bucketBy(transients, positions, [](const TransientLifetime& t) { return t.lastUse; }, scratch.bucketStarts, byEnd);
 
   // (The free lists are kept for their memory; cleared when a heap reuses one.)
   if (transients.size() >= kBlockListFrom) {
