@@ -55,6 +55,11 @@ void LinearFreeRanges::clear(QueueMask queues) {
   hasEmpty_ = false;
 }
 
+void LinearFreeRanges::reserve(std::size_t fragments) {
+  fragments_.reserve(fragments);
+  stretches_.reserve(fragments + 1);
+}
+
 uint64_t LinearFreeRanges::allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
                                     std::vector<uint32_t>& previous) {
   const QueueMask taker = queueCount(queue) == 1 ? queue : QueueMask::None;

@@ -27,6 +27,8 @@ class LinearFreeRanges {
 
   // As FreeRanges (free_ranges.hpp says what each does).
   void clear(QueueMask queues);
+  // Room for `fragments` fragments (and as many stretches) without growing.
+  void reserve(std::size_t fragments);
   uint64_t allocate(uint64_t size, uint64_t alignment, QueueMask queue, uint64_t& heapSize,
                     std::vector<uint32_t>& previous, uint32_t& block);
   void release(uint32_t block, uint32_t occupant, QueueMask queues);

@@ -68,6 +68,7 @@ void sweep(std::span<const TransientLifetime> transients, std::span<const Memory
   // Usually one previous occupant and one deferred allowance per transient at most: grown once, not by doubling.
   aliasPairs.reserve(2 * transients.size());
   allowances.reserve(transients.size());
+  previous.reserve(16);
   std::size_t ended = 0;
   for (const uint32_t index : byStart) {
     const TransientLifetime& t = transients[index];
@@ -120,6 +121,8 @@ void sweep(std::span<const TransientLifetime> transients, std::span<const Memory
       plan.heaps.push_back({req.memoryTypeBits, 0, 1, QueueMask::None, enableAliasing});
       if (freeLists.size() < plan.heaps.size()) freeLists.emplace_back();
       freeLists[heap].clear(used);
+      // Room for about as many fragments as transients: grown once, not by doubling (a new PlanCompiler's).
+      if constexpr (kLinear) freeLists[heap].reserve(transients.size());
       unaliasedSize.push_back(0);
     }
     Heap& h = plan.heaps[heap];
