@@ -40,6 +40,25 @@ uint32_t availableFrom(const TransientLifetime& t, QueueClass queue, const Cross
   return t.queues == toMask(queue) ? t.lastUse + 1 : kInvalidIndex;
 }
 
+// `previous` (indices into `transients`) by resource id, each once: an
+// insertion sort, for the few there are (std::sort and std::unique cost more).
+void inIdOrderOnce(std::vector<uint32_t>& previous, std::span<const TransientLifetime> transients) {
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < previous.size(); ++i) {
+    const uint32_t p = previous[i];
+    const uint32_t id = transients[p].id;
+    std::size_t at = kept;
+    for (; at > 0 && transients[previous[at - 1]].id > id; --at) previous[at] = previous[at - 1];
+    if (at > 0 && previous[at - 1] == p) {  // already there: undo the shift
+      for (; at < kept; ++at) previous[at] = previous[at + 1];
+      continue;
+    }
+    previous[at] = p;
+    ++kept;
+  }
+  previous.resize(kept);
+}
+
 // The sweep over the order with one kind of free ranges (Ranges: FreeRanges
 // or LinearFreeRanges, kept per heap in `freeLists`).
 template <class Ranges>
@@ -74,7 +93,10 @@ void sweep(std::span<const TransientLifetime> transients, std::span<const Memory
     const TransientLifetime& t = transients[index];
     // Give back the memory of transients whose last use is behind us, to the
     // queues they are over for now; the other queues get it as their waits come.
-    for (; ended < byEnd.size() && transients[byEnd[ended]].lastUse < t.firstUse; ++ended) {
+    // (Those ending before t's first use are the buckets of the positions before it: how many, the
+    // counting sort left in bucketStarts; a bound known up front, not a lifetime loaded at each step.)
+    const std::size_t endedBefore = t.firstUse == 0 ? 0 : scratch.bucketStarts[t.firstUse - 1];
+    for (; ended < endedBefore; ++ended) {
       const uint32_t doneIndex = byEnd[ended];
       const TransientLifetime& done = transients[doneIndex];
       const MemoryPlacement& m = plan.placements[done.id];
@@ -145,11 +167,7 @@ void sweep(std::span<const TransientLifetime> transients, std::span<const Memory
     unaliasedSize[heap] = alignUp(unaliasedSize[heap], req.alignment) + req.size;
     plan.placements[t.id] = {heap, offset, req.size};
 
-    if (previous.size() > 1) {  // usually none or one
-      std::sort(previous.begin(), previous.end(),
-                [&](uint32_t a, uint32_t b) { return transients[a].id < transients[b].id; });
-      previous.erase(std::unique(previous.begin(), previous.end()), previous.end());
-    }
+    if (previous.size() > 1) inIdOrderOnce(previous, transients);  // usually none or one
     for (const uint32_t p : previous) {
       const TransientLifetime& before = transients[p];
       if (before.queues != taker && queueCount(taker) == 1) {
