@@ -78,6 +78,55 @@ UseTable collectUses(const RenderGraph& graph, std::span<const PassId> order, ui
   return {first, lastUse, uses};
 }
 
+using TakeOver = BarrierPlan::Scratch::TakeOver;
+
+// Adds to `takeOver` one alias of its resource: only earlier occupants count,
+// not later ones (masks: which it is flips at random).
+void addAlias(TakeOver& takeOver, bool earlier, const BarrierPlan::Scratch::Footprint& previous) {
+  takeOver.aliased |= earlier;
+  takeOver.stages |= keptIf(earlier, previous.stages);
+  takeOver.writes |= keptIf(earlier, previous.writes);
+}
+
+// Per resource, what taking over aliased memory waits for (last uses from the
+// use table: a small array, where alias lists point anywhere).
+const std::vector<TakeOver>& findTakeOvers(std::span<const PlannedResource> resources,
+                                           std::span<const ResourceId> aliases, const std::vector<uint32_t>& lastUse,
+                                           const std::vector<BarrierPlan::Scratch::Footprint>& footprints,
+                                           BarrierPlan::Scratch& scratch) {
+  const auto resourceCount = static_cast<uint32_t>(resources.size());
+  const auto aliasCount = static_cast<uint32_t>(aliases.size());
+  std::vector<TakeOver>& takeOvers = scratch.takeOvers;
+  takeOvers.assign(resourceCount, {});
+  // One flat walk over every alias, not a loop per resource, whose exit (after
+  // 0 to a few aliases) was mispredicted about once a resource. With the lists
+  // back to back in resource order (as placeTransients lays them out), an
+  // alias belongs to the resource numbered by how many lists ended at or before it.
+  std::vector<uint32_t>& endsAt = scratch.aliasListEnds;
+  endsAt.assign(aliasCount + 1, 0);
+  uint32_t end = 0;
+  bool backToBack = true;
+  for (const PlannedResource& resource : resources) {
+    backToBack &= resource.aliasesWith.first == end;
+    end = resource.aliasesWith.first + resource.aliasesWith.count;
+    ++endsAt[std::min(end, aliasCount)];
+  }
+  if (backToBack & (end == aliasCount)) {
+    uint32_t owner = 0;
+    for (uint32_t i = 0; i < aliasCount; ++i) {
+      owner += endsAt[i];
+      const uint32_t other = aliases[i].index;
+      addAlias(takeOvers[owner], lastUse[other] < resources[owner].firstUse, footprints[other]);
+    }
+    return takeOvers;
+  }
+  for (uint32_t r = 0; r < resourceCount; ++r) {
+    for (const ResourceId other : aliases.subspan(resources[r].aliasesWith.first, resources[r].aliasesWith.count))
+      addAlias(takeOvers[r], lastUse[other.index] < resources[r].firstUse, footprints[other.index]);
+  }
+  return takeOvers;
+}
+
 // Barriers as they are found (resource by resource), before grouping by pass;
 // final barriers and hand-offs straight into the plan.
 struct EmittedBarriers {
@@ -372,24 +421,14 @@ void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::
   // At most one barrier per use (a write's, a read's, or a run of shared
   // reads' one transition), so this never regrows.
   emitted.entries.reserve(uses.uses.size());
+  const std::vector<TakeOver>& takeOvers = findTakeOvers(resources, aliases, uses.lastUse, footprints, scratch);
   for (uint32_t r = 0; r < resourceCount; ++r) {
-    const PlannedResource& resource = resources[r];
-    PipelineStage aliasedStages = PipelineStage::None;
-    AccessFlag aliasedWrites = AccessFlag::None;
-    bool aliased = false;
-    for (const ResourceId other : aliases.subspan(resource.aliasesWith.first, resource.aliasesWith.count)) {
-      // Earlier occupants only, not later ones (masks: which it is flips at random).
-      // (Last uses from the use table: a small array, where alias lists point anywhere.)
-      const bool earlier = uses.lastUse[other.index] < resource.firstUse;
-      const Footprint& previous = footprints[other.index];
-      aliased |= earlier;
-      aliasedStages |= keptIf(earlier, previous.stages);
-      aliasedWrites |= keptIf(earlier, previous.writes);
-    }
+    const TakeOver& takeOver = takeOvers[r];
+    PipelineStage aliasedStages = takeOver.stages;
     // Occupants on other queues: chain with the semaphore waits that ordered them first.
-    if (r < takeOverWaits.size()) aliasedStages |= keptIf(aliased, takeOverWaits[r]);
-    ResourceBarrierPlanner(ResourceId{r}, resource, uses.of(r), order, emitted)
-        .run(aliasedStages, aliasedWrites, aliased);
+    if (r < takeOverWaits.size()) aliasedStages |= keptIf(takeOver.aliased, takeOverWaits[r]);
+    ResourceBarrierPlanner(ResourceId{r}, resources[r], uses.of(r), order, emitted)
+        .run(aliasedStages, takeOver.writes, takeOver.aliased);
   }
 
   // Group by pass (counting sort keeps resource order within a pass): each
