@@ -78,15 +78,64 @@ UseTable collectUses(const RenderGraph& graph, std::span<const PassId> order, ui
   return {first, lastUse, uses};
 }
 
+using TakeOver = BarrierPlan::Scratch::TakeOver;
+
+// Adds to `takeOver` one alias of its resource: only earlier occupants count,
+// not later ones (masks: which it is flips at random).
+void addAlias(TakeOver& takeOver, bool earlier, const BarrierPlan::Scratch::Footprint& previous) {
+  takeOver.aliased |= earlier;
+  takeOver.stages |= keptIf(earlier, previous.stages);
+  takeOver.writes |= keptIf(earlier, previous.writes);
+}
+
+// Per resource, what taking over aliased memory waits for (last uses from the
+// use table: a small array, where alias lists point anywhere).
+const std::vector<TakeOver>& findTakeOvers(std::span<const PlannedResource> resources,
+                                           std::span<const ResourceId> aliases, const std::vector<uint32_t>& lastUse,
+                                           const std::vector<BarrierPlan::Scratch::Footprint>& footprints,
+                                           BarrierPlan::Scratch& scratch) {
+  const auto resourceCount = static_cast<uint32_t>(resources.size());
+  const auto aliasCount = static_cast<uint32_t>(aliases.size());
+  std::vector<TakeOver>& takeOvers = scratch.takeOvers;
+  takeOvers.assign(resourceCount, {});
+  // One flat walk over every alias, not a loop per resource, whose exit (after
+  // 0 to a few aliases) was mispredicted about once a resource. With the lists
+  // back to back in resource order (as placeTransients lays them out), an
+  // alias belongs to the resource numbered by how many lists ended at or before it.
+  std::vector<uint32_t>& endsAt = scratch.aliasListEnds;
+  endsAt.assign(aliasCount + 1, 0);
+  uint32_t end = 0;
+  bool backToBack = true;
+  for (const PlannedResource& resource : resources) {
+    backToBack &= resource.aliasesWith.first == end;
+    end = resource.aliasesWith.first + resource.aliasesWith.count;
+    ++endsAt[std::min(end, aliasCount)];
+  }
+  if (backToBack & (end == aliasCount)) {
+    uint32_t owner = 0;
+    for (uint32_t i = 0; i < aliasCount; ++i) {
+      owner += endsAt[i];
+      const uint32_t other = aliases[i].index;
+      addAlias(takeOvers[owner], lastUse[other] < resources[owner].firstUse, footprints[other]);
+    }
+    return takeOvers;
+  }
+  for (uint32_t r = 0; r < resourceCount; ++r) {
+    for (const ResourceId other : aliases.subspan(resources[r].aliasesWith.first, resources[r].aliasesWith.count))
+      addAlias(takeOvers[r], lastUse[other.index] < resources[r].firstUse, footprints[other.index]);
+  }
+  return takeOvers;
+}
+
 // Barriers as they are found (resource by resource), before grouping by pass;
 // final barriers and hand-offs straight into the plan.
 struct EmittedBarriers {
   using Entry = BarrierPlan::Scratch::Entry;
-  std::vector<Entry>& entries;
+  Entry* next;  // into the scratch's entries, room for one per use
   std::vector<FinalBarrier>& finals;
   std::vector<Dependency>& handoffs;
 
-  void add(PassId pass, bool after, const Barrier& b) { entries.push_back({pass.index * 2 + (after ? 1 : 0), b}); }
+  void add(PassId pass, bool after, const Barrier& b) { *next++ = {pass.index * 2 + (after ? 1u : 0u), b}; }
 };
 
 // What a queue already guarantees about the current version of a resource.
@@ -111,7 +160,11 @@ constexpr std::array<QueueSyncs, kQueueClassCount> kAfterWriteOn = [] {
   return table;
 }();
 
-// Walks one resource's uses and emits its barriers.
+// Walks one resource's uses and emits its barriers. Most resources are used
+// on one queue (kSeveralQueues false): their planner keeps one queue's state
+// and skips what only sharing between queues needs (runs of reads on several
+// queues, prior work on other queues, hand-offs).
+template <bool kSeveralQueues>
 class ResourceBarrierPlanner {
  public:
   ResourceBarrierPlanner(ResourceId id, const PlannedResource& resource, std::span<const Use> uses,
@@ -134,9 +187,6 @@ class ResourceBarrierPlanner {
   }
 
   void run(PipelineStage aliasedStages, AccessFlag aliasedWrites, bool aliased) {
-    // Only a resource used on several queues can have a version read on
-    // several; the others (most) never look for where a run of reads ends.
-    const bool severalQueues = queueCount(resource_.desc.queues) > 1;
     std::size_t readsEnd = 0;  // where the current run of reads ends, once looked for
     for (std::size_t i = 0; i < uses_.size();) {
       if (uses_[i].write) {
@@ -144,7 +194,7 @@ class ResourceBarrierPlanner {
         ++i;
         continue;
       }
-      if (severalQueues & (i >= readsEnd)) {
+      if (kSeveralQueues && i >= readsEnd) {
         readsEnd = i;
         QueueMask queues = QueueMask::None;
         while (readsEnd < uses_.size() && !uses_[readsEnd].write) queues |= toMask(uses_[readsEnd++].queue);
@@ -161,16 +211,20 @@ class ResourceBarrierPlanner {
   }
 
  private:
+  // Where queue q's state is: a resource used on one queue keeps only that queue's.
+  static uint32_t slot(QueueClass q) { return kSeveralQueues ? queueIndex(q) : 0; }
+
   // (The planner's conditions combine bools with & and |, not && and ||: their
   // operands are cheap, and each short-circuit would be a branch that flips
   // with the graph's data.)
   bool sameQueueWrite(QueueClass q) const { return written_ & (writeExternal_ | (writeQueue_ == q)); }
 
   bool crossQueuePrior(QueueClass q) const {
+    if constexpr (!kSeveralQueues) return false;
     // Written on another queue, or read or transitioned there since.
     static_assert(kQueueClassCount == 3);
     const uint32_t waitingQueues = any(queues_[0].waitStages) + any(queues_[1].waitStages) +
-                                   any(queues_[2].waitStages) - any(queues_[queueIndex(q)].waitStages);
+                                   any(queues_[2].waitStages) - any(queues_[slot(q)].waitStages);
     return (written_ & !sameQueueWrite(q)) | (waitingQueues != 0);
   }
 
@@ -178,8 +232,8 @@ class ResourceBarrierPlanner {
   // plus the last write unless an earlier barrier on q chained after it.
   Barrier sourceOn(QueueClass q) const {
     Barrier b{.resource = id_};
-    b.srcStages = queues_[queueIndex(q)].waitStages | externalWait_;
-    const bool unchained = sameQueueWrite(q) & !queues_[queueIndex(q)].writeChained;
+    b.srcStages = queues_[slot(q)].waitStages | externalWait_;
+    const bool unchained = sameQueueWrite(q) & !queues_[slot(q)].writeChained;
     b.srcStages |= keptIf(unchained, writeStages_);
     b.srcAccess = keptIf(unchained, writeAccess_);
     return b;
@@ -195,7 +249,7 @@ class ResourceBarrierPlanner {
 
   void emit(PassId pass, bool after, const Barrier& b, QueueClass q) {
     out_.add(pass, after, b);
-    QueueSync& qs = queues_[queueIndex(q)];
+    QueueSync& qs = queues_[slot(q)];
     if (!any(b.dstStages)) return;  // nothing on this queue can chain through it
     qs.waitStages |= b.dstStages;
     if (sameQueueWrite(q)) qs.writeChained = true;
@@ -221,13 +275,17 @@ class ResourceBarrierPlanner {
     writeStages_ = u.stages;
     writeAccess_ = writeBits(u.access);
     externalWait_ = PipelineStage::None;
-    queues_ = kAfterWriteOn[queueIndex(u.queue)];
+    if constexpr (kSeveralQueues) {
+      queues_ = kAfterWriteOn[queueIndex(u.queue)];
+    } else {
+      queues_[0] = {};
+    }
   }
 
   // A read of a version only one queue reads.
   void read(std::size_t i) {
     const Use& u = uses_[i];
-    QueueSync& qs = queues_[queueIndex(u.queue)];
+    QueueSync& qs = queues_[slot(u.queue)];
     const bool layoutChange = image_ & (layout_ != u.layout);
     const bool pendingWrite = (sameQueueWrite(u.queue) & any(writeAccess_)) | qs.transitioned;
     const bool covered = qs.allVisible | (contains(qs.visibleStages, u.stages) & contains(qs.visibleAccess, u.access));
@@ -282,7 +340,7 @@ class ResourceBarrierPlanner {
     const bool needed = layoutChange || (produced ? any(b.dstStages) : any(b.srcAccess));
     if (needed) {
       emit(host.pass, produced, b, q);
-      QueueSync& qs = queues_[queueIndex(q)];
+      QueueSync& qs = queues_[slot(q)];
       qs.visibleStages = b.dstStages;
       qs.visibleAccess = b.dstAccess;
       qs.transitioned = layoutChange;
@@ -295,7 +353,7 @@ class ResourceBarrierPlanner {
       }
     }
     layout_ = readLayout;
-    for (std::size_t k = begin; k < end; ++k) queues_[queueIndex(uses_[k].queue)].waitStages |= uses_[k].stages;
+    for (std::size_t k = begin; k < end; ++k) queues_[slot(uses_[k].queue)].waitStages |= uses_[k].stages;
   }
 
   void finish() {
@@ -323,7 +381,7 @@ class ResourceBarrierPlanner {
     setLayouts(b, final.layout);
     out_.finals.push_back({b, host.pass, kInvalidIndex});
     // Last readers on other queues must finish before the host's queue changes the layout.
-    if (host.write) return;
+    if (!kSeveralQueues || host.write) return;
     for (auto it = uses_.rbegin(); it != uses_.rend() && !it->write; ++it) {
       if (it->queue != host.queue) out_.handoffs.push_back({it->pass, host.pass, id_, host.stages});
     }
@@ -343,7 +401,7 @@ class ResourceBarrierPlanner {
   PipelineStage writeStages_ = PipelineStage::None;
   AccessFlag writeAccess_ = AccessFlag::None;
   PipelineStage externalWait_ = PipelineStage::None;  // read-only initial state's stages
-  QueueSyncs queues_{};
+  std::array<QueueSync, kSeveralQueues ? kQueueClassCount : 1> queues_{};
 };
 
 }  // namespace
@@ -367,36 +425,32 @@ void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::
 
   plan.finals.clear();
   plan.handoffs.clear();
-  scratch.entries.clear();
-  EmittedBarriers emitted{scratch.entries, plan.finals, plan.handoffs};
   // At most one barrier per use (a write's, a read's, or a run of shared
-  // reads' one transition), so this never regrows.
-  emitted.entries.reserve(uses.uses.size());
+  // reads' one transition): written in place, no capacity check per barrier.
+  if (scratch.entries.size() < uses.uses.size()) scratch.entries.resize(uses.uses.size());
+  EmittedBarriers emitted{scratch.entries.data(), plan.finals, plan.handoffs};
+  const std::vector<TakeOver>& takeOvers = findTakeOvers(resources, aliases, uses.lastUse, footprints, scratch);
   for (uint32_t r = 0; r < resourceCount; ++r) {
-    const PlannedResource& resource = resources[r];
-    PipelineStage aliasedStages = PipelineStage::None;
-    AccessFlag aliasedWrites = AccessFlag::None;
-    bool aliased = false;
-    for (const ResourceId other : aliases.subspan(resource.aliasesWith.first, resource.aliasesWith.count)) {
-      // Earlier occupants only, not later ones (masks: which it is flips at random).
-      // (Last uses from the use table: a small array, where alias lists point anywhere.)
-      const bool earlier = uses.lastUse[other.index] < resource.firstUse;
-      const Footprint& previous = footprints[other.index];
-      aliased |= earlier;
-      aliasedStages |= keptIf(earlier, previous.stages);
-      aliasedWrites |= keptIf(earlier, previous.writes);
-    }
+    const TakeOver& takeOver = takeOvers[r];
+    PipelineStage aliasedStages = takeOver.stages;
     // Occupants on other queues: chain with the semaphore waits that ordered them first.
-    if (r < takeOverWaits.size()) aliasedStages |= keptIf(aliased, takeOverWaits[r]);
-    ResourceBarrierPlanner(ResourceId{r}, resource, uses.of(r), order, emitted)
-        .run(aliasedStages, aliasedWrites, aliased);
+    if (r < takeOverWaits.size()) aliasedStages |= keptIf(takeOver.aliased, takeOverWaits[r]);
+    // (desc.queues: the queues of the resource's uses.)
+    if (queueCount(resources[r].desc.queues) > 1) {
+      ResourceBarrierPlanner<true>(ResourceId{r}, resources[r], uses.of(r), order, emitted)
+          .run(aliasedStages, takeOver.writes, takeOver.aliased);
+    } else {
+      ResourceBarrierPlanner<false>(ResourceId{r}, resources[r], uses.of(r), order, emitted)
+          .run(aliasedStages, takeOver.writes, takeOver.aliased);
+    }
   }
 
   // Group by pass (counting sort keeps resource order within a pass): each
   // pass's two ranges from the counts, which turn into cursors in place.
   std::vector<uint32_t>& cursor = scratch.slotFirst;
   cursor.assign(graph.passCount() * 2, 0);
-  for (const EmittedBarriers::Entry& e : emitted.entries) ++cursor[e.slot];
+  const std::span<const EmittedBarriers::Entry> entries{scratch.entries.data(), emitted.next};
+  for (const EmittedBarriers::Entry& e : entries) ++cursor[e.slot];
   plan.before.resize(graph.passCount());
   plan.after.resize(graph.passCount());
   uint32_t start = 0;
@@ -408,8 +462,8 @@ void planBarriers(const RenderGraph& graph, std::span<const PassId> order, std::
     cursor[2 * p + 1] = start;
     start += plan.after[p].count;
   }
-  plan.barriers.resize(emitted.entries.size());
-  for (const EmittedBarriers::Entry& e : emitted.entries) plan.barriers[cursor[e.slot]++] = e.barrier;
+  plan.barriers.resize(entries.size());
+  for (const EmittedBarriers::Entry& e : entries) plan.barriers[cursor[e.slot]++] = e.barrier;
 }
 
 }  // namespace sg::graph

@@ -47,6 +47,14 @@ struct BarrierPlan {
       AccessFlag writes = AccessFlag::None;
     };
     std::vector<Footprint> footprints;
+    // Per resource: every stage and write of the earlier occupants of its memory, if any.
+    struct TakeOver {
+      PipelineStage stages = PipelineStage::None;
+      AccessFlag writes = AccessFlag::None;
+      bool aliased = false;
+    };
+    std::vector<TakeOver> takeOvers;
+    std::vector<uint32_t> aliasListEnds;  // per alias, plus one: how many resources' lists end there
     // Barriers as they are found (resource by resource), before grouping by pass.
     struct Entry {
       uint32_t slot;  // pass * 2, + 1 for "after the pass"

@@ -311,5 +311,45 @@ TEST(GraphBarriers, PlanBarriersRunsOnPlainData) {
   EXPECT_TRUE(barriers.handoffs.empty());
 }
 
+// placeTransients lays alias lists back to back in resource order, which
+// planBarriers walks as one flat list; lists in any other layout give the same barriers.
+TEST(GraphBarriers, AliasListsInAnyLayoutGiveTheSameTakeOver) {
+  RenderGraph g;
+  auto a = g.createBuffer("a", BufferDesc{.size = 64});
+  auto b = g.createBuffer("b", BufferDesc{.size = 64});
+  auto& p0 = g.addPass("p0", QueueClass::Graphics, PassKind::Compute);
+  a = p0.write(a, Access::StorageWrite);
+  auto& p1 = g.addPass("p1", QueueClass::Graphics, PassKind::Compute);
+  p1.read(a, Access::StorageRead);
+  b = p1.write(b, Access::StorageWrite);
+  g.markOutput(b);
+  auto& p2 = g.addPass("p2", QueueClass::Graphics, PassKind::Compute);
+  g.markOutput(p2.write(g.createBuffer("c", BufferDesc{.size = 64}), Access::StorageWrite));
+  const std::vector<PassId> order{PassId{0}, PassId{1}, PassId{2}};
+  std::vector<PlannedResource> resources = planResources(g, order, 64, 64);
+  ASSERT_EQ(resources.size(), 3u);
+  const ResourceId c{2};
+  // c takes over a's memory (a is used before c), and a lists c as its successor.
+  const Barrier expected{.resource = c,
+                         .srcStages = S::ComputeShader,
+                         .dstStages = S::ComputeShader,
+                         .srcAccess = A::ShaderStorageWrite,
+                         .dstAccess = A::ShaderStorageWrite,
+                         .discard = true};
+  resources[a.id.index].aliasesWith = {0, 1};
+  resources[b.id.index].aliasesWith = {1, 0};
+  resources[c.index].aliasesWith = {1, 1};
+  const std::vector<ResourceId> backToBack{c, a.id};
+  const BarrierPlan inOrder = planBarriers(g, order, resources, backToBack);
+  ASSERT_EQ(inOrder.beforePass(PassId{2}).size(), 1u);
+  EXPECT_EQ(inOrder.beforePass(PassId{2})[0], expected);
+  resources[a.id.index].aliasesWith = {1, 1};
+  resources[c.index].aliasesWith = {0, 1};
+  const std::vector<ResourceId> swapped{a.id, c};
+  const BarrierPlan outOfOrder = planBarriers(g, order, resources, swapped);
+  EXPECT_EQ(outOfOrder.barriers, inOrder.barriers);
+  EXPECT_TRUE(inOrder.beforePass(PassId{0}).empty());  // a took over nobody's memory
+}
+
 }  // namespace
 }  // namespace sg::graph
