@@ -126,11 +126,13 @@ Pass& RenderGraph::addPass(std::string name, QueueClass queue, PassKind kind) {
   declaration_->passes.push_back({.accesses = {end, 0}, .queue = queue, .kind = kind});
   declaration_->passNames.push_back(std::move(name));
   declaration_->callbacks.emplace_back();
-  // The builder of pass i is always Pass(declaration, i): the ones from before
-  // a clear() serve again (a deque's clear() would free all but one block,
-  // and the next frame allocate them again).
-  if (id.index < builders_.size()) return builders_[id.index];
-  return builders_.emplace_back(*declaration_, id);
+  // The builder of pass i is always Pass(declaration, i): the ones made before
+  // a clear() serve again.
+  const uint32_t block = id.index / kBuilderBlock;
+  if (block == builders_.size()) builders_.emplace_back().reserve(kBuilderBlock);
+  std::vector<Pass>& builders = builders_[block];
+  if (id.index % kBuilderBlock == builders.size()) builders.emplace_back(*declaration_, id);  // within capacity
+  return builders[id.index % kBuilderBlock];
 }
 
 void RenderGraph::markOutput(ResourceHandle version) { declaration_->outputs.push_back(version); }
