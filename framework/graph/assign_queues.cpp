@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <span>
 
 namespace sg::graph {
 namespace {
@@ -13,21 +14,44 @@ using Need = QueueSchedule::Scratch::Need;
 // Waits another one covers are dropped, so the list stays a few entries long.
 class WaitHistory {
  public:
-  explicit WaitHistory(std::vector<Need>& waits) : waits_(waits) {}
+  explicit WaitHistory(QueueSchedule::Scratch::Waits& waits) : waits_(waits) {}
   PipelineStage coveredStages(uint64_t value) const {
     PipelineStage stages = PipelineStage::None;
-    for (const Need& w : waits_) {
+    for (const Need& w : waits()) {
       if (w.value >= value) stages |= w.stages;
     }
     return stages;
   }
   void add(Need wait) {
-    std::erase_if(waits_, [&](const Need& w) { return w.value <= wait.value && contains(wait.stages, w.stages); });
-    waits_.push_back(wait);
+    Need* const first = waits_.list.data();
+    Need* const end = std::remove_if(first, first + waits_.count, [&](const Need& w) {
+      return w.value <= wait.value && contains(wait.stages, w.stages);
+    });
+    if (end == first + waits_.list.size()) [[unlikely]] return addPerStage(wait);
+    *end = wait;
+    waits_.count = static_cast<uint32_t>(end - first) + 1;
   }
 
  private:
-  std::vector<Need>& waits_;
+  // The array full (rare: it holds a wait per stage bit): the same coverage
+  // as one wait per stage, at the highest value waited for there.
+  [[gnu::noinline]] void addPerStage(Need wait) {
+    std::array<uint64_t, QueueSchedule::Scratch::Waits::kStageBits> highest{};
+    const auto raise = [&](const Need& w) {
+      for (uint32_t b = 0; b < highest.size(); ++b) {
+        if ((static_cast<uint32_t>(w.stages) >> b) & 1u) highest[b] = std::max(highest[b], w.value);
+      }
+    };
+    for (const Need& w : waits()) raise(w);
+    raise(wait);
+    waits_.count = 0;
+    for (uint32_t b = 0; b < highest.size(); ++b) {
+      if (highest[b] != 0) waits_.list[waits_.count++] = {highest[b], static_cast<PipelineStage>(1u << b)};
+    }
+  }
+
+  std::span<Need> waits() const { return {waits_.list.data(), waits_.count}; }
+  QueueSchedule::Scratch::Waits& waits_;
 };
 
 }  // namespace
@@ -52,18 +76,18 @@ void assignQueues(const RenderGraph& graph, std::span<const PassId> order, const
   rowValue.clear();
   rowValue.reserve(order.size() + 1);
   rowValue.push_back(0);
-  for (std::vector<uint32_t>& ofQueue : scratch.batchesOfQueue) {
-    ofQueue.clear();
-    ofQueue.reserve(order.size());  // a batch per position at most
-  }
+  // A batch per position at most, on any queue.
+  const std::size_t stride = order.size();
+  if (scratch.batchesOfQueue.size() < kQueueClassCount * stride) scratch.batchesOfQueue.resize(kQueueClassCount * stride);
+  std::array<uint32_t, kQueueClassCount> batchCount{};
 
   for (uint32_t position = 0; position < order.size(); ++position) {
     const PassId p = order[position];
     const QueueClass queue = graph.pass(p).queue;
     if (schedule.batches.empty() || schedule.batches.back().queue != queue) {
-      auto& ofQueue = scratch.batchesOfQueue[queueIndex(queue)];
-      ofQueue.push_back(static_cast<uint32_t>(schedule.batches.size()));
-      rowValue.push_back(ofQueue.size());
+      uint32_t& count = batchCount[queueIndex(queue)];
+      scratch.batchesOfQueue[queueIndex(queue) * stride + count++] = static_cast<uint32_t>(schedule.batches.size());
+      rowValue.push_back(count);
       schedule.batches.push_back({.queue = queue, .passes = {position, 0}});
     }
     ++schedule.batches.back().passes.count;
@@ -91,7 +115,7 @@ void assignQueues(const RenderGraph& graph, std::span<const PassId> order, const
   for (const Dependency& e : handoffs) require(e);
 
   for (auto& ofWaiter : scratch.history) {
-    for (std::vector<Need>& waits : ofWaiter) waits.clear();
+    for (QueueSchedule::Scratch::Waits& waits : ofWaiter) waits.count = 0;
   }
   for (uint32_t b = 0; b < schedule.batches.size(); ++b) {
     Batch& batch = schedule.batches[b];
@@ -105,7 +129,7 @@ void assignQueues(const RenderGraph& graph, std::span<const PassId> order, const
       schedule.waits.push_back({static_cast<QueueClass>(producer), need.value, missing});
       ++batch.waits.count;
       waited.add({need.value, missing});
-      Batch& signaller = schedule.batches[scratch.batchesOfQueue[producer][need.value - 1]];
+      Batch& signaller = schedule.batches[scratch.batchesOfQueue[producer * stride + need.value - 1]];
       signaller.signalValue = need.value;
     }
   }

@@ -25,11 +25,20 @@ struct QueueSchedule {
     };
     // Rows: 0 a spare, then batch + 1.
     std::vector<uint64_t> rowValue;  // the batch's value on its queue (the spare's 0)
-    std::array<std::vector<uint32_t>, kQueueClassCount> batchesOfQueue;  // by value - 1
+    // The batches of each queue by value - 1, queue q's from q * (the order's size) on.
+    std::vector<uint32_t> batchesOfQueue;
     // Per row and producing queue: the highest value needed and the stages that wait.
     std::vector<std::array<Need, kQueueClassCount>> needs;
-    // Per waiting queue and producing queue: the waits so far (see WaitHistory).
-    std::array<std::array<std::vector<Need>, kQueueClassCount>, kQueueClassCount> history;
+    // Per waiting queue and producing queue: the waits so far, none covering
+    // another (see WaitHistory). Each keeps at least one stage at which no
+    // other waited for as high a value, so there are at most as many as stage
+    // bits: a fixed array, nothing to allocate.
+    struct Waits {
+      static constexpr std::size_t kStageBits = 8 * sizeof(PipelineStage);
+      std::array<Need, kStageBits> list;
+      uint32_t count = 0;
+    };
+    std::array<std::array<Waits, kQueueClassCount>, kQueueClassCount> history;
   } scratch;
 };
 

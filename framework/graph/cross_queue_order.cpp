@@ -41,19 +41,21 @@ void orderAcrossQueues(const RenderGraph& graph, std::span<const PassId> order, 
     waiter.waitStages[producer] |= any(e.dstStages) ? e.dstStages : PipelineStage::AllCommands;
   }
   out.batches.resize(count);
+  uint32_t covers = 0;
   for (uint32_t waiting = 0; waiting < kQueueClassCount; ++waiting) {
     for (uint32_t producer = 0; producer < kQueueClassCount; ++producer) {
-      out.firstCover[waiting][producer].assign(submitted[producer], kInvalidIndex);
+      out.firstCoverAt[waiting][producer] = covers;
+      covers += submitted[producer];
     }
   }
+  out.firstCover.assign(covers, kInvalidIndex);
   std::array<std::array<uint32_t, kQueueClassCount>, kQueueClassCount> covered{};  // [waiting][producer]
   for (uint32_t b = 0; b < out.batches.size(); ++b) {
     const CrossQueueOrder::Batch& batch = out.batches[b];
     const uint32_t waiting = queueIndex(batch.queue);
     for (uint32_t producer = 0; producer < kQueueClassCount; ++producer) {
-      for (uint32_t& c = covered[waiting][producer]; c < batch.waitValue[producer]; ++c) {
-        out.firstCover[waiting][producer][c] = b;
-      }
+      uint32_t* firstCover = out.firstCover.data() + out.firstCoverAt[waiting][producer];
+      for (uint32_t& c = covered[waiting][producer]; c < batch.waitValue[producer]; ++c) firstCover[c] = b;
     }
   }
 }
@@ -71,7 +73,7 @@ uint32_t CrossQueueOrder::availableFrom(uint32_t last, QueueMask used, QueueClas
     // The value of the producer's last batch at or before `last`.
     const uint32_t needed = lastBatch.submitted[producer];
     if (needed == 0) continue;  // not used there before `last`
-    const uint32_t proving = firstCover[waiting][producer][needed - 1];
+    const uint32_t proving = firstCover[firstCoverAt[waiting][producer] + needed - 1];
     if (proving == kInvalidIndex) return kInvalidIndex;
     // That batch waits for `needed` or more itself: its stages are the ones to chain with.
     waitStages |= batches[proving].waitStages[producer];

@@ -28,9 +28,12 @@ struct CrossQueueOrder {
   std::vector<Batch> batches;         // as assignQueues() splits the order
   std::vector<uint32_t> batchAt;      // per position in the order
   std::vector<uint32_t> batchOfPass;  // per pass; the order's size if not in it
-  // [waiting queue][producing queue][value - 1]: the first batch on the
-  // waiting queue that waited for at least that value (kInvalidIndex: none).
-  std::array<std::array<std::vector<uint32_t>, kQueueClassCount>, kQueueClassCount> firstCover;
+  // Per waiting queue, producing queue and value: the first batch on the
+  // waiting queue that waited for at least that value (kInvalidIndex: none),
+  // at firstCover[firstCoverAt[waiting][producer] + value - 1] (one array for
+  // all pairs of queues: one allocation instead of one per pair).
+  std::vector<uint32_t> firstCover;
+  std::array<std::array<uint32_t, kQueueClassCount>, kQueueClassCount> firstCoverAt{};
 
   // The first position in the order from which a pass on `queue` runs after
   // every command up to position `last` on the queues in `used`: right after

@@ -79,6 +79,12 @@ void buildDependencies(const RenderGraph& graph, const VersionTable& versions, c
   // the edges by source: grouped by source, each source's in declaration order.
   const uint32_t passCount = graph.passCount();
   std::vector<Dependency>& found = deps.scratch;  // the first `count` entries are the edges found
+  // Room for every candidate at once: one per access, plus one per reader of
+  // each version written over, which is each read at most once unless two
+  // writes go over one version (an error; the walk grows the list then).
+  // Growing from empty instead reallocated and copied about eight times.
+  const std::size_t candidates = graph.declaration().accesses.size() + versions.readers.size() + 1;
+  if (found.size() < candidates) found.resize(candidates);
   deps.firstEdge.assign(passCount + 1, 0);
   bool backward = false;
   const uint32_t count = culled.empty() ? listDependencies<true>(graph, versions, culled, found, deps.firstEdge, backward)

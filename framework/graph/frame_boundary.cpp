@@ -59,24 +59,29 @@ void planFrameBoundary(const RenderGraph& graph, const VersionTable& versions, c
   }
 
   // External resources: first and last batch per queue, in resource order.
-  // A frame has few (imports, persistent and history resources): a table of
-  // those alone (found by binary search), not one entry per resource.
-  plan.externalUses.clear();
-  std::vector<std::array<ExternalUse, kQueueClassCount>> uses;
-  std::vector<ResourceId> externals;  // uses[i] is externals[i]'s
-  for (uint32_t r = 0; r < declared.traits.size(); ++r)
-    if (isExternal(declared.traits[r].kind)) externals.push_back(ResourceId{r});
-  if (externals.empty()) return;
-  uses.resize(externals.size());
+  // A frame has few (imports, persistent and history resources): an entry
+  // per external resource and queue, in plan.externalUses itself (found by
+  // binary search; no table per resource, nothing allocated once the plan's
+  // array has room), then the unused entries dropped.
+  std::vector<ExternalUse>& uses = plan.externalUses;
+  uses.clear();
+  uses.reserve(kQueueClassCount * static_cast<std::size_t>(std::count_if(
+                                      declared.traits.begin(), declared.traits.end(),
+                                      [](const ResourceTraits& t) { return isExternal(t.kind); })));
+  for (uint32_t r = 0; r < declared.traits.size(); ++r) {
+    if (!isExternal(declared.traits[r].kind)) continue;
+    for (uint32_t q = 0; q < kQueueClassCount; ++q) uses.push_back({.resource = ResourceId{r}, .queue = static_cast<QueueClass>(q)});
+  }
+  if (uses.empty()) return;
   for (const PassId p : plan.order) {
     if ((versions.passKinds[p.index].accessed & kExternalKinds) == 0) continue;
     const QueueClass queue = graph.pass(p).queue;
     const uint32_t batch = passBatch[p.index];
     for (const ResourceAccess& a : graph.accessesOf(p)) {
       if (!isExternal(declared.traits[a.resource.index].kind)) continue;
-      const auto external = static_cast<std::size_t>(
-          std::lower_bound(externals.begin(), externals.end(), a.resource) - externals.begin());
-      ExternalUse& use = uses[external][queueIndex(queue)];
+      const auto first = std::lower_bound(uses.begin(), uses.end(), a.resource,
+                                          [](const ExternalUse& u, ResourceId r) { return u.resource < r; });
+      ExternalUse& use = first[queueIndex(queue)];
       if (use.firstBatch == kInvalidIndex) {
         use = {a.resource, queue, batch, batch, a.stages};
       } else if (use.firstBatch == batch) {
@@ -85,9 +90,7 @@ void planFrameBoundary(const RenderGraph& graph, const VersionTable& versions, c
       use.lastBatch = batch;
     }
   }
-  for (const auto& ofResource : uses)
-    for (const ExternalUse& use : ofResource)
-      if (use.firstBatch != kInvalidIndex) plan.externalUses.push_back(use);
+  std::erase_if(uses, [](const ExternalUse& use) { return use.firstBatch == kInvalidIndex; });
 }
 
 }  // namespace sg::graph

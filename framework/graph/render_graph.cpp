@@ -4,10 +4,12 @@
 
 namespace sg::graph {
 
-// Room for a typical frame from the start (tens of passes and resources): a new
-// graph then regrows its arrays a few times instead of from one element up.
+// Room for a large frame from the start (a hundred passes, each writing a
+// resource or two and reading a few): a new graph then seldom regrows its
+// arrays (each regrowth a malloc, a copy and a free). Reserved memory nobody
+// uses is never touched.
 RenderGraph::RenderGraph() : declaration_(std::make_unique<GraphDeclaration>()) {
-  constexpr std::size_t kPasses = 64, kResources = 64, kAccesses = 192;
+  constexpr std::size_t kPasses = 128, kResources = 192, kAccesses = 512;
   GraphDeclaration& d = *declaration_;
   d.resources.reserve(kResources);
   d.traits.reserve(kResources);
@@ -124,7 +126,13 @@ Pass& RenderGraph::addPass(std::string name, QueueClass queue, PassKind kind) {
   declaration_->passes.push_back({.accesses = {end, 0}, .queue = queue, .kind = kind});
   declaration_->passNames.push_back(std::move(name));
   declaration_->callbacks.emplace_back();
-  return builders_.emplace_back(*declaration_, id);
+  // The builder of pass i is always Pass(declaration, i): the ones made before
+  // a clear() serve again.
+  const uint32_t block = id.index / kBuilderBlock;
+  if (block == builders_.size()) builders_.emplace_back().reserve(kBuilderBlock);
+  std::vector<Pass>& builders = builders_[block];
+  if (id.index % kBuilderBlock == builders.size()) builders.emplace_back(*declaration_, id);  // within capacity
+  return builders[id.index % kBuilderBlock];
 }
 
 void RenderGraph::markOutput(ResourceHandle version) { declaration_->outputs.push_back(version); }
@@ -138,7 +146,6 @@ void RenderGraph::clear() {
   declaration_->accesses.clear();
   declaration_->outputs.clear();
   declaration_->versionCounts.clear();
-  builders_.clear();
 }
 
 }  // namespace sg::graph

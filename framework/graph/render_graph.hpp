@@ -7,10 +7,10 @@
 #include <shadelgraph/graph/sync_types.hpp>
 
 #include <cstdint>
-#include <deque>
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace sg::graph {
 
@@ -68,7 +68,10 @@ class RenderGraph {
 
   // On the heap so that Pass builders keep pointing at it when the graph moves.
   std::unique_ptr<GraphDeclaration> declaration_;
-  std::deque<Pass> builders_;  // deque: the Pass& handed out must stay valid
+  // The Pass builders, by PassId, in blocks of kBuilderBlock whose storage
+  // never moves (the Pass& handed out stay valid while passes are added).
+  static constexpr uint32_t kBuilderBlock = 128;
+  std::vector<std::vector<Pass>> builders_;
 };
 
 }  // namespace sg::graph
