@@ -30,9 +30,8 @@ struct QueueSchedule {
     // Per row and producing queue: the highest value needed and the stages that wait.
     std::vector<std::array<Need, kQueueClassCount>> needs;
     // Per waiting queue and producing queue: the waits so far, none covering
-    // another (see WaitHistory). Each keeps at least one stage at which no
-    // other waited for as high a value, so there are at most as many as stage
-    // bits: a fixed array, nothing to allocate.
+    // another (see WaitHistory): usually a few. A full array is rewritten as
+    // one wait per stage bit, with the same coverage, so it never has to grow.
     struct Waits {
       static constexpr std::size_t kStageBits = 8 * sizeof(PipelineStage);
       std::array<Need, kStageBits> list;

@@ -166,5 +166,54 @@ TEST(GraphQueues, AssignQueuesOnItsOwn) {
   EXPECT_EQ(schedule.batches[2].passes, (Range{2, 1}));
 }
 
+
+// More waits than assignQueues keeps room for, none covering another (each
+// Transfer plus a distinct pair of other stages, at a higher value): the list
+// is rewritten as one wait per stage, which must neither lose coverage nor
+// invent it.
+TEST(GraphQueues, ManyWaitsThatCoverNoOtherKeepTheirCoverage) {
+  constexpr uint32_t kConsumers = QueueSchedule::Scratch::Waits::kStageBits + 1;
+  std::vector<PipelineStage> stageSets;
+  for (uint32_t a = 0; a < 8 && stageSets.size() < kConsumers; ++a)
+    for (uint32_t b = a + 1; b < 8 && stageSets.size() < kConsumers; ++b)
+      stageSets.push_back(PipelineStage::Transfer | static_cast<PipelineStage>((1u << a) | (1u << b)));
+  ASSERT_EQ(stageSets.size(), kConsumers);
+  RenderGraph g;
+  DependencyGraph deps;
+  const auto pair = [&](const std::string& name) {
+    g.addPass("before " + name, QueueClass::AsyncCompute, PassKind::Compute);
+    g.addPass(name, QueueClass::Graphics);
+    return PassId{g.passCount() - 1};
+  };
+  for (uint32_t i = 0; i < kConsumers; ++i) {
+    const PassId consumer = pair("consume" + std::to_string(i));
+    deps.edges.push_back({PassId{consumer.index - 1}, consumer, ResourceId{0}, stageSets[i]});
+  }
+  // Every stage at the first value: covered by the waits so far.
+  PipelineStage all = PipelineStage::None;
+  for (const PipelineStage s : stageSets) all |= s;
+  const PassId covered = pair("covered");
+  deps.edges.push_back({PassId{0}, covered, ResourceId{0}, all});
+  // The last value at a stage only an earlier wait had: not covered.
+  ASSERT_FALSE(any(stageSets[kConsumers - 1] & PipelineStage::LateFragmentTests));
+  ASSERT_TRUE(any(stageSets[kConsumers - 2] & PipelineStage::LateFragmentTests));
+  const PassId uncovered = pair("uncovered");
+  deps.edges.push_back({PassId{2 * kConsumers - 2}, uncovered, ResourceId{0},
+                        PipelineStage::LateFragmentTests | PipelineStage::Transfer});
+  std::vector<PassId> order;
+  for (uint32_t p = 0; p < g.passCount(); ++p) order.push_back(PassId{p});
+
+  const QueueSchedule schedule = assignQueues(g, order, deps);
+  ASSERT_EQ(schedule.batches.size(), 2 * kConsumers + 4);
+  for (uint32_t i = 0; i < kConsumers; ++i) {
+    EXPECT_EQ(toVector(schedule.waitsOf(schedule.batches[2 * i + 1])),
+              (std::vector<SemaphoreWait>{{QueueClass::AsyncCompute, i + 1, stageSets[i]}}))
+        << "consumer " << i;
+  }
+  EXPECT_TRUE(schedule.waitsOf(schedule.batches[2 * kConsumers + 1]).empty());
+  EXPECT_EQ(toVector(schedule.waitsOf(schedule.batches[2 * kConsumers + 3])),
+            (std::vector<SemaphoreWait>{{QueueClass::AsyncCompute, kConsumers, PipelineStage::LateFragmentTests}}));
+}
+
 }  // namespace
 }  // namespace sg::graph
