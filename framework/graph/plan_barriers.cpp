@@ -289,7 +289,7 @@ class ResourceBarrierPlanner {
     const bool layoutChange = image_ & (layout_ != u.layout);
     const bool pendingWrite = (sameQueueWrite(u.queue) & any(writeAccess_)) | qs.transitioned;
     const bool covered = qs.allVisible | (contains(qs.visibleStages, u.stages) & contains(qs.visibleAccess, u.access));
-    if (!layoutChange & (!pendingWrite | covered)) {
+    if ((!layoutChange) & ((!pendingWrite) | covered)) {
       qs.waitStages |= u.stages;
       return;
     }
@@ -297,7 +297,7 @@ class ResourceBarrierPlanner {
     // Later readers in the same layout share this barrier.
     b.dstStages = u.stages;
     b.dstAccess = u.access;
-    for (std::size_t k = i + 1; k < uses_.size() && (!uses_[k].write & (!image_ | (uses_[k].layout == u.layout))); ++k) {
+    for (std::size_t k = i + 1; k < uses_.size() && ((!uses_[k].write) & ((!image_) | (uses_[k].layout == u.layout))); ++k) {
       b.dstStages |= uses_[k].stages;
       b.dstAccess |= uses_[k].access;
     }
