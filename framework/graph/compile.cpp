@@ -114,15 +114,9 @@ const CompiledPlan& PlanCompiler::compile(const RenderGraph& graph, const Compil
   planFrameBoundary(graph, versions_, needed, schedule_.passBatch, plan);
 
   // Accesses: one copy when the declaration holds them in pass order already
-  // (passes declared one after the other), else pass by pass.
+  // (passes declared one after the other; indexVersions() found out), else pass by pass.
   const GraphDeclaration& declared = graph.declaration();
-  bool inPassOrder = true;
-  uint32_t next = 0;
-  for (const PassDecl& pass : declared.passes) {
-    inPassOrder = inPassOrder && pass.accesses.first == next;
-    next = pass.accesses.first + pass.accesses.count;
-  }
-  inPassOrder = inPassOrder && next == declared.accesses.size();
+  const bool inPassOrder = !versions_.copiedAccesses;
   plan.accesses.clear();
   if (inPassOrder) plan.accesses.assign(declared.accesses.begin(), declared.accesses.end());
 

@@ -116,14 +116,7 @@ class Validator {
     const ResourceDecl& r = graph_.resource(id);
     const bool isBuffer = r.type == ResourceType::Buffer;
     const bool bufferFine = r.buffer.size != 0;
-    const ImageDesc& image = r.image;
-    const Size& size = image.size;
-    const bool relative = size.mode == Size::Mode::Relative;
-    const bool relativeSized = outputSized_ & (size.scaleX > 0.0f) & (size.scaleY > 0.0f);
-    const bool absoluteSized = (size.width != 0) & (size.height != 0);
-    const uint32_t fewest = std::min(std::min(image.depth, image.layers), std::min(image.mipLevels, image.samples));
-    const bool imageFine = (image.format != Format::Undefined) & ((relative & relativeSized) | (!relative & absoluteSized)) &
-                           (fewest != 0);
+    const bool imageFine = (r.image.format != Format::Undefined) & imageSizeLooksFine(r.image);
     const bool fine = (r.kind != ResourceKind::History) & ((isBuffer & bufferFine) | (!isBuffer & imageFine));
     if (!fine) [[unlikely]] reportResource(id);
   }
@@ -161,11 +154,11 @@ class Validator {
   bool imageSizeLooksFine(const ImageDesc& image) const {
     const Size& size = image.size;
     const bool relative = size.mode == Size::Mode::Relative;
-    const bool relativeSized = (options_.outputWidth != 0) & (options_.outputHeight != 0) & (size.scaleX > 0.0f) &
-                               (size.scaleY > 0.0f);
+    const bool relativeSized = outputSized_ & (size.scaleX > 0.0f) & (size.scaleY > 0.0f);
     const bool absoluteSized = (size.width != 0) & (size.height != 0);
-    const bool sized = (relative & relativeSized) | (!relative & absoluteSized);
-    return sized & (image.depth != 0) & (image.layers != 0) & (image.mipLevels != 0) & (image.samples != 0);
+    const bool sized = (relative & relativeSized) | ((!relative) & absoluteSized);
+    const uint32_t fewest = std::min(std::min(image.depth, image.layers), std::min(image.mipLevels, image.samples));
+    return sized & (fewest != 0);
   }
 
   // The common case (nothing to report) without a branch per condition:
