@@ -170,7 +170,9 @@ std::unique_ptr<Renderer::Frame> Renderer::declare(const RenderSettings& setting
   const float focal = cam.projection == scene::Projection::Perspective
                           ? std::abs(uniforms.projection[1][1]) * 0.5f * float(settings.height)
                           : 0.0f;
-  auto frame = std::make_unique<Frame>(Frame{
+  // Built in place (make_unique would move a temporary Frame, and GCC 12 then warns that the moved map
+  // may be uninitialized: a false positive).
+  auto frame = std::unique_ptr<Frame>(new Frame{
       {gpuScene_, uniformBuffer, lightBuffer, noLightGrid_, gpuScene_.allDraws(), registry_, layerTextures_},
       {scene_, device_, executor_, modes_, drawSpheres_, drawBounds_, frameNumber_++, cam.position(), focal, uniforms.viewProjection,
        settings.width, settings.height, settings.occlusionCulling ? &culling_ : nullptr},

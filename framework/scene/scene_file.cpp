@@ -1,7 +1,7 @@
-#include <cfloat>
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -20,6 +20,9 @@ namespace {
 using Json = nlohmann::json;
 using detail::capText;
 using detail::kMaxCoordinate;
+
+// The largest finite 32-bit float, as the double the limits below compare with.
+constexpr double kFloatMax = static_cast<double>(std::numeric_limits<float>::max());
 
 // Errors inside the file: a JSON pointer and what is wrong with it.
 class FormatError : public std::runtime_error {
@@ -40,26 +43,26 @@ void allowOnly(const Json& object, const std::string& path, std::initializer_lis
 float toFloat(const Json& value, const std::string& path, double limit) {
   if (!value.is_number()) throw FormatError(path, "expected a number");
   const double number = value.get<double>();
-  if (!(std::abs(number) <= double{FLT_MAX})) throw FormatError(path, value.dump() + " is outside the range of a 32-bit float");
+  if (!(std::abs(number) <= kFloatMax)) throw FormatError(path, value.dump() + " is outside the range of a 32-bit float");
   if (std::abs(number) > limit)
     throw FormatError(path, value.dump() + " is beyond +-1e18, where squared lengths overflow 32-bit float");
   return static_cast<float>(number);
 }
 
-float number(const Json& object, const char* key, const std::string& path, float fallback, double limit = double{FLT_MAX}) {
+float number(const Json& object, const char* key, const std::string& path, float fallback, double limit = kFloatMax) {
   const auto it = object.find(key);
   if (it == object.end()) return fallback;
   return toFloat(*it, path + "/" + key, limit);
 }
 
-float requiredNumber(const Json& object, const char* key, const std::string& path, double limit = double{FLT_MAX}) {
+float requiredNumber(const Json& object, const char* key, const std::string& path, double limit = kFloatMax) {
   if (!object.contains(key)) throw FormatError(path + "/" + key, "required property is missing");
   return number(object, key, path, 0.0f, limit);
 }
 
 template <int N>
 glm::vec<N, float> vector(const Json& object, const char* key, const std::string& path, glm::vec<N, float> fallback,
-                          double limit = double{FLT_MAX}) {
+                          double limit = kFloatMax) {
   const auto it = object.find(key);
   if (it == object.end()) return fallback;
   const std::string where = path + "/" + key;
@@ -70,7 +73,7 @@ glm::vec<N, float> vector(const Json& object, const char* key, const std::string
 }
 
 template <int N>
-glm::vec<N, float> requiredVector(const Json& object, const char* key, const std::string& path, double limit = double{FLT_MAX}) {
+glm::vec<N, float> requiredVector(const Json& object, const char* key, const std::string& path, double limit = kFloatMax) {
   if (!object.contains(key)) throw FormatError(path + "/" + key, "required property is missing");
   return vector<N>(object, key, path, glm::vec<N, float>(0.0f), limit);
 }
