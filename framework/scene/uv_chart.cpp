@@ -1,7 +1,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <span>
 #include <vector>
 
@@ -9,8 +8,6 @@
 
 namespace sg::scene {
 namespace {
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 using Point = glm::dvec2;
 using Triangle = std::array<Point, 3>;
@@ -27,7 +24,7 @@ bool interiorsMayIntersect(const Triangle& a, const Triangle& b) {
     for (int e = 0; e < 3; ++e) {
       const Point d = (*edges)[static_cast<size_t>((e + 1) % 3)] - (*edges)[static_cast<size_t>(e)];
       const Point axis{-d.y, d.x};
-      double minA = kInfinity, maxA = -kInfinity, minB = kInfinity, maxB = -kInfinity;
+      double minA = HUGE_VAL, maxA = -HUGE_VAL, minB = HUGE_VAL, maxB = -HUGE_VAL;
       for (size_t k = 0; k < 3; ++k) {
         const double pa = glm::dot(a[k], axis), pb = glm::dot(b[k], axis);
         minA = std::min(minA, pa), maxA = std::max(maxA, pa);
@@ -78,7 +75,7 @@ struct Part {
 std::vector<bool> degenerateTriangles(const Part& part, double relativeEpsilon) {
   std::vector<bool> degenerate(part.indices.size() / 3, false);
   if (part.positions.empty()) return degenerate;
-  glm::dvec3 lo(kInfinity), hi(-kInfinity);
+  glm::dvec3 lo(HUGE_VAL), hi(-HUGE_VAL);
   for (const uint32_t index : part.indices) {
     lo = glm::min(lo, glm::dvec3(part.positions[index]));
     hi = glm::max(hi, glm::dvec3(part.positions[index]));
@@ -106,7 +103,7 @@ ChartVerdict analyze(std::span<const Part> parts, int uvSet, const UvChartOption
   const std::string name = setName(uvSet);
 
   // The tile: the unit square holding the center of the UVs' bounding box.
-  glm::dvec2 lo(kInfinity), hi(-kInfinity);
+  glm::dvec2 lo(HUGE_VAL), hi(-HUGE_VAL);
   for (const Part& part : parts)
     for (uint32_t index : part.indices) {
       lo = glm::min(lo, glm::dvec2(part.uvs[index]));
@@ -157,7 +154,7 @@ ChartVerdict analyze(std::span<const Part> parts, int uvSet, const UvChartOption
 
   // Uniform grid over the triangles' bounds, about one triangle per cell.
   const size_t count = triangles.size();
-  glm::dvec2 gridLo(kInfinity), gridHi(-kInfinity);
+  glm::dvec2 gridLo(HUGE_VAL), gridHi(-HUGE_VAL);
   for (const Triangle& t : triangles)
     for (const Point& p : t) gridLo = glm::min(gridLo, p), gridHi = glm::max(gridHi, p);
   const int cellsPerSide = std::clamp(static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count)))), 1, 1024);

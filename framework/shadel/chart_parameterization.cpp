@@ -33,14 +33,14 @@ std::vector<glm::dvec2> convexHull(std::vector<glm::dvec2> points) {
 // around the hull: one of its edges' (rotating calipers, done plainly).
 glm::dvec2 minimumAreaDirection(const std::vector<glm::dvec2>& hull) {
   glm::dvec2 best(1.0, 0.0);
-  double bestArea = INFINITY;
+  double bestArea = HUGE_VAL;
   for (size_t i = 0; i < hull.size(); ++i) {
     glm::dvec2 d = hull[(i + 1) % hull.size()] - hull[i];
     const double length = glm::length(d);
     if (length <= 0.0) continue;
     d /= length;
     const glm::dvec2 n(-d.y, d.x);
-    double minU = INFINITY, maxU = -INFINITY, minV = INFINITY, maxV = -INFINITY;
+    double minU = HUGE_VAL, maxU = -HUGE_VAL, minV = HUGE_VAL, maxV = -HUGE_VAL;
     for (const glm::dvec2& p : hull) {
       minU = std::min(minU, glm::dot(p, d)), maxU = std::max(maxU, glm::dot(p, d));
       minV = std::min(minV, glm::dot(p, n)), maxV = std::max(maxV, glm::dot(p, n));
@@ -79,7 +79,7 @@ class Parameterizer {
     const double density = projectedArea > 0.0 && worldArea > 0.0 ? std::sqrt(worldArea / projectedArea) : 1.0;
 
     glm::dvec2 u = minimumAreaDirection(convexHull(corners)), v(-u.y, u.x);
-    glm::dvec2 lo(INFINITY), hi(-INFINITY);
+    glm::dvec2 lo(HUGE_VAL), hi(-HUGE_VAL);
     for (const glm::dvec2& c : corners) {
       const glm::dvec2 q(glm::dot(c, u), glm::dot(c, v));
       lo = glm::min(lo, q), hi = glm::max(hi, q);
@@ -99,7 +99,7 @@ class Parameterizer {
 
   // Two halves, cut through the median centroid along the longest axis.
   std::pair<std::vector<uint32_t>, std::vector<uint32_t>> split(std::vector<uint32_t> chart) const {
-    glm::dvec3 lo(INFINITY), hi(-INFINITY);
+    glm::dvec3 lo(HUGE_VAL), hi(-HUGE_VAL);
     for (uint32_t t : chart) lo = glm::min(lo, centroid(t)), hi = glm::max(hi, centroid(t));
     const glm::dvec3 extent = hi - lo;
     const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
@@ -118,7 +118,7 @@ class Parameterizer {
   // The same test the finished chart must pass, on the chart alone scaled
   // into [0,1]² (so its epsilons are relative to the chart).
   static bool overlaps(const std::vector<glm::dvec2>& corners) {
-    glm::dvec2 lo(INFINITY), hi(-INFINITY);
+    glm::dvec2 lo(HUGE_VAL), hi(-HUGE_VAL);
     for (const glm::dvec2& c : corners) lo = glm::min(lo, c), hi = glm::max(hi, c);
     const double extent = std::max(hi.x - lo.x, hi.y - lo.y);
     if (!(extent > 0.0)) return false;

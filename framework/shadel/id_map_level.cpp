@@ -72,7 +72,7 @@ void dilate(IdMapLevel& level, uint32_t rings) {
       for (int64_t x = 0; x < size; ++x) {
         const auto i = static_cast<uint32_t>(y * size + x);
         if (level.owner[i] != kNoTriangle) continue;
-        double best = INFINITY;
+        double best = HUGE_VAL;
         for (int64_t dy = -1; dy <= 1; ++dy)
           for (int64_t dx = -1; dx <= 1; ++dx) {
             const int64_t nx = x + dx, ny = y + dy;

@@ -16,7 +16,7 @@ UnmipmappedTexels unmipmappedTexels(const scene::Scene& scene, const scene::Mesh
       const auto sampler = static_cast<size_t>(texture.sampler);
       if (sampler >= scene.samplers.size() || scene.samplers[sampler].mipmapMode != scene::MipmapMode::None) continue;
       const ChartDensity density = chartDensity(mesh, ref.texCoord);  // UV area per surface area
-      const double scale = std::max(std::abs(ref.transform.scale.x), std::abs(ref.transform.scale.y));
+      const auto scale = static_cast<double>(std::max(std::abs(ref.transform.scale.x), std::abs(ref.transform.scale.y)));
       const double texels = std::max(texture.width, texture.height) * scale * std::sqrt(density.meanDensity);
       if (texels > finest.texelsPerUnit) finest = {texels, texture.name};
     }

@@ -30,7 +30,7 @@ double distanceToTriangle(const FixedTriangle& t, glm::dvec2 p) {
   };
   if (t.doubleArea > 0 && cross(v[1], v[2], p) >= 0 && cross(v[2], v[0], p) >= 0 && cross(v[0], v[1], p) >= 0)
     return 0.0;
-  double best = INFINITY;
+  double best = HUGE_VAL;
   for (int k = 0; k < 3; ++k) {
     const glm::dvec2 a = v[k], b = v[(k + 1) % 3], d = b - a;
     const double length2 = glm::dot(d, d);
