@@ -1,5 +1,4 @@
 #include <algorithm>
-#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -188,7 +187,7 @@ class ShapeChecker {
   // as a double and infinite after the conversion.
   static void number(const Json& value, const std::string& path) {
     if (!value.is_number()) fail(path, "a number", value);
-    if (!(std::abs(value.get<double>()) <= static_cast<double>(FLT_MAX))) fail(path, "a number within the range of a 32-bit float", value);
+    if (!(std::abs(value.get<double>()) <= kFloatMax)) fail(path, "a number within the range of a 32-bit float", value);
   }
   // glTF ids and counts: integers >= 0.
   static void uint(const Json& value, const std::string& path) {

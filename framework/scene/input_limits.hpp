@@ -2,6 +2,7 @@
 // Internal to the loaders: limits that keep hostile input from exhausting the
 // stack or flooding a terminal, shared by the glTF and the scene-file loader.
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -18,6 +19,10 @@ inline constexpr size_t kMaxJsonDepth = 256;
 // Coordinates (translations, positions, radii, texture-transform offsets and
 // scales) up to this magnitude keep squared lengths finite in 32-bit float.
 inline constexpr double kMaxCoordinate = 1e18;
+
+// Numbers become 32-bit floats: beyond this magnitude (the largest finite
+// float, as a double) a finite double turns infinite.
+inline constexpr double kFloatMax = static_cast<double>(std::numeric_limits<float>::max());
 
 // Where the nesting of `json` first exceeds `maxDepth`, as a message, or
 // nullopt. A linear scan that honours strings and escapes, done before any

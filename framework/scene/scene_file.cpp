@@ -1,7 +1,6 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
-#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -19,10 +18,8 @@ namespace {
 
 using Json = nlohmann::json;
 using detail::capText;
+using detail::kFloatMax;
 using detail::kMaxCoordinate;
-
-// The largest finite 32-bit float, as the double the limits below compare with.
-constexpr double kFloatMax = static_cast<double>(std::numeric_limits<float>::max());
 
 // Errors inside the file: a JSON pointer and what is wrong with it.
 class FormatError : public std::runtime_error {
